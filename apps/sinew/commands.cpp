@@ -1,0 +1,302 @@
+#include "commands.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <regex>
+#include <set>
+
+#include <oneapi/tbb/global_control.h>
+
+#include "components/register_all.h"
+#include "core/node.h"
+#include "core/registry.h"
+#include "io/vtk_writer.h"
+#include "regression/gzip_text.h"
+#include "runner/probes.h"
+#include "runner/regress.h"
+#include "runner/session.h"
+
+namespace sinew::cli {
+
+namespace {
+
+bool is_dir(const std::string& p) {
+  struct stat st;
+  return ::stat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+std::string basename_of(const std::string& p) {
+  const auto slash = p.find_last_of('/');
+  return slash == std::string::npos ? p : p.substr(slash + 1);
+}
+
+void print_messages(const Diagnostics& d, bool include_info = false) {
+  for (const auto& m : d.messages())
+    if (include_info || m.severity != Severity::info) std::fprintf(stderr, "%s\n", Diagnostics::format(m).c_str());
+}
+
+std::vector<std::string> data_paths_for(const std::vector<std::string>& extra) {
+  std::vector<std::string> paths = extra;
+  const std::string root = default_data_root();
+  if (!root.empty())
+    for (const auto& p : runner::sofa_data_paths(root)) paths.push_back(p);
+  return paths;
+}
+
+class ProgressBar {
+ public:
+  ProgressBar(long total, bool enabled) : total_(total), enabled_(enabled && ::isatty(1)) {}
+  void update(long done) {
+    if (!enabled_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (done != total_ && now - last_ < std::chrono::milliseconds(33)) return;
+    last_ = now;
+    const int width = 50;
+    const int fill = total_ > 0 ? static_cast<int>(width * done / total_) : width;
+    std::printf("\r[%s%s] %ld/%ld", std::string(fill, '#').c_str(), std::string(width - fill, ' ').c_str(), done,
+                total_);
+    if (done == total_) std::printf("\n");
+    std::fflush(stdout);
+  }
+
+ private:
+  long total_;
+  bool enabled_;
+  std::chrono::steady_clock::time_point last_{};
+};
+
+// Final state of the first simulated Vec3 body, with the cells of its topology.
+bool export_vtk(Node& root, const std::string& path) {
+  for (const auto& t : runner::select_states(root, false)) {
+    if (t.state->state_type() != StateType::vec3) continue;
+    io::VtkMesh mesh;
+    const auto x = as_vec3(t.state->vec(kPosition));
+    const auto v = as_vec3(t.state->vec(kVelocity));
+    mesh.points.assign(x.begin(), x.end());
+    mesh.point_vectors.emplace_back("velocity", std::vector<Vec3>(v.begin(), v.end()));
+    if (MeshTopologyBase* topo = t.node->get_mesh_topology_link(); topo && topo->nb_points() == x.size()) {
+      if (!topo->hexahedra().empty() || !topo->tetrahedra().empty()) {
+        mesh.hexahedra = topo->hexahedra();
+        mesh.tetrahedra = topo->tetrahedra();
+      } else if (!topo->triangles().empty() || !topo->quads().empty()) {
+        mesh.triangles = topo->triangles();
+        mesh.quads = topo->quads();
+      } else {
+        mesh.edges = topo->edges();
+      }
+    }
+    std::string err;
+    if (!io::write_vtk(path, mesh, "sinew: " + t.state->describe(), &err)) {
+      std::fprintf(stderr, "sinew: %s\n", err.c_str());
+      return false;
+    }
+    std::printf("Final state of %s written to %s\n", t.state->describe().c_str(), path.c_str());
+    return true;
+  }
+  std::fprintf(stderr, "sinew: no simulated Vec3d body to export\n");
+  return false;
+}
+
+}  // namespace
+
+std::string default_data_root() {
+  if (const char* env = std::getenv("SINEW_SOFA_DATA"); env && is_dir(env)) return env;
+  if (is_dir("../shared/sofa-data")) return "../shared/sofa-data";
+  return {};
+}
+
+int run(const RunArgs& a) {
+  std::unique_ptr<tbb::global_control> threads;
+  if (a.threads > 0)
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
+  runner::SessionOptions so;
+  so.data_paths = data_paths_for(a.data_paths);
+  runner::Session session(a.scene, so);
+  print_messages(session.diagnostics());
+  if (!session.ok()) {
+    std::fprintf(stderr, "sinew: the scene %s cannot run (see the errors above)\n", a.scene.c_str());
+    return 1;
+  }
+  Node& root = session.root();
+
+  // Probes writing SOFA-format files, attached after init as SOFA's harness does.
+  std::vector<std::pair<std::string, const std::string*>> dumps;
+  if (!a.dump_states.empty()) {
+    if (!is_dir(a.dump_states)) {
+      std::fprintf(stderr, "sinew: --dump-states folder %s does not exist\n", a.dump_states.c_str());
+      return 1;
+    }
+    const std::string base = a.dump_states + "/" + basename_of(a.scene) + ".reference";
+    if (a.dump_topology) {
+      for (const auto& t : runner::select_topologies(root, a.dump_mapped)) {
+        auto* p = static_cast<runner::TopologyWriterProbe*>(
+            t.node->add_object(std::make_unique<runner::TopologyWriterProbe>(t.topology)));
+        dumps.emplace_back(base + runner::topology_file_suffix(t), &p->text());
+      }
+    } else {
+      for (const auto& t : runner::select_states(root, a.dump_mapped)) {
+        auto* p = static_cast<runner::StateWriterProbe*>(
+            t.node->add_object(std::make_unique<runner::StateWriterProbe>(t.state)));
+        dumps.emplace_back(base + runner::state_file_suffix(t), &p->text());
+      }
+    }
+  }
+
+  std::printf("Computing %ld iterations.\n", a.steps);
+  ProgressBar bar(a.steps, a.progress);
+  const auto t0 = std::chrono::steady_clock::now();
+  bool ok = true;
+  for (long i = 0; i < a.steps; ++i) {
+    if (!session.step()) {
+      ok = false;
+      break;
+    }
+    bar.update(i + 1);
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const long done = session.steps_done();
+  std::printf("%ld iterations done in %g s ( %g FPS).\n", done, secs, secs > 0 ? done / secs : 0.0);
+  if (done > 0) std::printf("%.3f ms/step\n", 1000.0 * secs / done);
+  for (const auto& [file, text] : dumps) {
+    std::string err;
+    if (!regression::write_text_file(file, *text, false, &err)) {
+      std::fprintf(stderr, "sinew: cannot write %s: %s\n", file.c_str(), err.c_str());
+      ok = false;
+    }
+  }
+  if (!a.vtk.empty() && !export_vtk(root, a.vtk)) ok = false;
+  if (!ok) {
+    print_messages(session.diagnostics());
+    return 1;
+  }
+  return 0;
+}
+
+int check(const CheckArgs& a) {
+  int failures = 0;
+  for (const auto& scene : a.scenes) {
+    runner::SessionOptions so;
+    so.data_paths = data_paths_for(a.data_paths);
+    runner::Session session(scene, so);
+    const bool ok = session.ok();
+    if (!ok) ++failures;
+    if (a.tsv) {
+      std::set<std::string> missing;
+      for (const auto& m : session.missing()) missing.insert(m.type);
+      std::string list;
+      for (const auto& m : missing) list += (list.empty() ? "" : " ") + m;
+      std::printf("%s\t%s\t%s\n", scene.c_str(), ok ? "ok" : "error", list.c_str());
+    } else {
+      print_messages(session.diagnostics());
+      std::printf("%s: %s (%d errors, %d warnings)\n", scene.c_str(), ok ? "ok" : "FAILED",
+                  session.diagnostics().error_count(), session.diagnostics().warning_count());
+    }
+  }
+  return failures == 0 ? 0 : 1;
+}
+
+int components(const std::string& name) {
+  register_all_components();
+  const Registry& r = registry();
+  if (name.empty()) {
+    for (const auto& [n, info] : r.all()) {
+      std::string line = n;
+      if (!info.templates.empty()) {
+        line += " <";
+        for (std::size_t i = 0; i < info.templates.size(); ++i) line += (i ? "," : "") + info.templates[i];
+        line += ">";
+      }
+      std::printf("%-40s %-22s %s\n", line.c_str(), info.category.c_str(), info.description.c_str());
+    }
+    return 0;
+  }
+  const ComponentInfo* info = r.find(renamed_component(name));
+  if (!info) {
+    std::string hint;
+    for (const auto& s : closest_names(name, r.names())) hint += " " + s;
+    std::fprintf(stderr, "sinew: unknown component '%s'%s%s\n", name.c_str(), hint.empty() ? "" : "; did you mean",
+                 hint.c_str());
+    return 1;
+  }
+  std::printf("%s  (%s)\n  %s\n", info->name.c_str(), info->category.c_str(), info->description.c_str());
+  if (!info->templates.empty()) {
+    std::printf("  templates:");
+    for (const auto& t : info->templates) std::printf(" %s%s", t.c_str(), t == info->default_template ? "*" : "");
+    std::printf("   (* default)\n");
+  }
+  if (!info->aliases.empty()) {
+    std::printf("  aliases:");
+    for (const auto& al : info->aliases) std::printf(" %s", al.c_str());
+    std::printf("\n");
+  }
+  auto c = info->create(info->default_template);
+  if (!c) return 0;
+  std::map<std::string, std::vector<BaseField*>> groups;
+  for (BaseField* f : c->fields()) groups[f->group()].push_back(f);
+  for (const auto& [group, fields] : groups) {
+    std::printf("  [%s]\n", group.empty() ? "General" : group.c_str());
+    for (BaseField* f : fields)
+      std::printf("    %-26s %-18s default \"%s\"  %s\n", f->name().c_str(), f->type_name().c_str(),
+                  f->default_text().c_str(), f->help().c_str());
+  }
+  if (!c->links().empty()) {
+    std::printf("  [Links]\n");
+    for (BaseLink* l : c->links()) std::printf("    %-26s %-18s %s\n", l->name().c_str(), "@path", l->help().c_str());
+  }
+  return 0;
+}
+
+int regress(const RegressArgs& a) {
+  std::string data = a.data.empty() ? default_data_root() : a.data;
+  if (data.empty() || !is_dir(data)) {
+    std::printf("sinew regress: SOFA data folder not found (%s); skipped\n", data.empty() ? "../shared/sofa-data"
+                                                                                          : data.c_str());
+    return 77;
+  }
+  const std::string list_file = a.list.empty() ? data + "/examples/RegressionStateScenes.regression-tests" : a.list;
+  std::string err;
+  // SOFA's lists point at $REGRESSION_DIR/references/examples: the data folder plays that role.
+  regression::ListEnvironment env = regression::ListEnvironment::from_process();
+  if (!env.regression_dir) env.regression_dir = data;
+  auto list = regression::read_scene_list(list_file, env, &err);
+  if (!list) {
+    std::fprintf(stderr, "sinew regress: cannot read %s: %s\n", list_file.c_str(), err.c_str());
+    return 2;
+  }
+  for (const auto& p : list->problems) std::fprintf(stderr, "sinew regress: %s: %s\n", list_file.c_str(), p.c_str());
+  const runner::TestKind kind = list_file.find("Topology") != std::string::npos ? runner::TestKind::topology
+                                                                                 : runner::TestKind::state;
+  std::regex re;
+  if (!a.filter.empty()) {
+    try {
+      re = std::regex(a.filter);
+    } catch (const std::regex_error& e) {
+      std::fprintf(stderr, "sinew regress: bad --filter: %s\n", e.what());
+      return 2;
+    }
+  }
+  runner::RegressOptions opts;
+  opts.data_root = data;
+  opts.isolate = a.isolate;
+  opts.time_limit = a.time_limit;
+  int passed = 0, failed = 0;
+  for (const auto& entry : list->scenes) {
+    if (!a.filter.empty() && !std::regex_search(entry.scene, re)) continue;
+    const runner::RegressResult r = runner::regress_scene_isolated(*list, entry, kind, opts);
+    (r.passed ? passed : failed)++;
+    std::printf("%s  %-90s value %-12.6g eps %-8g %2d files %7.2fs%s%s\n", r.passed ? "PASS" : "FAIL",
+                entry.scene.c_str(), r.value, entry.epsilon, r.files, r.seconds, r.reason.empty() ? "" : "  ",
+                r.reason.c_str());
+    std::fflush(stdout);
+  }
+  std::printf("%d passed, %d failed\n", passed, failed);
+  return failed == 0 ? 0 : 1;
+}
+
+}  // namespace sinew::cli

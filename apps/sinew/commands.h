@@ -1,0 +1,43 @@
+// The sinew command line: one function per sub-command.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace sinew::cli {
+
+struct RunArgs {
+  std::string scene;
+  long steps = 1000;
+  std::vector<std::string> data_paths;
+  std::string dump_states;
+  bool dump_mapped = false;
+  bool dump_topology = false;
+  std::string vtk;  // write the final state of the first simulated body as legacy VTK
+  bool progress = true;
+  int threads = 0;
+};
+int run(const RunArgs& a);
+
+struct CheckArgs {
+  std::vector<std::string> scenes;
+  std::vector<std::string> data_paths;
+  bool tsv = false;  // one line per scene: scene, status, missing components
+};
+int check(const CheckArgs& a);
+
+int components(const std::string& name);
+
+struct RegressArgs {
+  std::string data;
+  std::string list;
+  std::string filter;
+  bool isolate = true;
+  double time_limit = 600;
+};
+int regress(const RegressArgs& a);
+
+// Data folders used when none are given: $SINEW_SOFA_DATA, else ../shared/sofa-data if present.
+std::string default_data_root();
+
+}  // namespace sinew::cli

@@ -1,0 +1,66 @@
+// sinew: run, check and regression-test SOFA scenes.
+#include <CLI/CLI.hpp>
+
+#include "commands.h"
+
+int main(int argc, char** argv) {
+  using namespace sinew::cli;
+  CLI::App app{"Sinew: real-time physics for medical simulation; runs SOFA .scn scenes"};
+  app.require_subcommand(1);
+
+  RunArgs run_args;
+  std::string gui;
+  auto* run_cmd = app.add_subcommand("run", "run a scene in batch mode and print timing (runSofa -g batch)");
+  run_cmd->add_option("scene", run_args.scene, "scene file (.scn)")->required();
+  run_cmd->add_option("-n,--nbIter", run_args.steps, "number of steps (default 1000)");
+  run_cmd->add_option("-g,--gui", gui, "accepted for runSofa compatibility: only 'batch' is supported");
+  run_cmd->add_option("--data-path", run_args.data_paths, "extra folder searched for meshes and includes");
+  run_cmd->add_option("--dump-states", run_args.dump_states,
+                      "write SOFA-format state files (<scene>.reference_<k>_<name>_mstate.txt) to this folder");
+  run_cmd->add_flag("--dump-mapped", run_args.dump_mapped, "also dump states under mappings");
+  run_cmd->add_flag("--dump-topology", run_args.dump_topology,
+                    "write SOFA-format topology files (_topology.txt) instead of states");
+  run_cmd->add_option("--vtk", run_args.vtk,
+                      "write the final state of the first simulated body to this legacy VTK file (ParaView)");
+  run_cmd->add_option("--threads", run_args.threads, "worker threads (default: all cores)");
+  bool hide_progress = false;
+  run_cmd->add_flag("--hideProgressBar", hide_progress, "no progress bar");
+
+  CheckArgs check_args;
+  auto* check_cmd = app.add_subcommand("check", "load and initialise scenes; print every problem");
+  check_cmd->add_option("scenes", check_args.scenes, "scene files")->required();
+  check_cmd->add_option("--data-path", check_args.data_paths, "extra folder searched for meshes and includes");
+  check_cmd->add_flag("--tsv", check_args.tsv, "one line per scene: scene, status, missing components");
+
+  std::string component_name;
+  auto* comp_cmd = app.add_subcommand("components", "list components with templates, aliases and fields");
+  comp_cmd->add_option("name", component_name, "one component (shows its fields)");
+
+  RegressArgs regress_args;
+  auto* reg_cmd = app.add_subcommand("regress", "run SOFA regression scenes against their references");
+  reg_cmd->add_option("--data", regress_args.data, "SOFA data folder (default ../shared/sofa-data)");
+  reg_cmd->add_option("--list", regress_args.list,
+                      "a .regression-tests list (default <data>/examples/RegressionStateScenes.regression-tests)");
+  reg_cmd->add_option("--filter", regress_args.filter, "only scenes whose path matches this regular expression");
+  bool no_isolate = false;
+  reg_cmd->add_flag("--no-isolate", no_isolate, "run scenes in this process (no crash isolation)");
+  reg_cmd->add_option("--time-limit", regress_args.time_limit, "seconds per scene (default 600)");
+
+  CLI11_PARSE(app, argc, argv);
+
+  if (*run_cmd) {
+    if (!gui.empty() && gui != "batch") {
+      std::fprintf(stderr, "sinew: GUI '%s' is not available here; use -g batch (or the viewer)\n", gui.c_str());
+      return 1;
+    }
+    run_args.progress = !hide_progress;
+    return run(run_args);
+  }
+  if (*check_cmd) return check(check_args);
+  if (*comp_cmd) return components(component_name);
+  if (*reg_cmd) {
+    regress_args.isolate = !no_isolate;
+    return regress(regress_args);
+  }
+  return 1;
+}

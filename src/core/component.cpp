@@ -1,0 +1,67 @@
+#include "core/component.h"
+
+#include "core/node.h"
+
+namespace sinew {
+
+const std::string* AttributeMap::take(std::string_view name) {
+  auto it = values_.find(name);
+  if (it == values_.end()) return nullptr;
+  it->second.used = true;
+  return &it->second.value;
+}
+
+const std::string* AttributeMap::peek(std::string_view name) const {
+  auto it = values_.find(name);
+  return it == values_.end() ? nullptr : &it->second.value;
+}
+
+Component::Component() = default;
+Component::~Component() = default;
+
+std::string Component::describe() const {
+  return "component '" + name.value() + "' (" + class_name_ + ")";
+}
+
+void Component::parse(AttributeMap& attrs, Diagnostics& diag) {
+  // printLog first, then every other attribute alphabetically (map order).
+  auto parse_one = [&](const std::string& key, AttributeMap::Entry& e) {
+    if (key == "type" || key == "template" || key == "src") {
+      e.used = true;
+      return;
+    }
+    if (BaseField* f = find_field(key)) {
+      e.used = true;
+      if (!e.value.empty() && e.value[0] == '@') {
+        f->set_link_path(e.value);  // resolved by the builder
+        f->mark_set();
+        return;
+      }
+      if (!f->read(e.value) && !e.value.empty())
+        diag.warning(where, describe() + ": could not read value for field '" + key + "': \"" + e.value + "\"");
+      return;
+    }
+    if (BaseLink* l = find_link(key)) {
+      e.used = true;
+      l->set_path(e.value);
+    }
+  };
+  if (auto it = attrs.entries().find("printLog"); it != attrs.entries().end()) parse_one(it->first, it->second);
+  for (auto& [key, e] : attrs.entries())
+    if (!e.used) parse_one(key, e);
+}
+
+void Component::msg_error(const std::string& text) const {
+  if (!node_) return;
+  node_->diagnostics().add(Severity::error, where, describe(), text);
+}
+void Component::msg_warning(const std::string& text) const {
+  if (!node_) return;
+  node_->diagnostics().add(Severity::warning, where, describe(), text);
+}
+void Component::msg_info(const std::string& text) const {
+  if (!node_) return;
+  node_->diagnostics().add(Severity::info, where, describe(), text);
+}
+
+}  // namespace sinew

@@ -1,0 +1,105 @@
+// Component: the unit a scene is made of (one XML element).
+//
+// A component declares its fields as members (see core/field.h); the
+// registry creates it, the builder inserts it in a node and parses its
+// attributes, then `init()` runs in scene order.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "core/base.h"
+#include "core/field.h"
+
+namespace sinew {
+
+class Node;
+struct Event;
+
+enum class ComponentState { valid, invalid };
+
+// Attributes of one XML element, with "used" flags so that unread ones can be
+// reported ("Unused attribute"). Iteration is alphabetical, as SOFA parses them.
+class AttributeMap {
+ public:
+  void set(std::string name, std::string value) { values_[std::move(name)] = {std::move(value), false}; }
+  // Returns the value and marks the attribute used; nullptr when absent.
+  const std::string* take(std::string_view name);
+  const std::string* peek(std::string_view name) const;
+  struct Entry {
+    std::string value;
+    bool used = false;
+  };
+  std::map<std::string, Entry, std::less<>>& entries() { return values_; }
+  const std::map<std::string, Entry, std::less<>>& entries() const { return values_; }
+
+ private:
+  std::map<std::string, Entry, std::less<>> values_;
+};
+
+class Component : public Base {
+ public:
+  Component();
+  ~Component() override;
+
+  Field<std::string> name{this, "name", "", "object name (default: class name + counter)", "Infos"};
+  Field<bool> print_log{this, "printLog", false, "print debug messages of this component", "Infos"};
+  Field<std::vector<std::string>> tags{this, "tags", {}, "tags filtering which solvers see this component", "Infos"};
+  Field<bool> listening{this, "listening", false, "receive events (AnimateBegin, ...) even without a handler", "Infos"};
+
+  // Set by the registry when created.
+  const std::string& class_name() const { return class_name_; }
+  const std::string& template_name() const { return template_name_; }
+  void set_type(std::string cls, std::string tmpl) {
+    class_name_ = std::move(cls);
+    template_name_ = std::move(tmpl);
+  }
+
+  Node* node() const { return node_; }
+  void set_node(Node* n) { node_ = n; }
+
+  // Parses attributes into fields. Components with pseudo-attributes
+  // (MechanicalObject's dx/rx/scale...) override it, take theirs, then call
+  // the base version. Messages go to `diag` with this component's location.
+  virtual void parse(AttributeMap& attrs, Diagnostics& diag);
+
+  // Life cycle, in SOFA's order: init top-down in node order, bwd_init bottom-up reversed.
+  virtual void init() {}
+  virtual void bwd_init() {}
+  virtual void reinit() {}
+  virtual void reset() {}
+  virtual void store_reset_state() {}
+  virtual void handle_event(Event&) {}
+  // Whether handle_event should be called (true for components that react to events).
+  virtual bool wants_events() const { return listening.value(); }
+
+  // Viewer-only components accept any attribute silently (nothing to check in batch runs).
+  virtual bool accepts_any_attribute() const { return false; }
+
+  ComponentState state() const { return state_; }
+  void set_state(ComponentState s) { state_ = s; }
+
+  std::string describe() const override;
+
+  // Messages raised during init or a step, attributed to this component.
+  void msg_error(const std::string& text) const;
+  void msg_warning(const std::string& text) const;
+  void msg_info(const std::string& text) const;
+
+ protected:
+  ComponentState state_ = ComponentState::valid;
+
+ private:
+  std::string class_name_, template_name_;
+  Node* node_ = nullptr;
+};
+
+// Events broadcast top-down through the graph.
+struct Event {
+  enum class Kind { animate_begin, animate_end, simulation_init_done } kind;
+  double dt = 0;
+  bool handled = false;
+};
+
+}  // namespace sinew

@@ -1,0 +1,62 @@
+#include "core/field.h"
+
+#include "core/base.h"
+#include "core/engine.h"
+
+namespace sinew {
+
+BaseField::BaseField(Base* owner, std::string name, std::string help, std::string group)
+    : owner_(owner), name_(std::move(name)), help_(std::move(help)), group_(std::move(group)) {
+  if (owner_) owner_->register_field(this);
+}
+
+void BaseField::set_parent(BaseField* parent) {
+  parent_ = parent;
+  parent_version_seen_ = 0;  // force a copy at the next read
+  set_ = true;
+}
+
+void BaseField::update() const {
+  if (parent_) {
+    parent_->update();
+    if (parent_->version_ != parent_version_seen_) {
+      parent_version_seen_ = parent_->version_;
+      const_cast<BaseField*>(this)->copy_from(*parent_);
+      ++version_;
+    }
+  }
+  if (producer_) producer_->update();
+}
+
+void BaseField::copy_generic(const BaseField& other) {
+  const int w_other = other.row_width();
+  if (w_other > 0 && row_width() > 0) {
+    std::vector<double> flat;
+    other.get_rows(flat);
+    set_rows(flat, w_other);
+    return;
+  }
+  read(other.text());
+}
+
+BaseLink::BaseLink(Base* owner, std::string name, std::string help)
+    : name_(std::move(name)), help_(std::move(help)) {
+  if (owner) owner->register_link(this);
+}
+
+BaseField* Base::find_field(std::string_view name) const {
+  for (BaseField* f : fields_) {
+    if (f->name() == name) return f;
+    for (const auto& a : f->aliases())
+      if (a == name) return f;
+  }
+  return nullptr;
+}
+
+BaseLink* Base::find_link(std::string_view name) const {
+  for (BaseLink* l : links_)
+    if (l->name() == name) return l;
+  return nullptr;
+}
+
+}  // namespace sinew

@@ -1,0 +1,255 @@
+#include "core/mechanical_ops.h"
+
+#include <atomic>
+
+#include "core/node.h"
+
+namespace sinew {
+
+MechanicalOps::MechanicalOps(Node& node) : node_(&node) { rebuild(); }
+
+double MechanicalOps::context_dt() const { return node_->dt.value(); }
+
+int MechanicalOps::alloc_vec() {
+  static std::atomic<int> next{kFirstDynamicVec};
+  return next++;
+}
+
+void MechanicalOps::rebuild() {
+  states_.clear();
+  independent_.clear();
+  mapped_.clear();
+  force_fields_.clear();
+  masses_.clear();
+  mappings_.clear();
+  constraints_.clear();
+  // Top-down over the subtree, skipping inactive and sleeping nodes.
+  std::vector<Node*> stack{node_};
+  std::vector<Node*> order;
+  auto visit = [&](auto&& self, Node& n) -> void {
+    if (!n.activated.value() || n.sleeping.value()) return;
+    order.push_back(&n);
+    for (auto& c : n.children()) self(self, *c);
+  };
+  visit(visit, *node_);
+  for (Node* n : order) {
+    if (n->mechanical_mapping && n->mechanical_mapping->is_mechanical()) mappings_.push_back(n->mechanical_mapping);
+    if (MechanicalState* s = n->mechanical_state) {
+      states_.push_back(s);
+      (s->independent() ? independent_ : mapped_).push_back(s);
+    }
+    if (n->mass) masses_.push_back(n->mass);
+    for (ForceField* ff : n->force_fields)
+      if (ff->state() == ComponentState::valid) force_fields_.push_back(ff);
+    for (ForceField* ff : n->interaction_force_fields)
+      if (ff->state() == ComponentState::valid) force_fields_.push_back(ff);
+    for (ProjectiveConstraint* c : n->projective_constraints)
+      if (c->state() == ComponentState::valid) constraints_.push_back(c);
+  }
+}
+
+// ------------------------------------------------------------------ vectors
+
+void MechanicalOps::v_clear(int r) {
+  for (MechanicalState* s : independent_) {
+    auto& v = s->vec(r);
+    std::fill(v.begin(), v.end(), 0.0);
+  }
+}
+
+void MechanicalOps::v_eq(int r, int a) {
+  for (MechanicalState* s : independent_) s->vec(r) = s->vec(a);
+}
+
+void MechanicalOps::v_peq(int r, int a, double f) {
+  for (MechanicalState* s : independent_) {
+    auto& rv = s->vec(r);
+    const auto& av = s->vec(a);
+    for (std::size_t i = 0; i < rv.size(); ++i) rv[i] += av[i] * f;
+  }
+}
+
+void MechanicalOps::v_teq(int r, double f) {
+  for (MechanicalState* s : independent_)
+    for (double& x : s->vec(r)) x *= f;
+}
+
+void MechanicalOps::v_op(int r, int a, int b, double f) {
+  for (MechanicalState* s : independent_) {
+    auto& rv = s->vec(r);
+    const auto& av = s->vec(a);
+    const auto& bv = s->vec(b);
+    rv.resize(av.size());
+    for (std::size_t i = 0; i < rv.size(); ++i) rv[i] = av[i] + bv[i] * f;
+  }
+}
+
+void MechanicalOps::v_scale_add(int p, double beta, int r) {
+  for (MechanicalState* s : independent_) {
+    auto& pv = s->vec(p);
+    const auto& rv = s->vec(r);
+    for (std::size_t i = 0; i < pv.size(); ++i) pv[i] = pv[i] * beta + rv[i];
+  }
+}
+
+double MechanicalOps::v_dot(int a, int b) const {
+  double total = 0;
+  for (MechanicalState* s : independent_) {
+    const auto& av = s->vec(a);
+    const auto& bv = s->vec(b);
+    const int w = s->info().deriv_width;
+    const std::size_t n = std::min(av.size(), bv.size()) / static_cast<std::size_t>(w);
+    for (std::size_t i = 0; i < n; ++i) {
+      double d = 0;  // per-DOF partial sum first, as SOFA's Vec dot product
+      for (int c = 0; c < w; ++c) d += av[i * w + c] * bv[i * w + c];
+      total += d;
+    }
+  }
+  return total;
+}
+
+void MechanicalOps::v_integrate(int v, int a, double fa, int x_out, int x_in, double fx) {
+  for (MechanicalState* s : independent_) {
+    auto& vv = s->vec(v);
+    const auto& av = s->vec(a);
+    const StateType t = s->state_type();
+    if (t == StateType::rigid3 || t == StateType::rigid2) {
+      for (std::size_t i = 0; i < vv.size(); ++i) vv[i] += av[i] * fa;
+      s->add_deriv_to_coord(x_out, x_in, v, fx);
+    } else {
+      // Fused loop: v_i += a_i·fa; x_i += v_i·fx (the updated v), one DOF at a time.
+      auto& xo = s->vec(x_out);
+      const auto& xi = s->vec(x_in);
+      for (std::size_t i = 0; i < vv.size(); ++i) {
+        vv[i] += av[i] * fa;
+        xo[i] = xi[i] + vv[i] * fx;
+      }
+    }
+    s->touch(v);
+    s->touch(x_out);
+  }
+}
+
+std::size_t MechanicalOps::independent_dofs() const {
+  std::size_t n = 0;
+  for (MechanicalState* s : independent_) n += s->size() * s->info().deriv_width;
+  return n;
+}
+
+// ------------------------------------------------------------------ mechanics
+
+void MechanicalOps::compute_force(int f, bool clear, bool accumulate) {
+  MechParams p;
+  p.f = f;
+  for (MechanicalState* s : states_) {
+    const int id = s->independent() ? f : mapped_id(f, kForce);
+    auto& fv = s->vec(id);
+    if (clear) std::fill(fv.begin(), fv.end(), 0.0);
+    const auto& ext = s->vec(kExternalForce);
+    for (std::size_t i = 0; i < std::min(ext.size(), fv.size()); ++i) fv[i] += ext[i];
+  }
+  for (ForceField* ff : force_fields_) {
+    MechParams q = p;
+    if (!ff->states().empty() && ff->states()[0] && !ff->states()[0]->independent()) q.f = mapped_id(f, kForce);
+    ff->add_force(q);
+  }
+  if (accumulate)
+    for (auto it = mappings_.rbegin(); it != mappings_.rend(); ++it) {
+      Mapping* m = *it;
+      if (!m->map_forces.value()) continue;
+      const int in = m->from()->independent() ? f : mapped_id(f, kForce);
+      m->apply_jt(in, mapped_id(f, kForce));
+    }
+}
+
+void MechanicalOps::add_mbk_dx(int df, double m, double b, double k, int dx, bool clear, bool accumulate) {
+  MechParams p;
+  p.dx = dx;
+  p.df = df;
+  p.m = m;
+  p.b = b;
+  p.k = k;
+  if (clear)
+    for (MechanicalState* s : mapped_) {
+      auto& v = s->vec(mapped_id(df, kDforce));
+      std::fill(v.begin(), v.end(), 0.0);
+    }
+  for (ForceField* ff : force_fields_) {
+    MechParams q = p;
+    MechanicalState* s0 = ff->states().empty() ? nullptr : ff->states()[0];
+    if (s0 && !s0->independent()) {
+      q.dx = mapped_id(dx, kDx);
+      q.df = mapped_id(df, kDforce);
+    }
+    const double kf = ff->k_factor(q);
+    if (kf != 0.0 || q.b != 0.0) ff->add_dforce(q, kf);
+    if (auto* mass = dynamic_cast<Mass*>(ff)) {
+      const double mf = q.m - q.b * mass->rayleigh_mass.value();
+      if (mf != 0.0) mass->add_mdx(q, q.df, q.dx, mf);
+    }
+  }
+  if (accumulate)
+    for (auto it = mappings_.rbegin(); it != mappings_.rend(); ++it) {
+      Mapping* mp = *it;
+      if (!mp->map_forces.value()) continue;
+      const int in_df = mp->from()->independent() ? df : mapped_id(df, kDforce);
+      mp->apply_jt(in_df, mapped_id(df, kDforce));
+      if (k != 0.0) mp->apply_djt(in_df, mp->from()->independent() ? dx : mapped_id(dx, kDx), k);
+    }
+}
+
+void MechanicalOps::add_mbk_v(int df, double m, double b, double k, bool clear, bool accumulate) {
+  add_mbk_dx(df, m, b, k, kVelocity, clear, accumulate);
+}
+
+void MechanicalOps::add_mdx(int res, int dx, double factor) {
+  MechParams p;
+  for (Mass* m : masses_) m->add_mdx(p, res, dx, factor);
+}
+
+void MechanicalOps::acc_from_f(int a, int f) {
+  MechParams p;
+  for (Mass* m : masses_) m->acc_from_f(p, a, f);
+}
+
+void MechanicalOps::add_separate_gravity(double dt, int v) {
+  for (Mass* m : masses_)
+    if (m->separate_gravity.value()) m->add_gravity_to_v(v, dt);
+}
+
+void MechanicalOps::propagate_dx_and_reset_df(int dx, int df) {
+  for (MechanicalState* s : states_) {
+    auto& v = s->vec(s->independent() ? df : mapped_id(df, kDforce));
+    std::fill(v.begin(), v.end(), 0.0);
+  }
+  propagate_dx(dx);
+}
+
+void MechanicalOps::propagate_dx(int dx) {
+  for (Mapping* m : mappings_) {
+    if (!m->map_forces.value()) continue;
+    m->apply_j(mapped_id(dx, kDx), m->from()->independent() ? dx : mapped_id(dx, kDx));
+  }
+}
+
+void MechanicalOps::propagate_x_and_v(int x, int v) {
+  for (Mapping* m : mappings_) {
+    m->apply(kPosition, m->from()->independent() ? x : kPosition);
+    m->apply_j(kVelocity, m->from()->independent() ? v : kVelocity);
+  }
+}
+
+void MechanicalOps::project_response(int dx) {
+  for (ProjectiveConstraint* c : constraints_)
+    if (c->mstate->independent() || dx < kFirstDynamicVec) c->project_response(dx);
+}
+
+void MechanicalOps::project_position(int x, double t) {
+  for (ProjectiveConstraint* c : constraints_) c->project_position(c->mstate->independent() ? x : kPosition, t);
+}
+
+void MechanicalOps::project_velocity(int v, double t) {
+  for (ProjectiveConstraint* c : constraints_) c->project_velocity(c->mstate->independent() ? v : kVelocity, t);
+}
+
+}  // namespace sinew

@@ -1,0 +1,123 @@
+// Node: a scene-graph node holding components and child nodes.
+//
+// Each component is filed in typed slots on insertion (spec/framework.md
+// §3.1): single slots hold the last inserted component of that role, lists
+// keep insertion order. The context (dt, gravity, time) is copied from the
+// root at init and every step.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/base.h"
+#include "core/field.h"
+#include "core/roles.h"
+
+namespace sinew {
+
+class Node final : public Base {
+ public:
+  explicit Node(std::string name = {});
+  ~Node() override;
+
+  Field<std::string> name{this, "name", "", "node name", "Infos"};
+  Field<double> dt{this, "dt", 0.01, "time step (s); only the root's value is used", "Context"};
+  Field<Vec3> gravity{this, "gravity", Vec3(0, -9.81, 0), "gravity (m/s²); only the root's value is used",
+                      "Context"};
+  Field<double> time{this, "time", 0.0, "current time (s)", "Context"};
+  Field<bool> animate{this, "animate", false, "start animating when loaded in a viewer", "Context"};
+  Field<bool> activated{this, "activated", true, "inactive nodes and their subtree are skipped", "Context"};
+  Field<bool> sleeping{this, "sleeping", false, "sleeping nodes are skipped by mechanical operations",
+                       "Context"};
+  Field<bool> can_change_sleeping_state{this, "canChangeSleepingState", false, "", "Context"};
+  Field<std::vector<std::string>> tags{this, "tags", {}, "tags filtering which solvers see this node", "Infos"};
+  Field<bool> print_log{this, "printLog", false, "print debug messages", "Infos"};
+  Field<std::vector<double>> bbox{this, "bbox", {}, "fixed bounding box (viewer only)", "Visualization"};
+
+  std::string describe() const override { return "node '" + name.value() + "'"; }
+
+  // ------------------------------------------------------------ structure
+  Node* parent() const { return parent_; }
+  Node* root();
+  const std::vector<std::unique_ptr<Node>>& children() const { return children_; }
+  const std::vector<std::unique_ptr<Component>>& objects() const { return objects_; }
+  Node* add_child(std::unique_ptr<Node> child);
+  // Inserts a component at the end (or at the front) and files it in its slots.
+  Component* add_object(std::unique_ptr<Component> c, bool at_front = false);
+  // Index counter for default names ("MechanicalObject1", ...), per class within this node.
+  int next_default_index(const std::string& class_name) { return ++default_names_[class_name]; }
+  // Path of this node from the root ("/", "/child/grandchild").
+  std::string path() const;
+
+  // ------------------------------------------------------------ slots
+  AnimationLoop* animation_loop = nullptr;
+  MechanicalState* mechanical_state = nullptr;
+  Mapping* mechanical_mapping = nullptr;
+  Mass* mass = nullptr;
+  MeshTopologyBase* mesh_topology = nullptr;  // last mesh topology inserted
+  std::vector<ForceField*> force_fields;      // masses included
+  std::vector<ForceField*> interaction_force_fields;
+  std::vector<ProjectiveConstraint*> projective_constraints;
+  std::vector<OdeSolver*> solvers;
+  std::vector<LinearSolver*> linear_solvers;
+  std::vector<ContextObject*> context_objects;
+
+  // ------------------------------------------------------------ look-ups (§3.3)
+  // Node slot, else the first state (object order) of the nearest ancestor that has one.
+  MechanicalState* get_mechanical_state() const;
+  // Node slot (last inserted), else the first mesh topology of the nearest ancestor that has one.
+  MeshTopologyBase* get_mesh_topology_link() const;
+  // First object of type T in this node's object order.
+  template <class T>
+  T* find_local() const {
+    for (auto& o : objects_)
+      if (auto* t = dynamic_cast<T*>(o.get())) return t;
+    return nullptr;
+  }
+  // First in this node, then ancestors.
+  template <class T>
+  T* find_up() const {
+    for (const Node* n = this; n; n = n->parent_)
+      if (T* t = n->find_local<T>()) return t;
+    return nullptr;
+  }
+  // First in this node, then children depth-first.
+  template <class T>
+  T* find_down() const {
+    if (T* t = find_local<T>()) return t;
+    for (auto& c : children_)
+      if (T* t = c->find_down<T>()) return t;
+    return nullptr;
+  }
+  // Objects of type T in this subtree, top-down (node objects in order, then children).
+  template <class T>
+  void collect_down(std::vector<T*>& out) const {
+    for (auto& o : objects_)
+      if (auto* t = dynamic_cast<T*>(o.get())) out.push_back(t);
+    for (auto& c : children_) c->collect_down(out);
+  }
+  Component* find_object_named(std::string_view n) const;
+  Node* find_child_named(std::string_view n) const;
+
+  // ------------------------------------------------------------ context
+  // Copies dt, gravity and time from the parent, then applies context objects.
+  void update_context();
+  // Diagnostics sink of the whole graph (owned by the root).
+  Diagnostics& diagnostics();
+  // Current step number (for messages raised during a step).
+  long step_index = -1;
+
+ private:
+  Node* parent_ = nullptr;
+  std::vector<std::unique_ptr<Node>> children_;
+  std::vector<std::unique_ptr<Component>> objects_;
+  std::map<std::string, int> default_names_;
+  std::unique_ptr<Diagnostics> diagnostics_;  // root only
+};
+
+// Depth-first pre-order over active nodes (SOFA's DAG order for trees).
+void for_each_node(Node& root, const std::function<void(Node&)>& f);
+
+}  // namespace sinew

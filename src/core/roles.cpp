@@ -1,0 +1,43 @@
+#include "core/roles.h"
+
+#include "core/node.h"
+
+namespace sinew {
+
+const StateTypeInfo& state_type_info(StateType t) {
+  static const StateTypeInfo infos[] = {
+      {"Vec1d", 1, 1, 1}, {"Vec2d", 2, 2, 2}, {"Vec3d", 3, 3, 3},
+      {"Vec6d", 6, 6, 6}, {"Rigid2d", 3, 3, 2}, {"Rigid3d", 7, 6, 3},
+  };
+  return infos[static_cast<int>(t)];
+}
+
+bool state_type_from_name(std::string_view name, StateType& out) {
+  for (int i = 0; i <= static_cast<int>(StateType::rigid3); ++i) {
+    if (name == state_type_info(static_cast<StateType>(i)).name) {
+      out = static_cast<StateType>(i);
+      return true;
+    }
+  }
+  return false;
+}
+
+bool MechanicalState::independent() const { return !node() || node()->mechanical_mapping == nullptr; }
+
+void ForceField::init() {
+  if (!mstate && node()) mstate.set(node()->get_mechanical_state());
+  if (!mstate) {
+    msg_error("no mechanical state found in this node or its ancestors");
+    state_ = ComponentState::invalid;
+  }
+}
+
+void ProjectiveConstraint::init() {
+  if (!mstate && node()) mstate.set(node()->get_mechanical_state());
+  if (!mstate) {
+    msg_error("no mechanical state found in this node or its ancestors");
+    state_ = ComponentState::invalid;
+  }
+}
+
+}  // namespace sinew

@@ -1,0 +1,194 @@
+// Roles: the abstract kinds of component the framework drives.
+//
+// A node files each component in slots by role (spec/framework.md §3.1);
+// solvers and the animation loop talk to components only through these
+// interfaces. One virtual call per component per operation: element loops
+// live inside the implementations.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "core/component.h"
+#include "math/types.h"
+
+namespace sinew {
+
+class MechanicalOps;
+
+// ---------------------------------------------------------------- state
+// Identifiers of state vectors. Standard ones are fields of the state;
+// solvers allocate further ids (>= kFirstDynamicVec) for their temporaries.
+enum VecId : int {
+  kPosition = 0,
+  kVelocity,
+  kForce,
+  kExternalForce,
+  kRestPosition,
+  kDx,
+  kDforce,
+  kFreePosition,
+  kFreeVelocity,
+  kResetPosition,
+  kResetVelocity,
+  kFirstDynamicVec = 16,
+};
+// Whether a standard id holds coordinates (positions) rather than derivatives.
+constexpr bool is_coord_vec(int id) {
+  return id == kPosition || id == kRestPosition || id == kFreePosition || id == kResetPosition;
+}
+
+enum class StateType { vec1, vec2, vec3, vec6, rigid2, rigid3 };
+struct StateTypeInfo {
+  const char* name;    // SOFA template name: "Vec3d", "Rigid3d", ...
+  int coord_width;     // scalars per position
+  int deriv_width;     // scalars per velocity/force
+  int spatial_dim;     // dimension of the point (centre for rigids)
+};
+const StateTypeInfo& state_type_info(StateType t);
+// SOFA template name (after alias resolution) → type; false when not a state type.
+bool state_type_from_name(std::string_view name, StateType& out);
+
+class MechanicalState : public Component {
+ public:
+  virtual StateType state_type() const = 0;
+  const StateTypeInfo& info() const { return state_type_info(state_type()); }
+  virtual std::size_t size() const = 0;
+  virtual void resize(std::size_t n) = 0;
+  // Storage of vector `id` (coordinate or derivative layout), allocated and
+  // zero-filled to size() on first use. Standard ids are the state's fields.
+  virtual std::vector<double>& vec(int id) = 0;
+  // Marks a standard vector as changed after a write through vec() (links and engines see it).
+  virtual void touch(int id) = 0;
+  // x_out = x_in + h·v, with the Rigid rule (quaternion exponential) for rigid states.
+  virtual void add_deriv_to_coord(int x_out, int x_in, int v, double h) = 0;
+  // Empties externalForce (end of each step).
+  virtual void end_integration() = 0;
+  // Independent ⇔ its node has no mechanical mapping.
+  bool independent() const;
+};
+
+// ---------------------------------------------------------------- mechanics
+// Parameters of a mechanical operation: which vectors play x, v, f, dx, df,
+// and the factors of m·M + b·B + k·K.
+struct MechParams {
+  int x = kPosition, v = kVelocity, f = kForce, dx = kDx, df = kDforce;
+  double m = 0, b = 0, k = 0;
+  bool implicit = false;
+};
+
+class ForceField : public Component {
+ public:
+  Field<double> rayleigh_stiffness{this, "rayleighStiffness", 0.0,
+                                   "Rayleigh damping coefficient related to stiffness (> 0)", "Rayleigh"};
+  Link<MechanicalState> mstate{this, "mstate", "state this force field acts on (default: the node's)"};
+
+  // f += f(x, v) on the acted state(s).
+  virtual void add_force(const MechParams& p) = 0;
+  // df += kfactor · K · dx, with K = ∂f/∂x.
+  virtual void add_dforce(const MechParams& p, double kfactor) = 0;
+  // True for force fields between two states (springs, contacts).
+  virtual bool is_interaction() const { return false; }
+  // States this force field reads and writes (one for single-state force fields).
+  virtual std::vector<MechanicalState*> states() const { return {mstate.get()}; }
+
+  void init() override;  // binds mstate to the node's state when not linked
+  double k_factor(const MechParams& p) const { return p.k + p.b * rayleigh_stiffness.value(); }
+};
+
+class Mass : public ForceField {
+ public:
+  Field<double> rayleigh_mass{this, "rayleighMass", 0.0, "Rayleigh damping coefficient related to mass (> 0)",
+                              "Rayleigh"};
+  Field<bool> separate_gravity{this, "separateGravity", false, "add gravity to velocity instead of forces",
+                               "Physics"};
+
+  // res += factor · M · dx
+  virtual void add_mdx(const MechParams& p, int res, int dx, double factor) = 0;
+  // a = M⁻¹ f (diagonal masses only)
+  virtual void acc_from_f(const MechParams& p, int a, int f) = 0;
+  // v += dt · g
+  virtual void add_gravity_to_v(int v, double dt) = 0;
+  virtual double total() const = 0;
+  void add_dforce(const MechParams&, double) override {}  // masses have no stiffness by default
+};
+
+class ProjectiveConstraint : public Component {
+ public:
+  Link<MechanicalState> mstate{this, "mstate", "state this constraint acts on (default: the node's)"};
+  void init() override;
+  virtual void project_response(int dx) = 0;
+  virtual void project_velocity(int v, double t) = 0;
+  virtual void project_position(int x, double t) = 0;
+};
+
+class Mapping : public Component {
+ public:
+  Field<bool> map_forces{this, "mapForces", true, "whether forces are mapped back up", "Mapping"};
+  Field<bool> map_constraints{this, "mapConstraints", true, "whether constraints are mapped back up", "Mapping"};
+  Field<bool> map_masses{this, "mapMasses", true, "whether masses are mapped back up", "Mapping"};
+  Field<bool> apply_rest_position{this, "applyRestPosition", false, "also map the rest position at init",
+                                  "Mapping"};
+  virtual MechanicalState* from() const = 0;
+  virtual MechanicalState* to() const = 0;
+  // Mechanical mappings map forces/dx (their output is a MechanicalState).
+  virtual bool is_mechanical() const { return to() != nullptr; }
+  virtual void apply(int out_x, int in_x) = 0;
+  virtual void apply_j(int out_v, int in_v) = 0;
+  virtual void apply_jt(int in_f, int out_f) = 0;
+  // Geometric stiffness: in_df += kfactor · dJᵀ(out_force) · in_dx (non-linear mappings only).
+  virtual void apply_djt(int in_df, int in_dx, double kfactor) {}
+};
+
+class OdeSolver : public Component {
+ public:
+  // Advances the subtree of the solver's node by dt, writing positions/velocities to x_result/v_result.
+  virtual void solve(double dt, int x_result, int v_result) = 0;
+};
+
+class LinearSolver : public Component {
+ public:
+  // Prepares A = m·M + b·B + k·K over the scope of `ops` (assembly for assembled systems).
+  virtual void build_system(MechanicalOps& ops, double m, double b, double k) = 0;
+  // Solves A·x = rhs; x and rhs are vector ids on the scope's independent states.
+  virtual void solve_system(MechanicalOps& ops, int x, int rhs) = 0;
+};
+
+class AnimationLoop : public Component {
+ public:
+  virtual void step(double dt) = 0;
+};
+
+// ---------------------------------------------------------------- topology
+using Edge = std::array<unsigned, 2>;
+using Triangle = std::array<unsigned, 3>;
+using Quad = std::array<unsigned, 4>;
+using Tetra = std::array<unsigned, 4>;
+using Hexa = std::array<unsigned, 8>;
+
+class MeshTopologyBase : public Component {
+ public:
+  virtual std::size_t nb_points() const = 0;
+  virtual bool has_positions() const = 0;
+  virtual Vec3 point(std::size_t i) const = 0;
+  virtual const std::vector<Edge>& edges() const = 0;
+  virtual const std::vector<Triangle>& triangles() const = 0;
+  virtual const std::vector<Quad>& quads() const = 0;
+  virtual const std::vector<Tetra>& tetrahedra() const = 0;
+  virtual const std::vector<Hexa>& hexahedra() const = 0;
+};
+
+// Other topology objects (modifiers, geometry algorithms): filed in topologyObject.
+class TopologyObject : public Component {};
+
+// Visual-only components (OglModel, VisualStyle, lights...): nothing in batch runs.
+class VisualComponent : public Component {};
+
+// Components that change the context of their node (Gravity).
+class ContextObject : public Component {
+ public:
+  virtual void apply(Node& node) = 0;
+};
+
+}  // namespace sinew

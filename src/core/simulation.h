@@ -1,0 +1,26 @@
+// Simulation entry points: initialise a graph, advance it, broadcast events.
+//
+// init_root follows SOFA's initRoot (spec/framework.md §3.4); animate calls
+// the root's animation loop, which implements the step pipeline.
+#pragma once
+
+#include "core/node.h"
+
+namespace sinew {
+
+// Initialises the whole graph: default animation loop if missing, init
+// top-down, bwd_init bottom-up, project and propagate at t = 0, store reset
+// state. Returns false when an error was reported during init.
+bool init_root(Node& root);
+
+// One step of dt (0: the root's dt).
+void animate(Node& root, double dt = 0);
+
+// Broadcasts an event top-down to every listening component, in node order.
+void propagate_event(Node& root, Event& e);
+
+// Projects positions/velocities at time t and propagates them through
+// mappings, over the whole graph (used at init and at the end of each step).
+void project_and_propagate(Node& root, double t);
+
+}  // namespace sinew

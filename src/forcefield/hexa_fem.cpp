@@ -1,0 +1,416 @@
+#include "forcefield/hexa_fem.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "math/decompose.h"
+
+namespace sinew::fem {
+
+namespace {
+
+// Corner signs (ξ1, ξ2, ξ3) of the 8 nodes in the reference cube [-1,1]³.
+constexpr int kCorner[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                               {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// Small 3D helpers with SOFA's evaluation order (left-to-right sums).
+inline double norm3(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+
+inline Vec3 cross3(const Vec3& a, const Vec3& b) {
+  return Vec3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
+}
+
+// SOFA's normalize: divides by the norm, leaves the vector untouched when the
+// norm is ≤ DBL_EPSILON.
+inline void normalize3(Vec3& a) {
+  const double n = norm3(a);
+  if (n > kEps) {
+    a[0] /= n;
+    a[1] /= n;
+    a[2] /= n;
+  }
+}
+
+// R·v and Rᵀ·v.
+inline Vec3 mul(const Mat3& R, const Vec3& v) {
+  return Vec3(R(0, 0) * v[0] + R(0, 1) * v[1] + R(0, 2) * v[2], R(1, 0) * v[0] + R(1, 1) * v[1] + R(1, 2) * v[2],
+              R(2, 0) * v[0] + R(2, 1) * v[1] + R(2, 2) * v[2]);
+}
+inline Vec3 mul_t(const Mat3& R, double v0, double v1, double v2) {
+  return Vec3(R(0, 0) * v0 + R(1, 0) * v1 + R(2, 0) * v2, R(0, 1) * v0 + R(1, 1) * v1 + R(2, 1) * v2,
+              R(0, 2) * v0 + R(1, 2) * v1 + R(2, 2) * v2);
+}
+
+// Determinant as SOFA expands it (sum of the six triple products, in this order).
+inline double det3(const Mat3& m) {
+  return m(0, 0) * m(1, 1) * m(2, 2) + m(1, 0) * m(2, 1) * m(0, 2) + m(2, 0) * m(0, 1) * m(1, 2) -
+         m(0, 0) * m(2, 1) * m(1, 2) - m(1, 0) * m(0, 1) * m(2, 2) - m(2, 0) * m(1, 1) * m(0, 2);
+}
+
+// Inverse by cofactors divided by det. Like SOFA, refuses (and leaves `inv`
+// untouched) when |det| ≤ DBL_EPSILON — an absolute threshold.
+inline bool invert3(const Mat3& a, double det, Mat3& inv) {
+  if (std::fabs(det) <= kEps) return false;
+  inv(0, 0) = (a(1, 1) * a(2, 2) - a(2, 1) * a(1, 2)) / det;
+  inv(1, 0) = (a(1, 2) * a(2, 0) - a(2, 2) * a(1, 0)) / det;
+  inv(2, 0) = (a(1, 0) * a(2, 1) - a(2, 0) * a(1, 1)) / det;
+  inv(0, 1) = (a(2, 1) * a(0, 2) - a(0, 1) * a(2, 2)) / det;
+  inv(1, 1) = (a(2, 2) * a(0, 0) - a(0, 2) * a(2, 0)) / det;
+  inv(2, 1) = (a(2, 0) * a(0, 1) - a(0, 0) * a(2, 1)) / det;
+  inv(0, 2) = (a(0, 1) * a(1, 2) - a(1, 1) * a(0, 2)) / det;
+  inv(1, 2) = (a(0, 2) * a(1, 0) - a(1, 2) * a(0, 0)) / det;
+  inv(2, 2) = (a(0, 0) * a(1, 1) - a(1, 0) * a(0, 1)) / det;
+  return true;
+}
+
+// Averaged edges of the element along the three cell axes. SOFA writes each as
+// one chain n1−n0+n2−n3+n5−n4+n6−n7 evaluated left to right (not as a sum of
+// pair differences), then scales by 0.25.
+inline Vec3 edge_chain(const std::array<Vec3, 8>& n, int a0, int a1, int b0, int b1, int c0, int c1, int d0,
+                       int d1) {
+  Vec3 r;
+  for (int c = 0; c < 3; ++c)
+    r[c] = (n[a0][c] - n[a1][c] + n[b0][c] - n[b1][c] + n[c0][c] - n[c1][c] + n[d0][c] - n[d1][c]) * 0.25;
+  return r;
+}
+inline Vec3 edge_x(const std::array<Vec3, 8>& n) { return edge_chain(n, 1, 0, 2, 3, 5, 4, 6, 7); }
+inline Vec3 edge_y(const std::array<Vec3, 8>& n) { return edge_chain(n, 3, 0, 2, 1, 7, 4, 6, 5); }
+inline Vec3 edge_z(const std::array<Vec3, 8>& n) { return edge_chain(n, 4, 0, 5, 1, 7, 3, 6, 2); }
+
+// F = K·D, each row summed left to right starting from the first product.
+inline void mul24(const Mat24& K, const double* D, double* F) {
+  for (int i = 0; i < 24; ++i) {
+    const double* row = K.data() + 24 * i;
+    double s = row[0] * D[0];
+    for (int j = 1; j < 24; ++j) s += row[j] * D[j];
+    F[i] = s;
+  }
+}
+
+bool all_finite(const Mat24& K) {
+  for (int i = 0; i < 24 * 24; ++i)
+    if (!std::isfinite(K.data()[i])) return false;
+  return true;
+}
+
+}  // namespace
+
+HexaMaterial hexa_material(double young, double poisson) {
+  const double off = poisson / (1 - poisson);
+  const double shear = (1 - 2 * poisson) / (2 * (1 - poisson));
+  const double scale = (young * (1 - poisson)) / ((1 + poisson) * (1 - 2 * poisson));
+  return {1.0 * scale, off * scale, shear * scale};
+}
+
+HexaJacobianInfo hexa_element_stiffness(const std::array<Vec3, 8>& n, const HexaMaterial& mat, double coef,
+                                        Mat24& K) {
+  HexaJacobianInfo info;
+  K.setZero();
+  Mat3 J = Mat3::Zero();
+  Mat3 Ji = Mat3::Zero();  // stays at its last value when an inversion fails, as in SOFA
+  double detJ = 1.0;
+
+  // Parallelepiped shortcut: constant Jacobian. The first test is relative to
+  // |lx|, the four others to |lz|; ly is not tested (SOFA's choice).
+  const Vec3 lx = n[1] - n[0];
+  const Vec3 ly = n[3] - n[0];
+  const Vec3 lz = n[4] - n[0];
+  auto gap = [](const Vec3& a, const Vec3& l, const Vec3& b) {
+    return norm3(Vec3(a[0] + l[0] - b[0], a[1] + l[1] - b[1], a[2] + l[2] - b[2]));
+  };
+  const bool parallel = gap(n[3], lx, n[2]) < norm3(lx) * 0.001 && gap(n[0], lz, n[4]) < norm3(lz) * 0.001 &&
+                        gap(n[1], lz, n[5]) < norm3(lz) * 0.001 && gap(n[2], lz, n[6]) < norm3(lz) * 0.001 &&
+                        gap(n[3], lz, n[7]) < norm3(lz) * 0.001;
+  info.parallelepiped = parallel;
+  info.min_det = std::numeric_limits<double>::infinity();
+  if (parallel) {
+    for (int c = 0; c < 3; ++c) {
+      J(c, 0) = lx[c] / 2;
+      J(c, 1) = ly[c] / 2;
+      J(c, 2) = lz[c] / 2;
+    }
+    detJ = det3(J);
+    if (!invert3(J, detJ, Ji)) info.singular = true;
+    info.min_det = detJ;
+  }
+
+  const double U = mat.u, V = mat.v, W = mat.w;
+  const double inv_sqrt3 = 1.0 / std::sqrt(3.0);
+  for (int g1 = -1; g1 <= 1; g1 += 2)
+    for (int g2 = -1; g2 <= 1; g2 += 2)
+      for (int g3 = -1; g3 <= 1; g3 += 2) {
+        const double x1 = g1 * inv_sqrt3;
+        const double x2 = g2 * inv_sqrt3;
+        const double x3 = g3 * inv_sqrt3;
+        if (!parallel) {
+          for (int c = 0; c < 3; ++c) {
+            J(c, 0) = (n[1][c] - n[0][c]) * (1 - x2) * (1 - x3) / 8 + (n[2][c] - n[3][c]) * (1 + x2) * (1 - x3) / 8 +
+                      (n[5][c] - n[4][c]) * (1 - x2) * (1 + x3) / 8 + (n[6][c] - n[7][c]) * (1 + x2) * (1 + x3) / 8;
+            J(c, 1) = (n[3][c] - n[0][c]) * (1 - x1) * (1 - x3) / 8 + (n[2][c] - n[1][c]) * (1 + x1) * (1 - x3) / 8 +
+                      (n[7][c] - n[4][c]) * (1 - x1) * (1 + x3) / 8 + (n[6][c] - n[5][c]) * (1 + x1) * (1 + x3) / 8;
+            J(c, 2) = (n[4][c] - n[0][c]) * (1 - x1) * (1 - x2) / 8 + (n[5][c] - n[1][c]) * (1 + x1) * (1 - x2) / 8 +
+                      (n[6][c] - n[2][c]) * (1 + x1) * (1 + x2) / 8 + (n[7][c] - n[3][c]) * (1 - x1) * (1 + x2) / 8;
+          }
+          detJ = det3(J);
+          if (!invert3(J, detJ, Ji)) info.singular = true;
+          if (detJ < info.min_det) info.min_det = detJ;
+        }
+
+        // Physical shape-function gradients q = J⁻ᵀ dN/dξ.
+        double qx[8], qy[8], qz[8];
+        for (int i = 0; i < 8; ++i) {
+          const double s1 = kCorner[i][0], s2 = kCorner[i][1], s3 = kCorner[i][2];
+          const double d1 = s1 * (1 + s2 * x2) * (1 + s3 * x3) / 8.0;
+          const double d2 = (1 + s1 * x1) * s2 * (1 + s3 * x3) / 8.0;
+          const double d3 = (1 + s1 * x1) * (1 + s2 * x2) * s3 / 8.0;
+          qx[i] = d1 * Ji(0, 0) + d2 * Ji(1, 0) + d3 * Ji(2, 0);
+          qy[i] = d1 * Ji(0, 1) + d2 * Ji(1, 1) + d3 * Ji(2, 1);
+          qz[i] = d1 * Ji(0, 2) + d2 * Ji(1, 2) + d3 * Ji(2, 2);
+        }
+
+        for (int i = 0; i < 8; ++i) {
+          // D·B_i (6×3), only the entries that are not structurally zero.
+          const double m00 = U * qx[i], m01 = V * qy[i], m02 = V * qz[i];
+          const double m10 = V * qx[i], m11 = U * qy[i], m12 = V * qz[i];
+          const double m20 = V * qx[i], m21 = V * qy[i], m22 = U * qz[i];
+          const double m30 = W * qy[i], m31 = W * qx[i];
+          const double m41 = W * qz[i], m42 = W * qy[i];
+          const double m50 = W * qz[i], m52 = W * qx[i];
+          for (int j = i; j < 8; ++j) {
+            // k = B_jᵀ·(D·B_i), scaled by detJ before accumulation; it enters
+            // block (i, j) transposed.
+            double k[3][3];
+            k[0][0] = qx[j] * m00 + qy[j] * m30 + qz[j] * m50;
+            k[0][1] = qx[j] * m01 + qy[j] * m31;
+            k[0][2] = qx[j] * m02 + qz[j] * m52;
+            k[1][0] = qy[j] * m10 + qx[j] * m30;
+            k[1][1] = qy[j] * m11 + qx[j] * m31 + qz[j] * m41;
+            k[1][2] = qy[j] * m12 + qz[j] * m42;
+            k[2][0] = qz[j] * m20 + qx[j] * m50;
+            k[2][1] = qz[j] * m21 + qy[j] * m41;
+            k[2][2] = qz[j] * m22 + qy[j] * m42 + qx[j] * m52;
+            for (int m = 0; m < 3; ++m)
+              for (int l = 0; l < 3; ++l) K(3 * i + m, 3 * j + l) += k[l][m] * detJ;
+          }
+        }
+      }
+
+  // Only the upper triangle was integrated: copy it down (this also replaces
+  // the lower half of the diagonal blocks).
+  for (int i = 0; i < 24; ++i)
+    for (int j = i + 1; j < 24; ++j) K(j, i) = K(i, j);
+  for (int i = 0; i < 24 * 24; ++i) K.data()[i] *= coef;
+  return info;
+}
+
+Mat3 hexa_frame_large(const std::array<Vec3, 8>& n) {
+  Vec3 ex = edge_x(n);
+  const Vec3 w = edge_y(n);
+  normalize3(ex);
+  Vec3 ez = cross3(ex, w);
+  normalize3(ez);
+  const Vec3 ey = cross3(ez, ex);
+  Mat3 R;
+  R.row(0) = ex.transpose();
+  R.row(1) = ey.transpose();
+  R.row(2) = ez.transpose();
+  return R;
+}
+
+Mat3 hexa_frame_polar(const std::array<Vec3, 8>& n) {
+  Mat3 A;
+  A.row(0) = edge_x(n).transpose();
+  A.row(1) = edge_y(n).transpose();
+  A.row(2) = edge_z(n).transpose();
+  return polar_rotation(A);
+}
+
+namespace {
+
+Mat3 element_frame(HexaMethod m, const std::array<Vec3, 8>& n) {
+  switch (m) {
+    case HexaMethod::large: return hexa_frame_large(n);
+    case HexaMethod::polar: return hexa_frame_polar(n);
+    case HexaMethod::small: break;
+  }
+  return Mat3::Identity();
+}
+
+}  // namespace
+
+std::vector<HexaIssue> HexaFEM::init(std::span<const Vec3> X0, std::span<const std::array<int, 8>> elems,
+                                     std::span<const double> E, std::span<const double> nu, HexaMethod m,
+                                     std::span<const double> stiffness_coef) {
+  std::vector<HexaIssue> issues;
+  method = m;
+  potential_energy = 0;
+  const std::size_t ne = elems.size();
+  const std::size_t np = X0.size();
+  auto clear_all = [&] {
+    hexa.clear(), rest.clear(), R0.clear(), R.clear(), K.clear();
+    material.clear(), coef.clear(), active.clear(), node_hexa_count.assign(np, 0);
+  };
+  if (E.size() < ne || nu.size() < ne) {
+    issues.push_back({-1, true,
+                      "youngModulus/poissonRatio must be broadcast to one value per hexahedron (" +
+                          std::to_string(ne) + " hexahedra, " + std::to_string(E.size()) + " E, " +
+                          std::to_string(nu.size()) + " nu)"});
+    clear_all();
+    return issues;
+  }
+  if (!stiffness_coef.empty() && stiffness_coef.size() < ne) {
+    issues.push_back({-1, true, "stiffness coefficients: " + std::to_string(stiffness_coef.size()) + " for " +
+                                    std::to_string(ne) + " hexahedra"});
+    clear_all();
+    return issues;
+  }
+
+  hexa = std::vector<std::array<int, 8>>(elems.begin(), elems.end());  // safe even if elems views hexa
+  rest.assign(ne, {});
+  R0.assign(ne, Mat3::Identity());
+  R.assign(ne, Mat3::Identity());
+  K.assign(ne, Mat24::Zero());
+  material.assign(ne, {});
+  coef.assign(ne, 1.0);
+  active.assign(ne, 1);
+  node_hexa_count.assign(np, 0);
+
+  for (std::size_t e = 0; e < ne; ++e) {
+    const int ei = static_cast<int>(e);
+    const auto& h = hexa[e];
+    bool in_range = true;
+    for (int k = 0; k < 8; ++k)
+      if (h[k] < 0 || static_cast<std::size_t>(h[k]) >= np) {
+        issues.push_back({ei, true,
+                          "node " + std::to_string(k) + " index " + std::to_string(h[k]) + " out of range (" +
+                              std::to_string(np) + " points)"});
+        in_range = false;
+        break;
+      }
+    if (!in_range) {
+      active[e] = 0;
+      continue;
+    }
+    for (int k = 0; k < 8; ++k) ++node_hexa_count[h[k]];
+
+    std::array<Vec3, 8> nodes;
+    for (int k = 0; k < 8; ++k) nodes[k] = X0[h[k]];
+    R0[e] = element_frame(m, nodes);
+    R[e] = R0[e];
+    for (int k = 0; k < 8; ++k) rest[e][k] = mul(R0[e], nodes[k]);
+    material[e] = hexa_material(E[e], nu[e]);
+    if (!stiffness_coef.empty()) coef[e] = stiffness_coef[e];
+
+    const HexaJacobianInfo info = hexa_element_stiffness(rest[e], material[e], coef[e], K[e]);
+    if (info.singular) {
+      issues.push_back({ei, true,
+                        "degenerate hexahedron (zero Jacobian determinant): flat, collapsed or badly numbered"});
+    } else if (!R0[e].allFinite() || !all_finite(K[e])) {
+      issues.push_back({ei, true, "non-finite stiffness or frame (check E, nu and positions)"});
+    } else if (info.min_det < 0) {
+      issues.push_back({ei, false,
+                        "inverted hexahedron (negative Jacobian determinant): its stiffness is not positive"});
+    }
+  }
+  return issues;
+}
+
+void HexaFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
+  double energy = 0;
+  std::array<Vec3, 8> nodes;
+  std::array<Vec3, 8> deformed;
+  double D[24], F[24];
+  for (std::size_t e = 0; e < hexa.size(); ++e) {
+    if (!active[e]) continue;
+    const auto& h = hexa[e];
+    for (int k = 0; k < 8; ++k) nodes[k] = x[h[k]];
+    Mat3& Re = R[e];
+    if (method == HexaMethod::small) {
+      deformed = nodes;
+    } else {
+      Re = element_frame(method, nodes);
+      for (int k = 0; k < 8; ++k) deformed[k] = mul(Re, nodes[k]);
+    }
+    // Absolute displacement in the element frame (no centering).
+    const auto& r = rest[e];
+    for (int k = 0; k < 8; ++k)
+      for (int c = 0; c < 3; ++c) D[3 * k + c] = r[k][c] - deformed[k][c];
+
+    if (update_stiffness) hexa_element_stiffness(deformed, material[e], coef[e], K[e]);
+    mul24(K[e], D, F);
+
+    if (method == HexaMethod::small) {
+      for (int k = 0; k < 8; ++k) {
+        Vec3& fk = f[h[k]];
+        fk[0] += F[3 * k];
+        fk[1] += F[3 * k + 1];
+        fk[2] += F[3 * k + 2];
+      }
+    } else {
+      for (int k = 0; k < 8; ++k) {
+        const Vec3 t = mul_t(Re, F[3 * k], F[3 * k + 1], F[3 * k + 2]);
+        Vec3& fk = f[h[k]];
+        fk[0] += t[0];
+        fk[1] += t[1];
+        fk[2] += t[2];
+      }
+    }
+    // SOFA accumulates Σ F_k·(−D_k) node by node, then divides by −2.
+    for (int k = 0; k < 8; ++k)
+      energy += F[3 * k] * -D[3 * k] + F[3 * k + 1] * -D[3 * k + 1] + F[3 * k + 2] * -D[3 * k + 2];
+  }
+  potential_energy = energy / -2.0;
+}
+
+void HexaFEM::add_dforce(std::span<const Vec3> dx, std::span<Vec3> df, double kfactor) const {
+  double X[24], F[24];
+  const bool rotate = method != HexaMethod::small;  // small: R = I, product skipped (exact)
+  for (std::size_t e = 0; e < hexa.size(); ++e) {
+    if (!active[e]) continue;
+    const auto& h = hexa[e];
+    const Mat3& Re = R[e];
+    for (int k = 0; k < 8; ++k) {
+      const Vec3 v = rotate ? mul(Re, dx[h[k]]) : dx[h[k]];
+      X[3 * k] = v[0];
+      X[3 * k + 1] = v[1];
+      X[3 * k + 2] = v[2];
+    }
+    mul24(K[e], X, F);
+    for (int k = 0; k < 8; ++k) {
+      const Vec3 t = rotate ? mul_t(Re, F[3 * k], F[3 * k + 1], F[3 * k + 2])
+                            : Vec3(F[3 * k], F[3 * k + 1], F[3 * k + 2]);
+      Vec3& d = df[h[k]];
+      d[0] -= t[0] * kfactor;
+      d[1] -= t[1] * kfactor;
+      d[2] -= t[2] * kfactor;
+    }
+  }
+}
+
+void HexaFEM::node_rotations(std::span<Mat3> out) const {
+  for (std::size_t p = 0; p < out.size(); ++p) out[p] = Mat3::Identity();
+  for (std::size_t e = 0; e < hexa.size(); ++e) {
+    if (!active[e]) continue;
+    const Mat3& A = R[e];
+    const Mat3& B = R0[e];  // used transposed
+    Mat3 prod;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) prod(i, j) = A(i, 0) * B(j, 0) + A(i, 1) * B(j, 1) + A(i, 2) * B(j, 2);
+    for (int k = 0; k < 8; ++k) {
+      Mat3& o = out[hexa[e][k]];
+      for (int i = 0; i < 9; ++i) o.data()[i] += prod.data()[i];
+    }
+  }
+  for (std::size_t p = 0; p < out.size(); ++p) {
+    const int count = p < node_hexa_count.size() ? node_hexa_count[p] : 0;
+    if (count == 0) continue;  // identity (SOFA: division by zero)
+    const double n = static_cast<double>(count);
+    for (int i = 0; i < 9; ++i) out[p].data()[i] /= n;
+    out[p] = polar_rotation(out[p]);
+  }
+}
+
+}  // namespace sinew::fem

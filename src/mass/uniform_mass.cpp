@@ -1,0 +1,140 @@
+#include "mass/uniform_mass.h"
+
+#include <Eigen/LU>
+
+#include "core/node.h"
+#include "core/registry.h"
+
+namespace sinew {
+
+void UniformMass::init() {
+  ForceField::init();
+  if (state() != ComponentState::valid) return;
+  MechanicalState& s = *mstate;
+  const std::size_t n_dofs = s.size();
+
+  active_ = indices.get();
+  const VecNi<2> range = local_range.get();
+  if (range[0] >= 0 && range[1] > 0 && static_cast<std::size_t>(range[1]) + 1 < n_dofs) {
+    active_.clear();
+    for (int i = range[0]; i <= range[1]; ++i) active_.push_back(static_cast<unsigned>(i));
+  }
+  if (active_.empty())
+    for (unsigned i = 0; i < n_dofs; ++i) active_.push_back(i);
+  for (unsigned i : active_)
+    if (i >= n_dofs) {
+      msg_error("index " + std::to_string(i) + " is out of range (the state has " + std::to_string(n_dofs) +
+                " DoFs)");
+      state_ = ComponentState::invalid;
+      return;
+    }
+  const double n = static_cast<double>(active_.size());
+
+  const bool rigid = s.state_type() == StateType::rigid3;
+  std::vector<double> vm = vertex_mass.get();
+  Mat3 inertia = Mat3::Identity();
+  if (rigid && vm.size() >= 11)
+    for (int k = 0; k < 9; ++k) inertia(k / 3, k % 3) = vm[2 + k];
+
+  if (!filename.value().empty()) {
+    msg_error("mass files (filename=) are not supported yet");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if (total_mass.is_set() && total_mass.value() < 0) {
+    msg_error("totalMass must not be negative");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if (vertex_mass.is_set() && !vm.empty() && vm[0] < 0) {
+    msg_error("vertexMass must not be negative");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if (total_mass.is_set()) {
+    if (vertex_mass.is_set()) msg_warning("both totalMass and vertexMass are set: totalMass is used");
+    m_ = n > 0 ? total_mass.value() / n : 0.0;
+  } else if (vertex_mass.is_set()) {
+    m_ = vm.empty() ? 1.0 : vm[0];
+    total_mass.set(m_ * n);
+  } else {
+    msg_error("neither totalMass nor vertexMass is set: the object has no mass");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  inertia_mass_ = inertia * m_;
+  inv_inertia_mass_ = inertia_mass_.inverse();
+}
+
+void UniformMass::add_force(const MechParams& p) {
+  if (separate_gravity.value()) return;
+  MechanicalState& s = *mstate;
+  std::vector<double>& f = s.vec(p.f);
+  const Vec3 g = node()->gravity.value();
+  const int w = s.info().deriv_width;
+  const int dim = std::min(3, s.info().spatial_dim);
+  const Vec3 mg = g * m_;
+  for (unsigned i : active_)
+    for (int c = 0; c < dim; ++c) f[i * w + c] += mg[c];
+}
+
+void UniformMass::add_mdx(const MechParams&, int res, int dx, double factor) {
+  MechanicalState& s = *mstate;
+  std::vector<double>& r = s.vec(res);
+  const std::vector<double>& d = s.vec(dx);
+  const int w = s.info().deriv_width;
+  if (s.state_type() == StateType::rigid3) {
+    for (unsigned i : active_) {
+      for (int c = 0; c < 3; ++c) r[i * 6 + c] += d[i * 6 + c] * m_ * factor;
+      const Vec3 om(d[i * 6 + 3], d[i * 6 + 4], d[i * 6 + 5]);
+      const Vec3 t = inertia_mass_ * om * factor;
+      for (int c = 0; c < 3; ++c) r[i * 6 + 3 + c] += t[c];
+    }
+    return;
+  }
+  const double mf = m_ * factor;
+  for (unsigned i : active_)
+    for (int c = 0; c < w; ++c) r[i * w + c] += d[i * w + c] * mf;
+}
+
+void UniformMass::acc_from_f(const MechParams&, int a, int f) {
+  MechanicalState& s = *mstate;
+  std::vector<double>& av = s.vec(a);
+  const std::vector<double>& fv = s.vec(f);
+  const int w = s.info().deriv_width;
+  if (s.state_type() == StateType::rigid3) {
+    for (unsigned i : active_) {
+      for (int c = 0; c < 3; ++c) av[i * 6 + c] = fv[i * 6 + c] / m_;
+      const Vec3 t(fv[i * 6 + 3], fv[i * 6 + 4], fv[i * 6 + 5]);
+      const Vec3 al = inv_inertia_mass_ * t;
+      for (int c = 0; c < 3; ++c) av[i * 6 + 3 + c] = al[c];
+    }
+    return;
+  }
+  for (unsigned i : active_)
+    for (int c = 0; c < w; ++c) av[i * w + c] = fv[i * w + c] / m_;
+}
+
+void UniformMass::add_gravity_to_v(int v, double dt) {
+  MechanicalState& s = *mstate;
+  std::vector<double>& vv = s.vec(v);
+  const Vec3 dv = node()->gravity.value() * dt;
+  const int w = s.info().deriv_width;
+  const int dim = std::min(3, s.info().spatial_dim);
+  for (unsigned i : active_)
+    for (int c = 0; c < dim; ++c) vv[i * w + c] += dv[c];
+}
+
+void register_uniform_mass(Registry& r) {
+  ComponentInfo info;
+  info.name = "UniformMass";
+  info.category = "Mass";
+  info.description = "same mass on every degree of freedom";
+  info.templates = {"Vec1d", "Vec2d", "Vec3d", "Vec6d", "Rigid3d"};
+  info.default_template = "Vec3d";
+  info.requirement = Requirement::state;
+  info.create = creator<UniformMass>();
+  r.add(std::move(info));
+}
+
+}  // namespace sinew

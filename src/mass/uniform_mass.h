@@ -1,0 +1,45 @@
+// UniformMass: the same mass on every DoF (spec/mechanics.md §1.1).
+//
+// Vec templates: M = m·I. Rigid3d: vertexMass is "mass volume I00 … I22";
+// the inertia tensor is scaled by the mass and expressed in world axes
+// (never rotated with the body, as SOFA does). Gravity is added in addForce
+// unless separateGravity.
+#pragma once
+
+#include "core/roles.h"
+
+namespace sinew {
+
+class UniformMass final : public Mass {
+ public:
+  Field<std::vector<double>> vertex_mass{
+      this, "vertexMass", {1.0}, "mass of each DoF (kg); Rigid3d: mass volume I00 I01 … I22", "Mass"};
+  Field<double> total_mass{this, "totalMass", 1.0, "mass of the whole object (kg); wins over vertexMass", "Mass"};
+  Field<std::vector<unsigned>> indices{this, "indices", {}, "DoFs having a mass (default: all)", "Mass"};
+  Field<VecNi<2>> local_range{this, "localRange", VecNi<2>(-1, -1), "restrict to DoFs [first, last]", "Mass"};
+  Field<bool> preserve_total_mass{this, "preserveTotalMass", false, "keep totalMass when DoFs change", "Mass"};
+  Field<std::string> filename{this, "filename", "", "Rigid3d mass file (.rigid)", "Mass"};
+  Field<bool> show_gravity_center{this, "showGravityCenter", false, "draw the centre of gravity (viewer)",
+                                  "Visualization"};
+  Field<double> show_axis_size{this, "showAxisSizeFactor", 1.0, "axis size (viewer)", "Visualization"};
+  Field<bool> compute_mapping_inertia{this, "compute_mapping_inertia", false, "unused", "Mass"};
+  Field<bool> show_initial_center{this, "showInitialCenterOfGravity", false, "viewer", "Visualization"};
+  Field<bool> show_x0{this, "showX0", false, "viewer", "Visualization"};
+
+  void init() override;
+  void add_force(const MechParams& p) override;
+  void add_mdx(const MechParams& p, int res, int dx, double factor) override;
+  void acc_from_f(const MechParams& p, int a, int f) override;
+  void add_gravity_to_v(int v, double dt) override;
+  double total() const override { return total_mass.value(); }
+
+  double mass() const { return m_; }
+
+ private:
+  double m_ = 1.0;                    // mass of each DoF
+  Mat3 inertia_mass_ = Mat3::Identity();   // Rigid3d: inertia·mass (world axes)
+  Mat3 inv_inertia_mass_ = Mat3::Identity();
+  std::vector<unsigned> active_;      // DoFs with mass
+};
+
+}  // namespace sinew

@@ -1,0 +1,60 @@
+#include "projective/fixed_projective_constraint.h"
+
+#include <algorithm>
+
+#include "core/registry.h"
+
+namespace sinew {
+
+FixedProjectiveConstraint::FixedProjectiveConstraint() {}
+
+void FixedProjectiveConstraint::init() {
+  ProjectiveConstraint::init();
+  if (state() != ComponentState::valid) return;
+  const std::size_t n = mstate->size();
+  active_.clear();
+  for (unsigned i : indices.get()) {
+    if (i >= n) {
+      msg_warning("index " + std::to_string(i) + " is out of range (the state has " + std::to_string(n) +
+                  " DoFs); ignored");
+      continue;
+    }
+    active_.push_back(i);
+  }
+}
+
+void FixedProjectiveConstraint::zero(int id) {
+  std::vector<double>& d = mstate->vec(id);
+  const int w = mstate->info().deriv_width;
+  if (fix_all.value()) {
+    std::fill(d.begin(), d.end(), 0.0);
+    return;
+  }
+  // Indices may be re-evaluated when linked to an engine whose inputs changed.
+  if (indices.parent() || indices.producer()) {
+    const auto& idx = indices.get();
+    if (idx.size() != active_.size() || !std::equal(idx.begin(), idx.end(), active_.begin())) init();
+  }
+  for (unsigned i : active_)
+    for (int c = 0; c < w; ++c) d[i * w + c] = 0.0;
+}
+
+void FixedProjectiveConstraint::project_response(int dx) { zero(dx); }
+
+void FixedProjectiveConstraint::project_velocity(int v, double) {
+  if (activate_project_velocity.value()) zero(v);
+}
+
+void register_fixed_projective_constraint(Registry& r) {
+  ComponentInfo info;
+  info.name = "FixedProjectiveConstraint";
+  info.category = "Constraint/Projective";
+  info.description = "fixes a set of degrees of freedom";
+  info.templates = {"Vec1d", "Vec2d", "Vec3d", "Vec6d", "Rigid2d", "Rigid3d"};
+  info.default_template = "Vec3d";
+  info.requirement = Requirement::state;
+  info.create = creator<FixedProjectiveConstraint>();
+  r.add(std::move(info));
+}
+
+}  // namespace sinew

@@ -1,0 +1,43 @@
+#include "runner/session.h"
+
+#include <exception>
+
+#include "components/register_all.h"
+#include "core/simulation.h"
+
+namespace sinew::runner {
+
+std::vector<std::string> sofa_data_paths(const std::string& data_root) {
+  return {data_root + "/share", data_root + "/examples"};
+}
+
+Session::Session(const std::string& path, const SessionOptions& options) {
+  register_all_components();
+  scene::LoadOptions lo;
+  lo.data_paths = options.data_paths;
+  scene_ = scene::load_scene(path, lo, load_diag_);
+  if (!scene_.root) return;
+  if (scene_.root->diagnostics().has_errors()) return;  // refused whole, never half-run
+  try {
+    init_root(*scene_.root);
+  } catch (const std::exception& e) {
+    scene_.root->diagnostics().error({path, 0}, std::string("initialisation failed: ") + e.what());
+  }
+}
+
+Session::~Session() = default;
+
+bool Session::step() {
+  if (!ok()) return false;
+  try {
+    scene_.root->step_index = steps_;
+    animate(*scene_.root);
+  } catch (const std::exception& e) {
+    scene_.root->diagnostics().error({}, "step " + std::to_string(steps_) + " failed: " + e.what());
+    return false;
+  }
+  ++steps_;
+  return !scene_.root->diagnostics().has_errors();
+}
+
+}  // namespace sinew::runner

@@ -1,0 +1,49 @@
+// Second half of scene loading: element tree → nodes and components.
+//
+// Creates every component through the registry in document order, inserts
+// it in its node before parsing its attributes (so links to earlier objects
+// resolve at once), names unnamed objects ClassName1, ClassName2, ... per
+// node, resolves resource files, data links and object links, and reports
+// every problem as file:line with spelling suggestions. Loading goes on past
+// bad elements; the scene is refused when any error was reported.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/node.h"
+#include "scene/resource_paths.h"
+#include "scene/xml_tree.h"
+
+namespace sinew::scene {
+
+struct MissingComponent {
+  std::string type;
+  SourceLocation where;
+};
+
+struct LoadOptions {
+  std::vector<std::string> data_paths;  // searched after the scene's folder, in order
+  bool use_sofa_data_path = true;       // also honour $SOFA_DATA_PATH
+};
+
+struct LoadedScene {
+  std::unique_ptr<Node> root;                 // null when the file could not be read at all
+  std::vector<MissingComponent> missing;      // components Sinew does not implement (yet)
+  std::string file;
+  Diagnostics& diagnostics() { return root->diagnostics(); }
+  bool ok() const { return root && !root->diagnostics().has_errors(); }
+};
+
+// Loads and builds (does not initialise). Messages from reading the XML and
+// building go to the root's diagnostics (or to `diag_if_no_root` when there is no root).
+LoadedScene load_scene(const std::string& path, const LoadOptions& options, Diagnostics& diag_if_no_root);
+
+// Builds a graph from an element tree.
+LoadedScene build_scene(const Element& root, const ResourcePaths& paths);
+
+// Whether the registry knows a tag (class names, aliases, renamed classes).
+bool is_known_component(std::string_view tag);
+
+}  // namespace sinew::scene

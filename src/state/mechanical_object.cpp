@@ -1,0 +1,303 @@
+#include "state/mechanical_object.h"
+
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Geometry>
+
+#include "core/node.h"
+#include "core/registry.h"
+
+namespace sinew {
+
+namespace {
+FlatVec one_element(int width, bool rigid_coord) {
+  FlatVec v;
+  v.width = width;
+  v.data.assign(width, 0.0);
+  if (rigid_coord && width == 7) v.data[6] = 1.0;  // identity quaternion (x, y, z, w)
+  return v;
+}
+FlatVec empty_vec(int width) {
+  FlatVec v;
+  v.width = width;
+  return v;
+}
+}  // namespace
+
+MechanicalObject::MechanicalObject(StateType type)
+    : position(this, "position", one_element(state_type_info(type).coord_width, true), "positions", "State"),
+      velocity(this, "velocity", one_element(state_type_info(type).deriv_width, false), "velocities", "State"),
+      force(this, "force", one_element(state_type_info(type).deriv_width, false), "forces (accumulator)", "State"),
+      external_force(this, "externalForce", one_element(state_type_info(type).deriv_width, false),
+                     "forces added from outside the solver; emptied every step", "State"),
+      rest_position(this, "rest_position", empty_vec(state_type_info(type).coord_width), "rest positions", "State"),
+      deriv_x(this, "derivX", empty_vec(state_type_info(type).deriv_width), "position variation (solver temporary)",
+              "State"),
+      free_position(this, "free_position", empty_vec(state_type_info(type).coord_width),
+                    "free-motion positions", "State"),
+      free_velocity(this, "free_velocity", empty_vec(state_type_info(type).deriv_width),
+                    "free-motion velocities", "State"),
+      reset_position(this, "reset_position", empty_vec(state_type_info(type).coord_width),
+                     "positions restored by reset", "State"),
+      reset_velocity(this, "reset_velocity", empty_vec(state_type_info(type).deriv_width),
+                     "velocities restored by reset", "State"),
+      type_(type) {
+  // Transforms and names never propagate through src= links.
+  for (BaseField* f : {static_cast<BaseField*>(&translation), static_cast<BaseField*>(&rotation),
+                       static_cast<BaseField*>(&scale3d)})
+    f->set_autolink(false);
+}
+
+Field<FlatVec>* MechanicalObject::standard(int id) {
+  switch (id) {
+    case kPosition: return &position;
+    case kVelocity: return &velocity;
+    case kForce: return &force;
+    case kExternalForce: return &external_force;
+    case kRestPosition: return &rest_position;
+    case kDx: return &deriv_x;
+    case kFreePosition: return &free_position;
+    case kFreeVelocity: return &free_velocity;
+    case kResetPosition: return &reset_position;
+    case kResetVelocity: return &reset_velocity;
+    default: return nullptr;
+  }
+}
+
+void MechanicalObject::resize_vec(std::vector<double>& v, bool coord, std::size_t n) const {
+  const auto& inf = info();
+  const int w = coord ? inf.coord_width : inf.deriv_width;
+  const std::size_t old = v.size() / w;
+  v.resize(n * w, 0.0);
+  if (coord && type_ == StateType::rigid3)
+    for (std::size_t i = old; i < n; ++i) v[i * 7 + 6] = 1.0;
+}
+
+void MechanicalObject::resize(std::size_t n) {
+  size_ = n;
+  for (int id : {kPosition, kVelocity, kForce, kDx}) resize_vec(standard(id)->edit().data, is_coord_vec(id), n);
+  for (int id : {kRestPosition, kFreePosition, kFreeVelocity})
+    if (!standard(id)->value().data.empty()) resize_vec(standard(id)->edit().data, is_coord_vec(id), n);
+  for (auto& [id, v] : dynamic_) resize_vec(v, false, n);
+  size_field.set(static_cast<int>(n));
+}
+
+std::vector<double>& MechanicalObject::vec(int id) {
+  if (Field<FlatVec>* f = standard(id)) {
+    std::vector<double>& d = f->edit().data;
+    // Vectors other than externalForce always span all DOFs (allocated on demand).
+    if (id != kExternalForce && d.size() != size_ * f->value().width) resize_vec(d, is_coord_vec(id), size_);
+    return d;
+  }
+  auto it = dynamic_.find(id);
+  if (it == dynamic_.end()) {
+    it = dynamic_.emplace(id, std::vector<double>{}).first;
+    resize_vec(it->second, false, size_);
+  } else if (it->second.size() != size_ * info().deriv_width) {
+    resize_vec(it->second, false, size_);
+  }
+  return it->second;
+}
+
+void MechanicalObject::touch(int id) {
+  if (Field<FlatVec>* f = standard(id)) f->touch();
+}
+
+void MechanicalObject::add_deriv_to_coord(int x_out, int x_in, int v, double h) {
+  std::vector<double>& vv = vec(v);
+  std::vector<double> xin_copy;
+  const std::vector<double>* xi = &vec(x_in);
+  std::vector<double>& xo = vec(x_out);
+  if (type_ == StateType::rigid3) {
+    for (std::size_t i = 0; i < size_; ++i) {
+      const double* d = &vv[i * 6];
+      const double* c = &(*xi)[i * 7];
+      double* o = &xo[i * 7];
+      Eigen::Quaterniond q(c[6], c[3], c[4], c[5]);
+      Vec3 w(d[3] * h * 0.5, d[4] * h * 0.5, d[5] * h * 0.5);
+      const double theta = w.norm();
+      Eigen::Quaterniond e;
+      if (theta < std::numeric_limits<double>::epsilon()) {
+        e = Eigen::Quaterniond(1.0, w.x(), w.y(), w.z());
+        e.normalize();
+      } else {
+        const double s = std::sin(theta) / theta;
+        e = Eigen::Quaterniond(std::cos(theta), s * w.x(), s * w.y(), s * w.z());
+      }
+      const Eigen::Quaterniond r = e * q;  // world-frame exponential map, left multiplication
+      o[0] = c[0] + d[0] * h;
+      o[1] = c[1] + d[1] * h;
+      o[2] = c[2] + d[2] * h;
+      o[3] = r.x();
+      o[4] = r.y();
+      o[5] = r.z();
+      o[6] = r.w();
+    }
+  } else {
+    for (std::size_t i = 0; i < xo.size(); ++i) xo[i] = (*xi)[i] + vv[i] * h;
+  }
+  touch(x_out);
+}
+
+void MechanicalObject::end_integration() { external_force.edit().data.clear(); }
+
+void MechanicalObject::parse(AttributeMap& attrs, Diagnostics& diag) {
+  // Pseudo-attributes (not fields), read as single-precision floats like SOFA.
+  auto read_float = [&](const char* key, double& out) {
+    if (const std::string* s = attrs.take(key)) {
+      double d = 0;
+      parse::read(*s, d);
+      out = static_cast<double>(static_cast<float>(d));
+      return true;
+    }
+    return false;
+  };
+  auto read3 = [&](const char* a, const char* b, const char* c, Field<Vec3>& f, double missing) {
+    Vec3 v(missing, missing, missing);
+    bool any = read_float(a, v.x());
+    any = read_float(b, v.y()) || any;
+    any = read_float(c, v.z()) || any;
+    if (any) f.set(v);
+  };
+  double s = 1;
+  if (read_float("scale", s)) scale3d.set(Vec3(s, s, s));
+  read3("sx", "sy", "sz", scale3d, 1.0);
+  read3("rx", "ry", "rz", rotation, 0.0);
+  read3("dx", "dy", "dz", translation, 0.0);
+  read3("rx2", "ry2", "rz2", rotation2, 0.0);
+  read3("dx2", "dy2", "dz2", translation2, 0.0);
+  Component::parse(attrs, diag);
+  if (size_field.is_set()) resize(static_cast<std::size_t>(std::max(0, size_field.value())));
+}
+
+void MechanicalObject::apply_transform(std::vector<double>& x, const Vec3& scale, const Vec3& rot_deg,
+                                       const Vec3& trans) const {
+  const auto& inf = info();
+  const int w = inf.coord_width;
+  const int dim = std::min(3, inf.spatial_dim);
+  const std::size_t n = x.size() / w;
+  const bool scaled = scale != Vec3::Ones();
+  const bool rotated = rot_deg != Vec3::Zero();
+  const bool moved = trans != Vec3::Zero();
+  const double to_rad = M_PI / 180.0;
+  const Eigen::Quaterniond q = Eigen::AngleAxisd(rot_deg.z() * to_rad, Vec3::UnitZ()) *
+                               Eigen::AngleAxisd(rot_deg.y() * to_rad, Vec3::UnitY()) *
+                               Eigen::AngleAxisd(rot_deg.x() * to_rad, Vec3::UnitX());
+  for (std::size_t i = 0; i < n; ++i) {
+    double* c = &x[i * w];
+    if (scaled)
+      for (int k = 0; k < std::min(3, w); ++k) c[k] *= scale[k];
+    if (rotated) {
+      Vec3 p = Vec3::Zero();
+      for (int k = 0; k < dim; ++k) p[k] = c[k];
+      p = q * p;
+      for (int k = 0; k < dim; ++k) c[k] = p[k];
+      if (type_ == StateType::rigid3) {
+        Eigen::Quaterniond o(c[6], c[3], c[4], c[5]);
+        o = q * o;
+        c[3] = o.x(), c[4] = o.y(), c[5] = o.z(), c[6] = o.w();
+      } else if (type_ == StateType::rigid2) {
+        c[2] += rot_deg.z() * to_rad;
+      }
+    }
+    if (moved)
+      for (int k = 0; k < dim; ++k) c[k] += trans[k];
+  }
+}
+
+void MechanicalObject::init() {
+  // 1. Topology: the first mesh topology of this node (not the node's slot).
+  if (!topology && use_topology.value() && node()) topology.set(node()->find_local<MeshTopologyBase>());
+
+  const int cw = info().coord_width, dw = info().deriv_width;
+  std::vector<double> x = position.get().data;
+  std::vector<double> v = velocity.get().data;
+  const std::vector<double>& r = rest_position.get().data;
+  // 2-3. Sizes from given vectors; rest_position wins when longer.
+  if (r.size() / cw > x.size() / cw) x = r;
+  std::size_t nx = x.size() / cw, nv = v.size() / dw;
+  if (nx <= 1 && nv <= 1) {
+    // 4. A single (or no) position is replaced by the topology's points.
+    if (topology && topology->has_positions() && topology->nb_points() > 0) {
+      const std::size_t n = topology->nb_points();
+      x.assign(n * cw, 0.0);
+      for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 p = topology->point(i);
+        for (int k = 0; k < std::min(3, info().spatial_dim); ++k) x[i * cw + k] = p[k];
+        if (type_ == StateType::rigid3) x[i * cw + 6] = 1.0;
+      }
+      std::vector<double> nvv(n * dw, 0.0);
+      if (nv == 1)
+        for (std::size_t i = 0; i < n; ++i)
+          for (int k = 0; k < dw; ++k) nvv[i * dw + k] = v[k];
+      v = std::move(nvv);
+      nx = nv = n;
+    } else if (nx == 0) {
+      v.clear();
+      nv = 0;
+    }
+  } else if (nx != nv) {
+    if (nv >= 1 && nv < nx) {
+      std::vector<double> last(v.end() - dw, v.end());
+      for (std::size_t i = nv; i < nx; ++i) v.insert(v.end(), last.begin(), last.end());
+      nv = nx;
+    }
+  }
+  const std::size_t n = std::max(nx, nv);
+  size_ = n;
+  resize_vec(x, true, n);
+  resize_vec(v, false, n);
+  position.edit().data = std::move(x);
+  velocity.edit().data = std::move(v);
+  resize(n);
+  // 5. Initial transform.
+  reinit();
+  // 6. Rest position := position (× restScale) unless given with the right size.
+  if (rest_position.value().data.size() != position.value().data.size()) {
+    std::vector<double> rp = position.value().data;
+    if (rest_scale.value() != 1.0)
+      for (std::size_t i = 0; i < n; ++i)
+        for (int k = 0; k < std::min(3, cw); ++k) rp[i * cw + k] *= rest_scale.value();
+    rest_position.edit().data = std::move(rp);
+  }
+  // 7. Second transform, on positions only.
+  if (rotation2.value() != Vec3::Zero() || translation2.value() != Vec3::Zero())
+    apply_transform(position.edit().data, Vec3::Ones(), rotation2.value(), translation2.value());
+}
+
+void MechanicalObject::reinit() {
+  if (scale3d.value() != Vec3::Ones() || rotation.value() != Vec3::Zero() || translation.value() != Vec3::Zero())
+    apply_transform(position.edit().data, scale3d.value(), rotation.value(), translation.value());
+}
+
+void MechanicalObject::store_reset_state() {
+  if (!independent()) return;
+  reset_position.edit().data = position.value().data;
+  const auto& v = velocity.value().data;
+  if (std::any_of(v.begin(), v.end(), [](double x) { return x != 0.0; })) reset_velocity.edit().data = v;
+}
+
+void MechanicalObject::reset() {
+  std::fill(vec(kForce).begin(), vec(kForce).end(), 0.0);
+  if (!reset_position.value().data.empty()) position.edit().data = reset_position.value().data;
+  if (!reset_velocity.value().data.empty()) velocity.edit().data = reset_velocity.value().data;
+  else std::fill(vec(kVelocity).begin(), vec(kVelocity).end(), 0.0);
+}
+
+void register_mechanical_object(Registry& r) {
+  ComponentInfo info;
+  info.name = "MechanicalObject";
+  info.category = "StateContainer";
+  info.description = "degrees of freedom: positions, velocities, forces";
+  info.templates = {"Vec1d", "Vec2d", "Vec3d", "Vec6d", "Rigid2d", "Rigid3d"};
+  info.default_template = "Vec3d";
+  info.create = [](const std::string& t) -> std::unique_ptr<Component> {
+    StateType st;
+    if (!state_type_from_name(t, st)) return nullptr;
+    return std::make_unique<MechanicalObject>(st);
+  };
+  r.add(std::move(info));
+}
+
+}  // namespace sinew
