@@ -193,7 +193,9 @@ int check(const CheckArgs& a) {
       for (const auto& m : missing) list += (list.empty() ? "" : " ") + m;
       std::printf("%s\t%s\t%s\n", scene.c_str(), ok ? "ok" : "error", list.c_str());
     } else {
+      std::fflush(stdout);
       print_messages(session.diagnostics());
+      std::fflush(stderr);
       std::printf("%s: %s (%d errors, %d warnings)\n", scene.c_str(), ok ? "ok" : "FAILED",
                   session.diagnostics().error_count(), session.diagnostics().warning_count());
     }

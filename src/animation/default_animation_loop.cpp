@@ -1,5 +1,7 @@
 #include "animation/default_animation_loop.h"
 
+#include <oneapi/tbb/parallel_for.h>
+
 #include "core/node.h"
 #include "core/registry.h"
 #include "core/simulation.h"
@@ -14,7 +16,14 @@ void DefaultAnimationLoop::step(double dt) {
   Event begin{Event::Kind::animate_begin, dt};
   propagate_event(root, begin);
 
-  solve(root, dt);
+  if (parallel_ode_solving.value()) {
+    solver_nodes_.clear();
+    collect_solver_nodes(root);
+    // Scopes of sibling solvers are disjoint: same results as in sequence.
+    tbb::parallel_for(std::size_t{0}, solver_nodes_.size(), [&](std::size_t i) { solve(*solver_nodes_[i], dt); });
+  } else {
+    solve(root, dt);
+  }
   project_and_propagate(root, t1);
   end_integration(root);
   advance_time(root, dt);
@@ -40,6 +49,21 @@ void DefaultAnimationLoop::solve(Node& node, double dt) {
       if (ff->state() == ComponentState::valid) ff->add_force(p);
   }
   for (std::size_t i = 0; i < node.children().size(); ++i) solve(*node.children()[i], dt);
+}
+
+void DefaultAnimationLoop::collect_solver_nodes(Node& node) {
+  if (!node.activated.value() || node.sleeping.value()) return;
+  if (!node.solvers.empty()) {
+    solver_nodes_.push_back(&node);
+    return;
+  }
+  if (!node.interaction_force_fields.empty()) {
+    MechParams p;
+    p.f = kExternalForce;
+    for (ForceField* ff : node.interaction_force_fields)
+      if (ff->state() == ComponentState::valid) ff->add_force(p);
+  }
+  for (std::size_t i = 0; i < node.children().size(); ++i) collect_solver_nodes(*node.children()[i]);
 }
 
 void DefaultAnimationLoop::project_and_propagate(Node& root, double t1) {

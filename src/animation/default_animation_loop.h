@@ -24,11 +24,14 @@ class DefaultAnimationLoop final : public AnimationLoop {
  private:
   // Stages, in order.
   void solve(Node& node, double dt);
+  // Parallel mode: explicit interaction forces first, then the solver nodes to run concurrently.
+  void collect_solver_nodes(Node& node);
   void project_and_propagate(Node& root, double t1);
   void end_integration(Node& root);
   void advance_time(Node& root, double dt);
 
-  std::unique_ptr<MechanicalOps> whole_graph_;  // scope of the root, for projection/propagation
+  std::unique_ptr<MechanicalOps> whole_graph_;
+  std::vector<Node*> solver_nodes_;  // scope of the root, for projection/propagation
 };
 
 }  // namespace sinew

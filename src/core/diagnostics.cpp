@@ -6,6 +6,7 @@
 namespace sinew {
 
 void Diagnostics::add(Severity s, SourceLocation where, std::string who, std::string text) {
+  std::lock_guard<std::mutex> lock(mutex_);
   if (s == Severity::error) ++errors_;
   if (s == Severity::warning) ++warnings_;
   messages_.push_back({s, std::move(where), std::move(who), std::move(text)});

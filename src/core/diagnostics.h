@@ -5,6 +5,7 @@
 // A scene with errors is refused as a whole, never half-run.
 #pragma once
 
+#include <mutex>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +28,13 @@ struct Message {
 
 class Diagnostics {
  public:
+  Diagnostics() = default;
+  Diagnostics(const Diagnostics& o) : messages_(o.messages_), errors_(o.errors_), warnings_(o.warnings_) {}
+  Diagnostics& operator=(const Diagnostics& o) {
+    messages_ = o.messages_, errors_ = o.errors_, warnings_ = o.warnings_;
+    return *this;
+  }
+  // Thread-safe: solvers running in parallel may report.
   void add(Severity s, SourceLocation where, std::string who, std::string text);
   void info(SourceLocation where, std::string text) { add(Severity::info, std::move(where), {}, std::move(text)); }
   void warning(SourceLocation where, std::string text) { add(Severity::warning, std::move(where), {}, std::move(text)); }
@@ -45,6 +53,7 @@ class Diagnostics {
   std::vector<Message> messages_;
   int errors_ = 0;
   int warnings_ = 0;
+  std::mutex mutex_;
 };
 
 // Closest names to `name` among `candidates` (edit distance, case-insensitive),

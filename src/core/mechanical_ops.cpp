@@ -1,6 +1,7 @@
 #include "core/mechanical_ops.h"
 
 #include <atomic>
+#include <cmath>
 
 #include "core/node.h"
 
@@ -134,6 +135,13 @@ std::size_t MechanicalOps::independent_dofs() const {
   std::size_t n = 0;
   for (MechanicalState* s : independent_) n += s->size() * s->info().deriv_width;
   return n;
+}
+
+bool MechanicalOps::all_finite(int id) const {
+  for (MechanicalState* s : independent_)
+    for (double x : s->vec(id))
+      if (!std::isfinite(x)) return false;
+  return true;
 }
 
 // ------------------------------------------------------------------ mechanics

@@ -44,7 +44,9 @@ class MechanicalOps {
   double v_dot(int a, int b) const;            // sums x²+y²+z² per DOF, then over DOFs
   // v += fa·a ; x = x + fx·v (per DOF, using the updated v): the integration step.
   void v_integrate(int v, int a, double fa, int x_out, int x_in, double fx);
-  std::size_t independent_dofs() const;        // total scalar count of independent derivatives
+  std::size_t independent_dofs() const;
+  // False when a vector of an independent state holds a NaN or an infinity.
+  bool all_finite(int id) const;        // total scalar count of independent derivatives
 
   // ---- mechanics
   // f = external + Σ force fields, mapped forces accumulated bottom-up.

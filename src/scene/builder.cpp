@@ -94,6 +94,11 @@ class Builder {
     c->set_type(info->name, created.used_template);
     c->where = e.where;
 
+    // Name first, so that messages while parsing name the component; unnamed
+    // objects are ClassName1, ClassName2, ... per node (trap T17).
+    const std::string* given = attrs.peek("name");
+    if (given && !given->empty()) c->name.set(*given);
+    else c->name.set(info->name + std::to_string(node.next_default_index(info->name)));
     if (const std::string* src = attrs.take("src")) apply_src(*c, node, *src, attrs, e);
     c->parse(attrs, *diag_);
     if (c->name.value().empty()) c->name.set(info->name + std::to_string(node.next_default_index(info->name)));

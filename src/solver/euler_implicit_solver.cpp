@@ -59,6 +59,13 @@ void EulerImplicitSolver::solve(double dt, int x_result, int v_result) {
     if (v_result != kVelocity) ops.v_eq(v_result, kVelocity);
     ops.v_integrate(v_result, x_, 1.0, x_result, kPosition, h);
   }
+  if (!ops.all_finite(x_result) || !ops.all_finite(v_result)) {
+    // Stop here rather than let NaNs spread: report once, then this solver is off.
+    msg_error("the simulation diverged at t = " + parse::format_double(node()->time.value() + h) +
+              " (non-finite positions or velocities); reduce dt or check the material parameters");
+    state_ = ComponentState::invalid;
+    return;
+  }
   ops.add_separate_gravity(h, v_result);
   if (vdamping.value() != 0.0) ops.v_teq(v_result, std::exp(-h * vdamping.value()));
 
