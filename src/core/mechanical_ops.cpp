@@ -23,6 +23,7 @@ void MechanicalOps::rebuild() {
   force_fields_.clear();
   masses_.clear();
   mappings_.clear();
+  all_mappings_.clear();
   constraints_.clear();
   // Top-down over the subtree, skipping inactive and sleeping nodes.
   std::vector<Node*> stack{node_};
@@ -34,7 +35,11 @@ void MechanicalOps::rebuild() {
   };
   visit(visit, *node_);
   for (Node* n : order) {
-    if (n->mechanical_mapping && n->mechanical_mapping->is_mechanical()) mappings_.push_back(n->mechanical_mapping);
+    // Every mapping is propagated (positions, velocities); only mechanical ones carry forces and dx.
+    if (Mapping* m = n->mechanical_mapping) {
+      all_mappings_.push_back(m);
+      if (m->is_mechanical()) mappings_.push_back(m);
+    }
     if (MechanicalState* s = n->mechanical_state) {
       states_.push_back(s);
       (s->independent() ? independent_ : mapped_).push_back(s);
@@ -146,28 +151,34 @@ bool MechanicalOps::all_finite(int id) const {
 
 // ------------------------------------------------------------------ mechanics
 
+namespace {
+// Ids as seen by a single-state component (dynamic ids only exist on independent states).
+MechParams resolved(const MechParams& p, const std::vector<MechanicalState*>& states) {
+  if (states.size() != 1 || !states[0]) return p;  // multi-state components resolve per state
+  const MechanicalState& s = *states[0];
+  MechParams q = p;
+  q.x = vec_for(s, p.x, kPosition);
+  q.v = vec_for(s, p.v, kVelocity);
+  q.f = vec_for(s, p.f, kForce);
+  q.dx = vec_for(s, p.dx, kDx);
+  q.df = vec_for(s, p.df, kDforce);
+  return q;
+}
+}  // namespace
+
 void MechanicalOps::compute_force(int f, bool clear, bool accumulate) {
   MechParams p;
   p.f = f;
   for (MechanicalState* s : states_) {
-    const int id = s->independent() ? f : mapped_id(f, kForce);
-    auto& fv = s->vec(id);
+    auto& fv = s->vec(vec_for(*s, f, kForce));
     if (clear) std::fill(fv.begin(), fv.end(), 0.0);
     const auto& ext = s->vec(kExternalForce);
     for (std::size_t i = 0; i < std::min(ext.size(), fv.size()); ++i) fv[i] += ext[i];
   }
-  for (ForceField* ff : force_fields_) {
-    MechParams q = p;
-    if (!ff->states().empty() && ff->states()[0] && !ff->states()[0]->independent()) q.f = mapped_id(f, kForce);
-    ff->add_force(q);
-  }
+  for (ForceField* ff : force_fields_) ff->add_force(resolved(p, ff->states()));
   if (accumulate)
-    for (auto it = mappings_.rbegin(); it != mappings_.rend(); ++it) {
-      Mapping* m = *it;
-      if (!m->map_forces.value()) continue;
-      const int in = m->from()->independent() ? f : mapped_id(f, kForce);
-      m->apply_jt(in, mapped_id(f, kForce));
-    }
+    for (auto it = mappings_.rbegin(); it != mappings_.rend(); ++it)
+      if ((*it)->map_forces.value()) (*it)->apply_jt(f, kForce);
 }
 
 void MechanicalOps::add_mbk_dx(int df, double m, double b, double k, int dx, bool clear, bool accumulate) {
@@ -179,16 +190,11 @@ void MechanicalOps::add_mbk_dx(int df, double m, double b, double k, int dx, boo
   p.k = k;
   if (clear)
     for (MechanicalState* s : mapped_) {
-      auto& v = s->vec(mapped_id(df, kDforce));
+      auto& v = s->vec(vec_for(*s, df, kDforce));
       std::fill(v.begin(), v.end(), 0.0);
     }
   for (ForceField* ff : force_fields_) {
-    MechParams q = p;
-    MechanicalState* s0 = ff->states().empty() ? nullptr : ff->states()[0];
-    if (s0 && !s0->independent()) {
-      q.dx = mapped_id(dx, kDx);
-      q.df = mapped_id(df, kDforce);
-    }
+    const MechParams q = resolved(p, ff->states());
     const double kf = ff->k_factor(q);
     if (kf != 0.0 || q.b != 0.0) ff->add_dforce(q, kf);
     if (auto* mass = dynamic_cast<Mass*>(ff)) {
@@ -200,9 +206,8 @@ void MechanicalOps::add_mbk_dx(int df, double m, double b, double k, int dx, boo
     for (auto it = mappings_.rbegin(); it != mappings_.rend(); ++it) {
       Mapping* mp = *it;
       if (!mp->map_forces.value()) continue;
-      const int in_df = mp->from()->independent() ? df : mapped_id(df, kDforce);
-      mp->apply_jt(in_df, mapped_id(df, kDforce));
-      if (k != 0.0) mp->apply_djt(in_df, mp->from()->independent() ? dx : mapped_id(dx, kDx), k);
+      mp->apply_jt(df, kDforce);
+      if (k != 0.0) mp->apply_djt(df, dx, k);
     }
 }
 
@@ -227,37 +232,34 @@ void MechanicalOps::add_separate_gravity(double dt, int v) {
 
 void MechanicalOps::propagate_dx_and_reset_df(int dx, int df) {
   for (MechanicalState* s : states_) {
-    auto& v = s->vec(s->independent() ? df : mapped_id(df, kDforce));
+    auto& v = s->vec(vec_for(*s, df, kDforce));
     std::fill(v.begin(), v.end(), 0.0);
   }
   propagate_dx(dx);
 }
 
 void MechanicalOps::propagate_dx(int dx) {
-  for (Mapping* m : mappings_) {
-    if (!m->map_forces.value()) continue;
-    m->apply_j(mapped_id(dx, kDx), m->from()->independent() ? dx : mapped_id(dx, kDx));
-  }
+  for (Mapping* m : mappings_)
+    if (m->map_forces.value()) m->apply_j(dx, kDx);
 }
 
 void MechanicalOps::propagate_x_and_v(int x, int v) {
-  for (Mapping* m : mappings_) {
-    m->apply(kPosition, m->from()->independent() ? x : kPosition);
-    m->apply_j(kVelocity, m->from()->independent() ? v : kVelocity);
+  for (Mapping* m : all_mappings_) {
+    m->apply(x);
+    m->apply_j(v, kVelocity);
   }
 }
 
 void MechanicalOps::project_response(int dx) {
-  for (ProjectiveConstraint* c : constraints_)
-    if (c->mstate->independent() || dx < kFirstDynamicVec) c->project_response(dx);
+  for (ProjectiveConstraint* c : constraints_) c->project_response(vec_for(*c->mstate, dx, kDx));
 }
 
 void MechanicalOps::project_position(int x, double t) {
-  for (ProjectiveConstraint* c : constraints_) c->project_position(c->mstate->independent() ? x : kPosition, t);
+  for (ProjectiveConstraint* c : constraints_) c->project_position(vec_for(*c->mstate, x, kPosition), t);
 }
 
 void MechanicalOps::project_velocity(int v, double t) {
-  for (ProjectiveConstraint* c : constraints_) c->project_velocity(c->mstate->independent() ? v : kVelocity, t);
+  for (ProjectiveConstraint* c : constraints_) c->project_velocity(vec_for(*c->mstate, v, kVelocity), t);
 }
 
 }  // namespace sinew

@@ -60,7 +60,7 @@ class MechanicalOps {
   // a = M⁻¹ f
   void acc_from_f(int a, int f);
   void add_separate_gravity(double dt, int v);
-  // Top-down J·dx through mappings; clears df on every state first.
+  // Top-down J·dx through mechanical mappings; clears df on every state first.
   void propagate_dx_and_reset_df(int dx, int df);
   void propagate_dx(int dx);
   void propagate_x_and_v(int x, int v);
@@ -72,14 +72,12 @@ class MechanicalOps {
   double m_fact = 0, b_fact = 0, k_fact = 0;
 
  private:
-  // On mapped states, dynamic ids fall back to the standard vector of the same role (§6.1).
-  static int mapped_id(int id, int role) { return id >= kFirstDynamicVec ? role : id; }
-
   Node* node_;
   std::vector<MechanicalState*> states_, independent_, mapped_;
   std::vector<ForceField*> force_fields_;
   std::vector<Mass*> masses_;
-  std::vector<Mapping*> mappings_;  // top-down order
+  std::vector<Mapping*> mappings_;      // mechanical mappings, top-down order
+  std::vector<Mapping*> all_mappings_;  // including mappings to visual models
   std::vector<ProjectiveConstraint*> constraints_;
 };
 

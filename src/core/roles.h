@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/component.h"
+#include "core/matrix_sink.h"
 #include "math/types.h"
 
 namespace sinew {
@@ -69,6 +70,13 @@ class MechanicalState : public Component {
   bool independent() const;
 };
 
+// The vector a mechanical operation uses on state `s` for `id`: solver
+// vectors (dynamic ids) exist only on independent states; on mapped states
+// the standard vector of the same role is used instead (framework.md §6.1).
+inline int vec_for(const MechanicalState& s, int id, int role) {
+  return id < kFirstDynamicVec || s.independent() ? id : role;
+}
+
 // ---------------------------------------------------------------- mechanics
 // Parameters of a mechanical operation: which vectors play x, v, f, dx, df,
 // and the factors of m·M + b·B + k·K.
@@ -93,6 +101,11 @@ class ForceField : public Component {
   // States this force field reads and writes (one for single-state force fields).
   virtual std::vector<MechanicalState*> states() const { return {mstate.get()}; }
 
+  // Assembled systems: add the raw entries of K = ∂f/∂x (resp. B = ∂f/∂v).
+  // Return false when this component cannot assemble (the assembler reports it).
+  virtual bool build_stiffness(MatrixSink& K) { return false; }
+  virtual bool build_damping(MatrixSink& B) { return true; }  // no damping matrix by default
+
   void init() override;  // binds mstate to the node's state when not linked
   double k_factor(const MechParams& p) const { return p.k + p.b * rayleigh_stiffness.value(); }
 };
@@ -111,7 +124,10 @@ class Mass : public ForceField {
   // v += dt · g
   virtual void add_gravity_to_v(int v, double dt) = 0;
   virtual double total() const = 0;
+  // Assembled systems: add the raw entries of M.
+  virtual bool build_mass(MatrixSink& M) = 0;
   void add_dforce(const MechParams&, double) override {}  // masses have no stiffness by default
+  bool build_stiffness(MatrixSink&) override { return true; }
 };
 
 class ProjectiveConstraint : public Component {
@@ -121,6 +137,10 @@ class ProjectiveConstraint : public Component {
   virtual void project_response(int dx) = 0;
   virtual void project_velocity(int v, double t) = 0;
   virtual void project_position(int x, double t) = 0;
+  // Assembled systems: scalar indices (in the state) whose rows and columns are
+  // cleared with 1 on the diagonal. Constraints that project differently
+  // (line, plane) return false and are handled by the assembler otherwise.
+  virtual bool dirichlet_indices(std::vector<std::size_t>& out) { return false; }
 };
 
 class Mapping : public Component {
@@ -130,15 +150,26 @@ class Mapping : public Component {
   Field<bool> map_masses{this, "mapMasses", true, "whether masses are mapped back up", "Mapping"};
   Field<bool> apply_rest_position{this, "applyRestPosition", false, "also map the rest position at init",
                                   "Mapping"};
-  virtual MechanicalState* from() const = 0;
-  virtual MechanicalState* to() const = 0;
-  // Mechanical mappings map forces/dx (their output is a MechanicalState).
-  virtual bool is_mechanical() const { return to() != nullptr; }
-  virtual void apply(int out_x, int in_x) = 0;
-  virtual void apply_j(int out_v, int in_v) = 0;
-  virtual void apply_jt(int in_f, int out_f) = 0;
-  // Geometric stiffness: in_df += kfactor · dJᵀ(out_force) · in_dx (non-linear mappings only).
-  virtual void apply_djt(int in_df, int in_dx, double kfactor) {}
+
+  // Input states (several for multi-mappings) and the output; the output is
+  // null when it is not a mechanical state (a visual model).
+  virtual std::vector<MechanicalState*> inputs() const = 0;
+  virtual MechanicalState* output() const = 0;
+  bool is_mechanical() const { return output() != nullptr; }
+
+  // Each id is resolved per state with vec_for(state, id, role).
+  // out.x ← f(in.x)   (role kPosition)
+  virtual void apply(int x) = 0;
+  // out.v ← J·in.v    (role kVelocity for velocities, kDx for position variations)
+  virtual void apply_j(int v, int role) = 0;
+  // in.f += Jᵀ·out.f  (role kForce or kDforce)
+  virtual void apply_jt(int f, int role) = 0;
+  // in.df += k · (∂Jᵀ/∂x · out.force) · in.dx: geometric stiffness of non-linear mappings.
+  virtual void apply_djt(int df, int dx, double k) {}
+  // Assembled systems: J as entries (false when not available), and the
+  // geometric stiffness as raw entries on the input states.
+  virtual bool jacobian(std::vector<JacobianEntry>& out) { return false; }
+  virtual bool build_geometric_stiffness(MatrixSink& K) { return true; }
 };
 
 class OdeSolver : public Component {

@@ -92,6 +92,13 @@ void HexahedronFEMForceField::add_dforce(const MechParams& p, double kfactor) {
   fem_.add_dforce(as_vec3(dx), as_vec3(df), kfactor);
 }
 
+bool HexahedronFEMForceField::build_stiffness(MatrixSink& K) {
+  const MechanicalState* s = mstate.get();
+  // ∂f/∂x blocks −Rᵀ·K_ij·R (kfactor 1); the assembler applies its factor.
+  fem_.add_stiffness_blocks(1.0, [&](int i, int j, const Mat3& b) { K.add_block(s, 3 * i, s, 3 * j, b); });
+  return true;
+}
+
 void register_hexahedron_fem_force_field(Registry& r) {
   ComponentInfo info;
   info.name = "HexahedronFEMForceField";

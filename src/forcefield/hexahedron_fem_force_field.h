@@ -27,6 +27,7 @@ class HexahedronFEMForceField final : public ForceField {
   void init() override;
   void add_force(const MechParams& p) override;
   void add_dforce(const MechParams& p, double kfactor) override;
+  bool build_stiffness(MatrixSink& K) override;
 
   const fem::HexaFEM& kernel() const { return fem_; }
 

@@ -125,6 +125,21 @@ void UniformMass::add_gravity_to_v(int v, double dt) {
     for (int c = 0; c < dim; ++c) vv[i * w + c] += dv[c];
 }
 
+bool UniformMass::build_mass(MatrixSink& M) {
+  MechanicalState* s = mstate.get();
+  const int w = s->info().deriv_width;
+  for (unsigned i : active_) {
+    if (s->state_type() == StateType::rigid3) {
+      for (int c = 0; c < 3; ++c) M.add(s, i * 6 + c, s, i * 6 + c, m_);
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) M.add(s, i * 6 + 3 + a, s, i * 6 + 3 + b, inertia_mass_(a, b));
+    } else {
+      for (int c = 0; c < w; ++c) M.add(s, i * w + c, s, i * w + c, m_);
+    }
+  }
+  return true;
+}
+
 void register_uniform_mass(Registry& r) {
   ComponentInfo info;
   info.name = "UniformMass";

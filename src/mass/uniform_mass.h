@@ -32,6 +32,7 @@ class UniformMass final : public Mass {
   void acc_from_f(const MechParams& p, int a, int f) override;
   void add_gravity_to_v(int v, double dt) override;
   double total() const override { return total_mass.value(); }
+  bool build_mass(MatrixSink& M) override;
 
   double mass() const { return m_; }
 

@@ -45,6 +45,17 @@ void FixedProjectiveConstraint::project_velocity(int v, double) {
   if (activate_project_velocity.value()) zero(v);
 }
 
+bool FixedProjectiveConstraint::dirichlet_indices(std::vector<std::size_t>& out) {
+  const std::size_t w = static_cast<std::size_t>(mstate->info().deriv_width);
+  if (fix_all.value()) {
+    for (std::size_t i = 0; i < mstate->size() * w; ++i) out.push_back(i);
+    return true;
+  }
+  for (unsigned i : active_)
+    for (std::size_t c = 0; c < w; ++c) out.push_back(i * w + c);
+  return true;
+}
+
 void register_fixed_projective_constraint(Registry& r) {
   ComponentInfo info;
   info.name = "FixedProjectiveConstraint";
