@@ -16,7 +16,12 @@ const std::string* AttributeMap::peek(std::string_view name) const {
   return it == values_.end() ? nullptr : &it->second.value;
 }
 
-Component::Component() = default;
+Component::Component() {
+  // Never propagated by src="@loader" (spec/framework.md §2.4 step 4).
+  for (BaseField* f : {static_cast<BaseField*>(&name), static_cast<BaseField*>(&print_log),
+                       static_cast<BaseField*>(&tags), static_cast<BaseField*>(&listening)})
+    f->set_autolink(false);
+}
 Component::~Component() = default;
 
 std::string Component::describe() const {

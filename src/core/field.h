@@ -191,6 +191,10 @@ class Field final : public BaseField {
       const int mw = value_.width;
       const std::size_t n = w > 0 ? flat.size() / w : 0;
       value_.data.assign(n * mw, 0.0);
+      // Rigid3d coordinates (width 7) built from points get the identity orientation, as a
+      // resized SOFA vector of RigidCoord would (never the invalid quaternion 0 0 0 0).
+      if (mw == 7 && w < 7)
+        for (std::size_t i = 0; i < n; ++i) value_.data[i * 7 + 6] = 1.0;
       for (std::size_t i = 0; i < n; ++i)
         for (int c = 0; c < std::min(mw, w); ++c) value_.data[i * mw + c] = flat[i * w + c];
     } else if constexpr (Rows<T>::width > 0) {
@@ -241,6 +245,12 @@ class BaseLink {
   virtual bool accept(Base* target) = 0;
   virtual Base* target() const = 0;
   virtual std::string type_name() const = 0;
+  // Multi-links (several space-separated paths, e.g. a multi-mapping's `input`):
+  // the builder resolves each path, using accept() as a type check only, then
+  // calls add_target() for each resolved object after clear_targets().
+  virtual bool is_multi() const { return false; }
+  virtual void clear_targets() {}
+  virtual void add_target(Base*) {}
 
  private:
   std::string name_, help_, path_;

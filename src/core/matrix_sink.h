@@ -6,6 +6,16 @@
 // stiffness, spec/solvers.md §0.1) and skips components whose factor is 0.
 // Indices are scalar indices inside a state: dof·deriv_width + component.
 // Non-virtual and inline: called once per element block in hot loops.
+//
+// Two modes:
+// * standalone (no layout): entries are kept with their states (entries()),
+//   for tests and tools;
+// * assembly (a Layout is bound by the assembler): each state pair is mapped
+//   once to a target matrix and offsets, and entries are recorded as
+//   (target, global row, global col, factor·value) triplets in a buffer that
+//   keeps its capacity, so a steady assembly does not allocate. The assembler
+//   scatters them into a fixed pattern through slots computed on the first
+//   assembly (solver/system_assembler.h).
 #pragma once
 
 #include <cstddef>
@@ -26,12 +36,34 @@ class MatrixSink {
     std::uint32_t row, col;
     double value;
   };
+  // Where entries of a pair of states go: target matrix (0 = global system,
+  // others chosen by the layout) and the offsets added to the local indices.
+  struct Binding {
+    int target = 0;
+    std::uint32_t row_offset = 0, col_offset = 0;
+  };
+  class Layout {
+   public:
+    virtual ~Layout() = default;
+    virtual Binding bind(const MechanicalState* rs, const MechanicalState* cs) = 0;
+  };
+  struct Triplet {
+    int target;
+    std::uint32_t row, col;
+    double value;
+  };
 
   void set_factor(double f) { factor_ = f; }
   double factor() const { return factor_; }
 
   void add(const MechanicalState* rs, std::size_t r, const MechanicalState* cs, std::size_t c, double v) {
-    entries_.push_back({rs, cs, static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(c), v * factor_});
+    if (!layout_) {
+      entries_.push_back({rs, cs, static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(c), v * factor_});
+      return;
+    }
+    if (rs != rs_ || cs != cs_) rebind(rs, cs);
+    triplets_.push_back({binding_.target, static_cast<std::uint32_t>(binding_.row_offset + r),
+                         static_cast<std::uint32_t>(binding_.col_offset + c), v * factor_});
   }
   // A 3×3 block whose top-left entry is at scalar indices (r, c).
   void add_block(const MechanicalState* rs, std::size_t r, const MechanicalState* cs, std::size_t c, const Mat3& b) {
@@ -39,12 +71,38 @@ class MatrixSink {
       for (int j = 0; j < 3; ++j) add(rs, r + i, cs, c + j, b(i, j));
   }
 
-  void clear() { entries_.clear(); }
+  void clear() {
+    entries_.clear();
+    triplets_.clear();
+  }
   const std::vector<Entry>& entries() const { return entries_; }
 
+  // ---- assembler side
+  // Binds a layout (nullptr: standalone mode) and clears what was recorded.
+  void begin(Layout* layout) {
+    layout_ = layout;
+    rs_ = cs_ = nullptr;
+    factor_ = 1.0;
+    clear();
+  }
+  // Adds an entry already expressed in target indices (no factor applied).
+  void add_raw(int target, std::uint32_t r, std::uint32_t c, double v) { triplets_.push_back({target, r, c, v}); }
+  const std::vector<Triplet>& triplets() const { return triplets_; }
+
  private:
+  void rebind(const MechanicalState* rs, const MechanicalState* cs) {
+    rs_ = rs;
+    cs_ = cs;
+    binding_ = layout_->bind(rs, cs);
+  }
+
   double factor_ = 1.0;
   std::vector<Entry> entries_;
+  Layout* layout_ = nullptr;
+  const MechanicalState* rs_ = nullptr;
+  const MechanicalState* cs_ = nullptr;
+  Binding binding_;
+  std::vector<Triplet> triplets_;
 };
 
 // One entry of a mapping Jacobian: ∂out[row] / ∂in_k[col] where in_k is

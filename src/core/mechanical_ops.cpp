@@ -26,20 +26,25 @@ void MechanicalOps::rebuild() {
   all_mappings_.clear();
   constraints_.clear();
   // Top-down over the subtree, skipping inactive and sleeping nodes.
-  std::vector<Node*> stack{node_};
-  std::vector<Node*> order;
-  auto visit = [&](auto&& self, Node& n) -> void {
+  // A node below a mechanical mapping with mapForces=false is "pruned": its
+  // mappings are still propagated, but force and dx visitors skip it (§3.5).
+  std::vector<std::pair<Node*, bool>> order;
+  auto visit = [&](auto&& self, Node& n, bool pruned) -> void {
     if (!n.activated.value() || n.sleeping.value()) return;
-    order.push_back(&n);
-    for (auto& c : n.children()) self(self, *c);
+    if (Mapping* m = n.mechanical_mapping; m && !m->map_forces.value()) pruned = true;
+    order.emplace_back(&n, pruned);
+    for (auto& c : n.children()) self(self, *c, pruned);
   };
-  visit(visit, *node_);
-  for (Node* n : order) {
+  visit(visit, *node_, false);
+  for (auto [n, pruned] : order) {
     // Every mapping is propagated (positions, velocities); only mechanical ones carry forces and dx.
     if (Mapping* m = n->mechanical_mapping) {
-      all_mappings_.push_back(m);
-      if (m->is_mechanical()) mappings_.push_back(m);
+      if (m->state() == ComponentState::valid) {
+        all_mappings_.push_back(m);
+        if (m->is_mechanical() && !pruned) mappings_.push_back(m);
+      }
     }
+    if (pruned) continue;
     if (MechanicalState* s = n->mechanical_state) {
       states_.push_back(s);
       (s->independent() ? independent_ : mapped_).push_back(s);
@@ -166,9 +171,11 @@ MechParams resolved(const MechParams& p, const std::vector<MechanicalState*>& st
 }
 }  // namespace
 
-void MechanicalOps::compute_force(int f, bool clear, bool accumulate) {
+void MechanicalOps::compute_force(int f, bool clear, bool accumulate, int x, int v) {
   MechParams p;
   p.f = f;
+  p.x = x;
+  p.v = v;
   for (MechanicalState* s : states_) {
     auto& fv = s->vec(vec_for(*s, f, kForce));
     if (clear) std::fill(fv.begin(), fv.end(), 0.0);

@@ -50,7 +50,8 @@ class MechanicalOps {
 
   // ---- mechanics
   // f = external + Σ force fields, mapped forces accumulated bottom-up.
-  void compute_force(int f, bool clear = true, bool accumulate = true);
+  // x, v: the positions and velocities the force fields read (RungeKutta stages use temporaries).
+  void compute_force(int f, bool clear = true, bool accumulate = true, int x = kPosition, int v = kVelocity);
   // df (+)= m·M·dx + b·B·dx + k·K·dx, with per-component Rayleigh factors (§6.3).
   void add_mbk_dx(int df, double m, double b, double k, int dx = kDx, bool clear = true, bool accumulate = true);
   // Same with dx := velocity.

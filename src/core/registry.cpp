@@ -1,6 +1,7 @@
 #include "core/registry.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include "core/node.h"
 #include "core/parse.h"
@@ -119,19 +120,35 @@ std::string requirement_problem(const ComponentInfo& info, const std::string& tm
     const std::size_t comma = tmpl.find(',');
     if (comma == std::string::npos) return "bad mapping template";
     auto want_in = tmpl.substr(0, comma), want_out = tmpl.substr(comma + 1);
-    auto state_at = [&](const char* attr, const char* def) -> MechanicalState* {
-      const std::string* p = attrs.peek(attr);
-      std::string path = p ? *p : def;
-      return dynamic_cast<MechanicalState*>(resolve_object_path(
-          node, nullptr, path, [](Base* b) { return dynamic_cast<MechanicalState*>(b) != nullptr; }));
+    // Type name of the state a path designates ("" when none): mechanical
+    // states, and visual models (always Vec3d) as outputs.
+    auto state_at = [&](const std::string& path, bool allow_visual, Base** which) -> std::string {
+      Base* b = resolve_object_path(node, nullptr, path, [allow_visual](Base* c) {
+        return dynamic_cast<MechanicalState*>(c) != nullptr ||
+               (allow_visual && dynamic_cast<VisualState*>(c) != nullptr);
+      });
+      *which = b;
+      if (auto* m = dynamic_cast<MechanicalState*>(b)) return m->info().name;
+      if (dynamic_cast<VisualState*>(b)) return "Vec3d";
+      return {};
     };
-    MechanicalState* in = state_at("input", "@../");
-    MechanicalState* out = state_at("output", "@./");
-    if (!in) return "input state not found";
+    const std::string* in_attr = attrs.peek("input");
+    const std::string* out_attr = attrs.peek("output");
+    Base* out = nullptr;
+    const std::string out_type = state_at(out_attr ? *out_attr : "@./", true, &out);
     if (!out) return "output state not found";
-    if (in == out) return "input and output are the same state";
-    if (want_in != in->info().name) return std::string("input is ") + in->info().name;
-    if (want_out != out->info().name) return std::string("output is ") + out->info().name;
+    // Multi-mappings list several inputs, all of the In type.
+    std::istringstream tokens(in_attr ? *in_attr : std::string("@../"));
+    int count = 0;
+    for (std::string p; tokens >> p; ++count) {
+      Base* in = nullptr;
+      const std::string in_type = state_at(p, false, &in);
+      if (!in) return "input state not found (" + p + ")";
+      if (in == out) return "input and output are the same state";
+      if (want_in != in_type) return "input is " + in_type;
+    }
+    if (count == 0) return "input state not found";
+    if (want_out != out_type) return "output is " + out_type;
     return {};
   }
   return {};

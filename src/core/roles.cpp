@@ -40,4 +40,13 @@ void ProjectiveConstraint::init() {
   }
 }
 
+void Mapping::parse(AttributeMap& attrs, Diagnostics& diag) {
+  if (const std::string* v = attrs.take("isMechanical")) {
+    if (!map_forces.read(*v) && !v->empty())
+      diag.warning(where, describe() + ": could not read value for field 'isMechanical': \"" + *v + "\"");
+    map_masses.read(*v);
+  }
+  Component::parse(attrs, diag);
+}
+
 }  // namespace sinew

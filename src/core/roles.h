@@ -126,6 +126,8 @@ class Mass : public ForceField {
   virtual double total() const = 0;
   // Assembled systems: add the raw entries of M.
   virtual bool build_mass(MatrixSink& M) = 0;
+  // Diagonal (lumped) masses can be inverted directly by explicit solvers.
+  virtual bool is_diagonal() const { return true; }
   void add_dforce(const MechParams&, double) override {}  // masses have no stiffness by default
   bool build_stiffness(MatrixSink&) override { return true; }
 };
@@ -143,19 +145,39 @@ class ProjectiveConstraint : public Component {
   virtual bool dirichlet_indices(std::vector<std::size_t>& out) { return false; }
 };
 
+// A state that mappings may write but mechanical operations never see: the
+// points of a visual model (OglModel), SOFA's VisualState<Vec3d>. Always Vec3d
+// (3 scalars per point); it has positions and rest positions, no velocities.
+class VisualState : public Component {
+ public:
+  virtual std::size_t visual_size() const = 0;
+  virtual void visual_resize(std::size_t n) = 0;
+  // id kPosition (or a solver vector: its role is position) or kRestPosition;
+  // nullptr for every other id (visual models have no derivatives).
+  virtual std::vector<double>* visual_vec(int id) = 0;
+};
+
 class Mapping : public Component {
  public:
-  Field<bool> map_forces{this, "mapForces", true, "whether forces are mapped back up", "Mapping"};
-  Field<bool> map_constraints{this, "mapConstraints", true, "whether constraints are mapped back up", "Mapping"};
-  Field<bool> map_masses{this, "mapMasses", true, "whether masses are mapped back up", "Mapping"};
-  Field<bool> apply_rest_position{this, "applyRestPosition", false, "also map the rest position at init",
-                                  "Mapping"};
+  Field<bool> map_forces{this, "mapForces", true, "Are forces mapped ?", "Mapping"};
+  Field<bool> map_constraints{this, "mapConstraints", true, "Are constraints mapped ?", "Mapping"};
+  Field<bool> map_masses{this, "mapMasses", true, "Are masses mapped ?", "Mapping"};
+  Field<bool> map_matrices{this, "mapMatrices", false, "Are matrix explicit mapped?", "Mapping"};
+  Field<bool> apply_rest_position{this, "applyRestPosition", false,
+                                  "set to true to apply this mapping to restPosition at init", "Mapping"};
 
   // Input states (several for multi-mappings) and the output; the output is
-  // null when it is not a mechanical state (a visual model).
+  // null when it is not a mechanical state (a visual model, see visual_output()).
   virtual std::vector<MechanicalState*> inputs() const = 0;
   virtual MechanicalState* output() const = 0;
+  virtual VisualState* visual_output() const { return nullptr; }
+  // Mechanical mappings carry forces and dx (framework.md trap T1: mappings to
+  // visual models are flagged non-mechanical at init). A mechanical mapping
+  // with mapForces=false prunes the force/dx visitors below it.
   bool is_mechanical() const { return output() != nullptr; }
+
+  // `isMechanical` is an alias of both mapForces and mapMasses (SOFA BaseMapping).
+  void parse(AttributeMap& attrs, Diagnostics& diag) override;
 
   // Each id is resolved per state with vec_for(state, id, role).
   // out.x ← f(in.x)   (role kPosition)
@@ -208,10 +230,56 @@ class MeshTopologyBase : public Component {
   virtual const std::vector<Quad>& quads() const = 0;
   virtual const std::vector<Tetra>& tetrahedra() const = 0;
   virtual const std::vector<Hexa>& hexahedra() const = 0;
+
+  // Neighbourhood queries (SOFA's XAroundY / XInY), built on first use and
+  // cached until the element lists change; one entry per vertex/edge/...
+  // "Around" lists hold element indices in increasing order, except
+  // triangles_around_edge, where a triangle that runs along the edge's
+  // direction comes first (SOFA). Default: empty (topology without support).
+  using IndexList = std::vector<unsigned>;
+  static constexpr unsigned kInvalidIndex = ~0u;
+  virtual const std::vector<IndexList>& edges_around_vertex() const { return empty_lists(); }
+  virtual const std::vector<IndexList>& triangles_around_vertex() const { return empty_lists(); }
+  virtual const std::vector<IndexList>& triangles_around_edge() const { return empty_lists(); }
+  virtual const std::vector<IndexList>& quads_around_vertex() const { return empty_lists(); }
+  virtual const std::vector<IndexList>& quads_around_edge() const { return empty_lists(); }
+  virtual const std::vector<IndexList>& tetrahedra_around_vertex() const { return empty_lists(); }
+  virtual const std::vector<IndexList>& tetrahedra_around_edge() const { return empty_lists(); }
+  virtual const std::vector<IndexList>& tetrahedra_around_triangle() const { return empty_lists(); }
+  virtual const std::vector<IndexList>& hexahedra_around_vertex() const { return empty_lists(); }
+  virtual const std::vector<IndexList>& hexahedra_around_edge() const { return empty_lists(); }
+  virtual const std::vector<IndexList>& hexahedra_around_quad() const { return empty_lists(); }
+  // Edge j of triangle = edge opposite vertex j; of quad = (q[j+1], q[j+2]);
+  // of tetra/hexa = edge j of SOFA's local edge table; triangle j of a tetra =
+  // face opposite vertex j; quad j of a hexa = face j of SOFA's face table.
+  virtual const std::vector<std::array<unsigned, 3>>& edges_in_triangle() const { return empty_of<3>(); }
+  virtual const std::vector<std::array<unsigned, 4>>& edges_in_quad() const { return empty_of<4>(); }
+  virtual const std::vector<std::array<unsigned, 6>>& edges_in_tetrahedron() const { return empty_of<6>(); }
+  virtual const std::vector<std::array<unsigned, 4>>& triangles_in_tetrahedron() const { return empty_of<4>(); }
+  virtual const std::vector<std::array<unsigned, 12>>& edges_in_hexahedron() const { return empty_of<12>(); }
+  virtual const std::vector<std::array<unsigned, 6>>& quads_in_hexahedron() const { return empty_of<6>(); }
+  // Index of the element with these vertices (any order/orientation), or kInvalidIndex.
+  virtual unsigned edge_index(unsigned, unsigned) const { return kInvalidIndex; }
+  virtual unsigned triangle_index(unsigned, unsigned, unsigned) const { return kInvalidIndex; }
+  virtual unsigned quad_index(unsigned, unsigned, unsigned, unsigned) const { return kInvalidIndex; }
+
+ protected:
+  static const std::vector<IndexList>& empty_lists() {
+    static const std::vector<IndexList> e;
+    return e;
+  }
+  template <std::size_t N>
+  static const std::vector<std::array<unsigned, N>>& empty_of() {
+    static const std::vector<std::array<unsigned, N>> e;
+    return e;
+  }
 };
 
 // Other topology objects (modifiers, geometry algorithms): filed in topologyObject.
 class TopologyObject : public Component {};
+
+// Collision models (spheres, triangles, lines, points of a body).
+class CollisionModel : public Component {};
 
 // Visual-only components (OglModel, VisualStyle, lights...): nothing in batch runs.
 class VisualComponent : public Component {};

@@ -1,140 +1,108 @@
 #include "engine/box_roi.h"
 
-#include "core/node.h"
+#include <cmath>
+
 #include "core/registry.h"
+#include "io/sofa_quat.h"
 
 namespace sinew {
 
+BoxROI::BoxROI(StateType type) : BaseROI(type) {
+  add_input(&box);
+  add_input(&oriented_box);
+  draw_roi.add_alias("drawBoxes");
+  quads.add_alias("quad");
+  compute_quads.add_alias("computeQuad");
+  quads_in_roi.add_alias("quadInROI");
+}
+
+void BoxROI::normalize_boxes() {
+  boxes_ = box.get();
+  bool swapped = false;
+  for (VecN<6>& b : boxes_)
+    for (int a = 0; a < 3; ++a)
+      if (b[a] > b[a + 3]) std::swap(b[a], b[a + 3]), swapped = true;
+  if (swapped) box.edit() = boxes_;  // SOFA writes the ordered boxes back
+}
+
+void BoxROI::roi_init() {
+  if (!box.is_set() && !oriented_box.is_set()) box.set({(VecN<6>() << 0, 0, 0, 1, 1, 1).finished()});
+  if (spatial_dim() != 3 && oriented_box.is_set() && !oriented_box.get().empty())
+    msg_warning("oriented boxes are not supported in " + std::to_string(spatial_dim()) + "D");
+}
+
 namespace {
-FlatVec empty_flat(StateType t) {
-  FlatVec v;
-  v.width = state_type_info(t).coord_width;
-  return v;
+double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+void normalize3(Vec3& v) {
+  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if (n > std::numeric_limits<double>::epsilon()) v /= n;
 }
 }  // namespace
 
-BoxROI::BoxROI(StateType type)
-    : position(this, "position", empty_flat(type), "points to select from (default: the state's rest_position)",
-               "Inputs"),
-      points_in_roi(this, "pointsInROI", empty_flat(type), "points in the ROI", "Outputs") {
-  for (BaseField* f : std::initializer_list<BaseField*>{&box, &oriented_box, &position, &edges, &triangles, &quads,
-                                                        &tetrahedra, &hexahedra, &strict})
-    add_input(f);
-  for (BaseField* f : std::initializer_list<BaseField*>{
-           &indices, &edge_indices, &triangle_indices, &quad_indices, &tetrahedron_indices, &hexahedron_indices,
-           &points_in_roi, &edges_in_roi, &triangles_in_roi, &quads_in_roi, &tetrahedra_in_roi, &hexahedra_in_roi,
-           &nb_indices, &indices_out})
-    add_output(f);
-}
-
-void BoxROI::init() {
-  if (!oriented_box.get().empty()) {
-    msg_error("orientedBox is not supported yet; use box");
-    state_ = ComponentState::invalid;
-    return;
-  }
-  if (!box.is_set()) box.set({(VecN<6>() << 0, 0, 0, 1, 1, 1).finished()});
-  Node& n = *node();
-  if (!position.is_set()) {
-    if (auto* mo = n.find_local<MechanicalState>()) {
-      if (BaseField* rp = mo->find_field("rest_position")) position.set_parent(rp);
-    } else if (auto* up = n.find_up<MechanicalState>()) {
-      if (BaseField* rp = up->find_field("rest_position")) position.set_parent(rp);
-    } else {
-      msg_error("no positions: set 'position' or put the BoxROI next to a MechanicalObject");
-      state_ = ComponentState::invalid;
-      return;
+bool BoxROI::roi_do_update() {
+  normalize_boxes();
+  oriented_.clear();
+  if (spatial_dim() == 3)
+    for (const VecN<10>& b : oriented_box.get()) {
+      OrientedBox o;
+      const Vec3 p0(b[0], b[1], b[2]), p1(b[3], b[4], b[5]), p2(b[6], b[7], b[8]);
+      const double depth = b[9];
+      Vec3 normal = io::cross3((p1 - p0), p2 - p0);
+      normalize3(normal);
+      const Vec3 p3 = p0 + (p2 - p1);
+      const Vec3 p6 = p2 + normal * depth;
+      Vec3 plane0 = io::cross3((p1 - p0), normal);
+      normalize3(plane0);
+      Vec3 plane1 = io::cross3((p2 - p3), p6 - p3);
+      normalize3(plane1);
+      Vec3 plane2 = io::cross3((p3 - p0), normal);
+      normalize3(plane2);
+      Vec3 plane3 = io::cross3((p2 - p1), p6 - p2);
+      normalize3(plane3);
+      o.p0 = p0;
+      o.p2 = p2;
+      o.normal = normal;
+      o.plane0 = plane0;
+      o.plane1 = plane1;
+      o.plane2 = plane2;
+      o.plane3 = plane3;
+      o.width = std::fabs(dot3(p2 - p0, plane0));
+      o.length = std::fabs(dot3(p2 - p0, plane2));
+      o.depth = depth;
+      oriented_.push_back(o);
     }
-  }
-  if (auto* topo = n.find_local<MeshTopologyBase>()) {
-    auto link = [&](Field<bool>& flag, BaseField& mine, const char* name) {
-      if (flag.value() && !mine.is_set())
-        if (BaseField* theirs = topo->find_field(name)) mine.set_parent(theirs);
-    };
-    link(compute_edges, edges, "edges");
-    link(compute_triangles, triangles, "triangles");
-    link(compute_quads, quads, "quads");
-    link(compute_tetrahedra, tetrahedra, "tetrahedra");
-    link(compute_hexahedra, hexahedra, "hexahedra");
-  }
-  set_dirty();
-  update();
+  return !boxes_.empty() || !oriented_box.get().empty();
 }
 
-bool BoxROI::inside(const double* p) const {
-  for (const VecN<6>& b : boxes_)
-    if (b[0] <= p[0] && p[0] <= b[3] && b[1] <= p[1] && p[1] <= b[4] && b[2] <= p[2] && p[2] <= b[5]) return true;
-  return false;
-}
-
-template <class Elem>
-void BoxROI::select(const std::vector<Elem>& elems, const std::vector<double>& x, int w,
-                    Field<std::vector<unsigned>>& ids, Field<std::vector<Elem>>& out) {
-  auto& id_list = ids.edit();
-  auto& elem_list = out.edit();
-  id_list.clear();
-  elem_list.clear();
-  const std::size_t n = x.size() / w;
-  for (std::size_t e = 0; e < elems.size(); ++e) {
-    const Elem& el = elems[e];
+bool BoxROI::point_in_roi(const double* p) const {
+  const int d = spatial_dim();
+  for (const VecN<6>& b : boxes_) {
     bool in = true;
-    if (strict.value()) {
-      for (unsigned v : el)
-        if (v >= n || !inside(&x[v * w])) {
-          in = false;
-          break;
-        }
-    } else {
-      double c[3] = {0, 0, 0};
-      for (unsigned v : el)
-        for (int k = 0; k < 3; ++k) c[k] += v < n ? x[v * w + k] : 0.0;
-      for (double& k : c) k /= static_cast<double>(el.size());
-      in = inside(c);
-    }
-    if (in) {
-      id_list.push_back(static_cast<unsigned>(e));
-      elem_list.push_back(el);
-    }
+    for (int i = 0; i < d; ++i)
+      if (p[i] < b[i] || p[i] > b[i + 3]) {
+        in = false;
+        break;
+      }
+    if (in) return true;
   }
-}
-
-void BoxROI::do_update() {
-  boxes_ = box.get();
-  for (VecN<6>& b : boxes_)
-    for (int a = 0; a < 3; ++a)
-      if (b[a] > b[a + 3]) std::swap(b[a], b[a + 3]);
-  const FlatVec& pos = position.get();
-  const int w = pos.width;
-  const std::size_t n = pos.size();
-  auto& idx = indices.edit();
-  auto& out = indices_out.edit();
-  auto& pts = points_in_roi.edit();
-  idx.clear();
-  out.clear();
-  pts.data.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    const double* p = &pos.data[i * w];
-    if (w >= 3 && inside(p)) {
-      idx.push_back(static_cast<unsigned>(i));
-      pts.data.insert(pts.data.end(), p, p + w);
-    } else {
-      out.push_back(static_cast<unsigned>(i));
+  if (d == 3)
+    for (const OrientedBox& o : oriented_) {
+      const Vec3 pv0(p[0] - o.p0[0], p[1] - o.p0[1], p[2] - o.p0[2]);
+      const Vec3 pv1(p[0] - o.p2[0], p[1] - o.p2[1], p[2] - o.p2[2]);
+      if (std::fabs(dot3(pv0, o.plane0)) <= o.width && std::fabs(dot3(pv1, o.plane1)) <= o.width &&
+          std::fabs(dot3(pv0, o.plane2)) <= o.length && std::fabs(dot3(pv1, o.plane3)) <= o.length &&
+          std::fabs(dot3(pv0, o.normal)) <= std::fabs(o.depth / 2))
+        return true;
     }
-  }
-  nb_indices.set(static_cast<unsigned>(idx.size()));
-  if (compute_edges.value()) select(edges.get(), pos.data, w, edge_indices, edges_in_roi);
-  if (compute_triangles.value()) select(triangles.get(), pos.data, w, triangle_indices, triangles_in_roi);
-  if (compute_quads.value()) select(quads.get(), pos.data, w, quad_indices, quads_in_roi);
-  if (compute_tetrahedra.value()) select(tetrahedra.get(), pos.data, w, tetrahedron_indices, tetrahedra_in_roi);
-  if (compute_hexahedra.value()) select(hexahedra.get(), pos.data, w, hexahedron_indices, hexahedra_in_roi);
+  return false;
 }
 
 void register_box_roi(Registry& r) {
   ComponentInfo info;
   info.name = "BoxROI";
   info.category = "Engine/Select";
-  info.description = "selects the points and elements inside axis-aligned boxes";
-  info.templates = {"Vec3d", "Rigid3d"};
+  info.description = "selects the points and elements inside axis-aligned or oriented boxes";
+  info.templates = {"Vec1d", "Vec2d", "Vec3d", "Rigid3d"};
   info.default_template = "Vec3d";
   info.create = [](const std::string& t) -> std::unique_ptr<Component> {
     StateType st;

@@ -1,5 +1,10 @@
 #include "forcefield/hexa_fem.h"
 
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
+
 #include <cmath>
 #include <limits>
 #include <string>
@@ -315,79 +320,148 @@ std::vector<HexaIssue> HexaFEM::init(std::span<const Vec3> X0, std::span<const s
                         "inverted hexahedron (negative Jacobian determinant): its stiffness is not positive"});
     }
   }
+  build_incidence(X0.size());
   return issues;
+}
+
+void HexaFEM::element_force(std::size_t e, std::span<const Vec3> x, Vec3* out, double& energy) {
+  std::array<Vec3, 8> nodes;
+  std::array<Vec3, 8> deformed;
+  double D[24], F[24];
+  const auto& h = hexa[e];
+  for (int k = 0; k < 8; ++k) nodes[k] = x[h[k]];
+  Mat3& Re = R[e];
+  if (method == HexaMethod::small) {
+    deformed = nodes;
+  } else {
+    Re = element_frame(method, nodes);
+    for (int k = 0; k < 8; ++k) deformed[k] = mul(Re, nodes[k]);
+  }
+  // Absolute displacement in the element frame (no centering).
+  const auto& r = rest[e];
+  for (int k = 0; k < 8; ++k)
+    for (int c = 0; c < 3; ++c) D[3 * k + c] = r[k][c] - deformed[k][c];
+
+  if (update_stiffness) hexa_element_stiffness(deformed, material[e], coef[e], K[e]);
+  mul24(K[e], D, F);
+
+  for (int k = 0; k < 8; ++k)
+    out[k] = method == HexaMethod::small ? Vec3(F[3 * k], F[3 * k + 1], F[3 * k + 2])
+                                         : mul_t(Re, F[3 * k], F[3 * k + 1], F[3 * k + 2]);
+  // SOFA accumulates Σ F_k·(−D_k) node by node, then divides by −2.
+  for (int k = 0; k < 8; ++k)
+    energy += F[3 * k] * -D[3 * k] + F[3 * k + 1] * -D[3 * k + 1] + F[3 * k + 2] * -D[3 * k + 2];
+}
+
+void HexaFEM::element_dforce(std::size_t e, std::span<const Vec3> dx, double kfactor, Vec3* out) const {
+  double X[24], F[24];
+  const bool rotate = method != HexaMethod::small;  // small: R = I, product skipped (exact)
+  const auto& h = hexa[e];
+  const Mat3& Re = R[e];
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 v = rotate ? mul(Re, dx[h[k]]) : dx[h[k]];
+    X[3 * k] = v[0];
+    X[3 * k + 1] = v[1];
+    X[3 * k + 2] = v[2];
+  }
+  mul24(K[e], X, F);
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 t = rotate ? mul_t(Re, F[3 * k], F[3 * k + 1], F[3 * k + 2]) : Vec3(F[3 * k], F[3 * k + 1], F[3 * k + 2]);
+    out[k] = Vec3(t[0] * kfactor, t[1] * kfactor, t[2] * kfactor);
+  }
+}
+
+bool HexaFEM::parallel() const {
+  return hexa.size() >= kParallelMinElements &&
+         tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) > 1 &&
+         tbb::this_task_arena::max_concurrency() > 1;
+}
+
+void HexaFEM::build_incidence(std::size_t n_points) {
+  // For each point, the (element, corner) slots touching it, in element order:
+  // gathering them in this order adds contributions exactly as the sequential loop does.
+  node_start.assign(n_points + 1, 0);
+  for (std::size_t e = 0; e < hexa.size(); ++e)
+    if (active[e])
+      for (int k = 0; k < 8; ++k) ++node_start[hexa[e][k] + 1];
+  for (std::size_t p = 0; p < n_points; ++p) node_start[p + 1] += node_start[p];
+  node_slot.assign(node_start[n_points], 0);
+  std::vector<std::uint32_t> fill(node_start.begin(), node_start.end() - 1);
+  for (std::size_t e = 0; e < hexa.size(); ++e)
+    if (active[e])
+      for (int k = 0; k < 8; ++k) node_slot[fill[hexa[e][k]]++] = static_cast<std::uint32_t>(e * 8 + k);
+  scratch.assign(hexa.size(), {});
+  element_energy.assign(hexa.size(), 0.0);
 }
 
 void HexaFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
   double energy = 0;
-  std::array<Vec3, 8> nodes;
-  std::array<Vec3, 8> deformed;
-  double D[24], F[24];
-  for (std::size_t e = 0; e < hexa.size(); ++e) {
-    if (!active[e]) continue;
-    const auto& h = hexa[e];
-    for (int k = 0; k < 8; ++k) nodes[k] = x[h[k]];
-    Mat3& Re = R[e];
-    if (method == HexaMethod::small) {
-      deformed = nodes;
-    } else {
-      Re = element_frame(method, nodes);
-      for (int k = 0; k < 8; ++k) deformed[k] = mul(Re, nodes[k]);
-    }
-    // Absolute displacement in the element frame (no centering).
-    const auto& r = rest[e];
-    for (int k = 0; k < 8; ++k)
-      for (int c = 0; c < 3; ++c) D[3 * k + c] = r[k][c] - deformed[k][c];
-
-    if (update_stiffness) hexa_element_stiffness(deformed, material[e], coef[e], K[e]);
-    mul24(K[e], D, F);
-
-    if (method == HexaMethod::small) {
+  if (!parallel()) {
+    Vec3 out[8];
+    for (std::size_t e = 0; e < hexa.size(); ++e) {
+      if (!active[e]) continue;
+      element_force(e, x, out, energy);
+      const auto& h = hexa[e];
       for (int k = 0; k < 8; ++k) {
         Vec3& fk = f[h[k]];
-        fk[0] += F[3 * k];
-        fk[1] += F[3 * k + 1];
-        fk[2] += F[3 * k + 2];
-      }
-    } else {
-      for (int k = 0; k < 8; ++k) {
-        const Vec3 t = mul_t(Re, F[3 * k], F[3 * k + 1], F[3 * k + 2]);
-        Vec3& fk = f[h[k]];
-        fk[0] += t[0];
-        fk[1] += t[1];
-        fk[2] += t[2];
+        fk[0] += out[k][0];
+        fk[1] += out[k][1];
+        fk[2] += out[k][2];
       }
     }
-    // SOFA accumulates Σ F_k·(−D_k) node by node, then divides by −2.
-    for (int k = 0; k < 8; ++k)
-      energy += F[3 * k] * -D[3 * k] + F[3 * k + 1] * -D[3 * k + 1] + F[3 * k + 2] * -D[3 * k + 2];
+  } else {
+    // Elements in parallel into per-element slots, then points in parallel,
+    // each summing its slots in element order: identical to the sequential result.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, hexa.size(), 256), [&](const auto& range) {
+      for (std::size_t e = range.begin(); e != range.end(); ++e) {
+        element_energy[e] = 0;
+        if (active[e]) element_force(e, x, scratch[e].data(), element_energy[e]);
+      }
+    });
+    gather(f, +1.0);
+    for (std::size_t e = 0; e < hexa.size(); ++e) energy += element_energy[e];
   }
   potential_energy = energy / -2.0;
 }
 
 void HexaFEM::add_dforce(std::span<const Vec3> dx, std::span<Vec3> df, double kfactor) const {
-  double X[24], F[24];
-  const bool rotate = method != HexaMethod::small;  // small: R = I, product skipped (exact)
-  for (std::size_t e = 0; e < hexa.size(); ++e) {
-    if (!active[e]) continue;
-    const auto& h = hexa[e];
-    const Mat3& Re = R[e];
-    for (int k = 0; k < 8; ++k) {
-      const Vec3 v = rotate ? mul(Re, dx[h[k]]) : dx[h[k]];
-      X[3 * k] = v[0];
-      X[3 * k + 1] = v[1];
-      X[3 * k + 2] = v[2];
+  if (!parallel()) {
+    Vec3 out[8];
+    for (std::size_t e = 0; e < hexa.size(); ++e) {
+      if (!active[e]) continue;
+      element_dforce(e, dx, kfactor, out);
+      const auto& h = hexa[e];
+      for (int k = 0; k < 8; ++k) {
+        Vec3& d = df[h[k]];
+        d[0] -= out[k][0];
+        d[1] -= out[k][1];
+        d[2] -= out[k][2];
+      }
     }
-    mul24(K[e], X, F);
-    for (int k = 0; k < 8; ++k) {
-      const Vec3 t = rotate ? mul_t(Re, F[3 * k], F[3 * k + 1], F[3 * k + 2])
-                            : Vec3(F[3 * k], F[3 * k + 1], F[3 * k + 2]);
-      Vec3& d = df[h[k]];
-      d[0] -= t[0] * kfactor;
-      d[1] -= t[1] * kfactor;
-      d[2] -= t[2] * kfactor;
-    }
+    return;
   }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, hexa.size(), 256), [&](const auto& range) {
+    for (std::size_t e = range.begin(); e != range.end(); ++e)
+      if (active[e]) element_dforce(e, dx, kfactor, scratch[e].data());
+  });
+  gather(df, -1.0);
+}
+
+void HexaFEM::gather(std::span<Vec3> f, double sign) const {
+  const std::size_t n = std::min(f.size(), node_start.empty() ? 0 : node_start.size() - 1);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](const auto& range) {
+    for (std::size_t p = range.begin(); p != range.end(); ++p) {
+      Vec3& fp = f[p];
+      for (std::uint32_t s = node_start[p]; s < node_start[p + 1]; ++s) {
+        const Vec3& c = scratch[node_slot[s] / 8][node_slot[s] % 8];
+        if (sign > 0) {
+          fp[0] += c[0], fp[1] += c[1], fp[2] += c[2];
+        } else {
+          fp[0] -= c[0], fp[1] -= c[1], fp[2] -= c[2];
+        }
+      }
+    }
+  });
 }
 
 void HexaFEM::node_rotations(std::span<Mat3> out) const {

@@ -122,6 +122,21 @@ struct HexaFEM {
   // identity seed is SOFA's. out.size() = number of points. A point with no
   // element gets the identity (SOFA would divide by zero).
   void node_rotations(std::span<Mat3> out) const;
+
+  // ---- parallel evaluation (bit-identical to the sequential loops)
+  // Elements are processed concurrently into per-element slots; each point
+  // then sums its slots in element order, as the sequential loop would.
+  static constexpr std::size_t kParallelMinElements = 2048;
+  std::vector<std::uint32_t> node_start, node_slot;     // point → (element·8 + corner) slots, CSR
+  mutable std::vector<std::array<Vec3, 8>> scratch;     // per-element nodal contributions
+  std::vector<double> element_energy;
+  void build_incidence(std::size_t n_points);
+  bool parallel() const;
+
+ private:
+  void element_force(std::size_t e, std::span<const Vec3> x, Vec3* out, double& energy);
+  void element_dforce(std::size_t e, std::span<const Vec3> dx, double kfactor, Vec3* out) const;
+  void gather(std::span<Vec3> f, double sign) const;
 };
 
 // Block −kfactor·Rᵀ·K_ij·R, in SOFA's order: (RᵀK_ij) first, then ·R, then

@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <set>
+#include <sstream>
 
 #include "core/path.h"
 #include "core/registry.h"
@@ -189,7 +190,20 @@ class Builder {
           if (!l->is_set()) continue;
           std::string why;
           std::string path = l->path();
-          // Multi-links and plain values are not used by the implemented components: one path.
+          if (l->is_multi()) {  // several whitespace-separated paths
+            l->clear_targets();
+            std::istringstream tokens(path);
+            for (std::string p; tokens >> p;) {
+              std::string w;
+              Base* t = resolve_object_path(n, o.get(), p, [l](Base* b) { return l->accept(b); }, &w);
+              if (t) l->add_target(t);
+              else
+                diag_->error(o->where, o->describe() + ": cannot resolve link " + l->name() + "=\"" + p + "\": " +
+                                           (w.empty() ? "wrong type" : w));
+            }
+            continue;
+          }
+          // Single links: one path.
           Base* t = resolve_object_path(n, o.get(), path, [l](Base* b) { return l->accept(b); }, &why);
           if (!t || !l->accept(t))
             diag_->error(o->where, o->describe() + ": cannot resolve link " + l->name() + "=\"" + path + "\": " +

@@ -4,6 +4,7 @@
 
 #include "core/mechanical_ops.h"
 #include "core/registry.h"
+#include "solver/assembled_cg_linear_solver.h"
 
 namespace sinew {
 
@@ -100,10 +101,15 @@ void register_cg_linear_solver(Registry& r) {
   ComponentInfo info;
   info.name = "CGLinearSolver";
   info.category = "Solver/Linear";
-  info.description = "conjugate gradient on the matrix-free system (template GraphScattered)";
+  info.description = "conjugate gradient, matrix-free (GraphScattered, default) or on an assembled matrix";
   info.templates = {"GraphScattered"};
+  for (const auto& t : assembled_cg_templates()) info.templates.push_back(t);
   info.default_template = "GraphScattered";
-  info.create = creator<CGLinearSolver>();
+  // Assembled templates: solver/assembled_cg_linear_solver.h.
+  info.create = [](const std::string& tmpl) -> std::unique_ptr<Component> {
+    if (tmpl.empty() || tmpl == "GraphScattered") return std::make_unique<CGLinearSolver>();
+    return create_assembled_cg_linear_solver();
+  };
   r.add(std::move(info));
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "math/rigid.h"
 
 namespace sinew {
 
@@ -106,34 +107,10 @@ void MechanicalObject::touch(int id) {
 
 void MechanicalObject::add_deriv_to_coord(int x_out, int x_in, int v, double h) {
   std::vector<double>& vv = vec(v);
-  std::vector<double> xin_copy;
   const std::vector<double>* xi = &vec(x_in);
   std::vector<double>& xo = vec(x_out);
   if (type_ == StateType::rigid3) {
-    for (std::size_t i = 0; i < size_; ++i) {
-      const double* d = &vv[i * 6];
-      const double* c = &(*xi)[i * 7];
-      double* o = &xo[i * 7];
-      Eigen::Quaterniond q(c[6], c[3], c[4], c[5]);
-      Vec3 w(d[3] * h * 0.5, d[4] * h * 0.5, d[5] * h * 0.5);
-      const double theta = w.norm();
-      Eigen::Quaterniond e;
-      if (theta < std::numeric_limits<double>::epsilon()) {
-        e = Eigen::Quaterniond(1.0, w.x(), w.y(), w.z());
-        e.normalize();
-      } else {
-        const double s = std::sin(theta) / theta;
-        e = Eigen::Quaterniond(std::cos(theta), s * w.x(), s * w.y(), s * w.z());
-      }
-      const Eigen::Quaterniond r = e * q;  // world-frame exponential map, left multiplication
-      o[0] = c[0] + d[0] * h;
-      o[1] = c[1] + d[1] * h;
-      o[2] = c[2] + d[2] * h;
-      o[3] = r.x();
-      o[4] = r.y();
-      o[5] = r.z();
-      o[6] = r.w();
-    }
+    for (std::size_t i = 0; i < size_; ++i) rigid3_add_deriv(&(*xi)[i * 7], &vv[i * 6], h, &xo[i * 7]);
   } else {
     for (std::size_t i = 0; i < xo.size(); ++i) xo[i] = (*xi)[i] + vv[i] * h;
   }

@@ -1,0 +1,21 @@
+// LinearSmallStrainFEMForceField: Hooke's law assuming small strain, on
+// tetrahedra or hexahedra (SOFA's new element-generic FEM;
+// spec/mechanics.md §2.5). Element force fe = K_e·(x_e − X0_e).
+#pragma once
+
+#include "forcefield/element_fem_force_field.h"
+
+namespace sinew {
+
+class LinearSmallStrainFEMForceField final : public ElementFEMForceFieldBase {
+ public:
+  explicit LinearSmallStrainFEMForceField(FemElementKind kind) : ElementFEMForceFieldBase(kind) {}
+
+ protected:
+  bool rotation_method(fem::RotationMethod& out) override {
+    out = fem::RotationMethod::none;
+    return true;
+  }
+};
+
+}  // namespace sinew

@@ -1,0 +1,39 @@
+// PlaneForceField: penalty force pushing points to the positive side of the
+// plane x·n = d (n not normalised), with damping along the velocity; the
+// stiffness −k·n·nᵀ acts on the points found in contact by the last
+// add_force (spec/mechanics.md §3.9).
+#pragma once
+
+#include <vector>
+
+#include "core/roles.h"
+
+namespace sinew {
+
+class PlaneForceField final : public ForceField {
+ public:
+  Field<Vec3> normal{this, "normal", Vec3(0, 1, 0), "plane normal. (default=[0,1,0])", "Plane"};
+  Field<double> d{this, "d", 0.0, "plane d coef. (default=0)", "Plane"};
+  Field<double> stiffness{this, "stiffness", 500.0, "force stiffness. (default=500)", "Plane"};
+  Field<double> damping{this, "damping", 5.0, "force damping. (default=5)", "Plane"};
+  Field<double> max_force{this, "maxForce", 0.0, "if non-null, the max force that can be applied (default=0)", "Plane"};
+  Field<bool> bilateral{this, "bilateral", false, "apply the force on both sides (default=false)", "Plane"};
+  Field<VecNi<2>> local_range{this, "localRange", VecNi<2>(-1, -1), "optional range of local DOF indices", "Plane"};
+  Field<bool> show_plane{this, "showPlane", false, "draw the plane (viewer)", "Visualization"};
+  Field<std::vector<double>> plane_color{this, "planeColor", {0.0, 0.5, 0.2, 1.0}, "plane colour (viewer)",
+                                         "Visualization"};
+  Field<double> show_plane_size{this, "showPlaneSize", 10.0, "plane display size (viewer)", "Visualization"};
+
+  void init() override;
+  void add_force(const MechParams& p) override;
+  void add_dforce(const MechParams& p, double kfactor) override;
+  bool build_stiffness(MatrixSink& K) override;
+
+  const std::vector<unsigned>& contacts() const { return contacts_; }
+
+ private:
+  double k_ = 500, c_ = 5, max_ = 0;
+  std::vector<unsigned> contacts_;
+};
+
+}  // namespace sinew

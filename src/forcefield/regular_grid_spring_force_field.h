@@ -1,0 +1,25 @@
+// RegularGridSpringForceField: SpringForceField plus springs along the lines,
+// face diagonals and cube diagonals of the RegularGridTopology of the state's
+// node (its first topology), rest lengths from the grid spacing and
+// stiffness/damping divided by them (spec/mechanics.md §3.3). The grid
+// springs follow the explicit `spring` list, in SOFA's loop order.
+#pragma once
+
+#include "forcefield/spring_force_field.h"
+
+namespace sinew {
+
+class RegularGridSpringForceField final : public SpringForceField {
+ public:
+  Field<double> lines_stiffness{this, "linesStiffness", 100.0, "Lines Stiffness", "Spring"};
+  Field<double> lines_damping{this, "linesDamping", 5.0, "Lines Damping", "Spring"};
+  Field<double> quads_stiffness{this, "quadsStiffness", 100.0, "Quads Stiffness", "Spring"};
+  Field<double> quads_damping{this, "quadsDamping", 5.0, "Quads Damping", "Spring"};
+  Field<double> cubes_stiffness{this, "cubesStiffness", 100.0, "Cubes Stiffness", "Spring"};
+  Field<double> cubes_damping{this, "cubesDamping", 5.0, "Cubes Damping", "Spring"};
+
+  void parse(AttributeMap& attrs, Diagnostics& diag) override;
+  void init() override;
+};
+
+}  // namespace sinew

@@ -1,0 +1,52 @@
+// RestShapeSpringsForceField: springs pulling points back to their rest
+// position (own rest_position, or the positions of `external_rest_shape`):
+// f_i −= k_i·(x_i − x0_i) per active direction (spec/mechanics.md §3.7).
+// Vec1d/Vec2d/Vec3d states (rigid states are not supported).
+#pragma once
+
+#include <vector>
+
+#include "core/roles.h"
+
+namespace sinew {
+
+class RestShapeSpringsForceField final : public ForceField {
+ public:
+  Field<std::vector<unsigned>> points{this, "points", {}, "points controlled by the rest shape springs (default: all)",
+                                      "Spring"};
+  Field<std::vector<double>> stiffness{this, "stiffness", {},
+                                       "stiffness per point (or one for all; default 100)", "Spring"};
+  Field<std::vector<double>> angular_stiffness{this, "angularStiffness", {},
+                                               "angular stiffness (rigid states only)", "Spring"};
+  Field<std::vector<Vec3>> pivot_points{this, "pivot_points", {}, "global pivot points (rigid states only)",
+                                        "Spring"};
+  Field<std::vector<unsigned>> external_points{this, "external_points", {},
+                                               "points of the external state defining the rest shape", "Spring"};
+  Field<bool> recompute_indices{this, "recompute_indices", true, "recompute indices (should be false for BBOX)",
+                                "Spring"};
+  Field<bool> draw_spring{this, "drawSpring", false, "draw the springs (viewer)", "Visualization"};
+  Field<std::vector<double>> spring_color{this, "springColor", {0.0, 1.0, 0.0, 1.0}, "spring colour (viewer)",
+                                          "Visualization"};
+  Field<std::vector<int>> active_directions{this, "activeDirections", {1, 1, 1, 1, 1, 1},
+                                            "directions in which the springs act (1 active, 0 not)", "Spring"};
+  Link<MechanicalState> external_rest_shape{this, "external_rest_shape",
+                                            "state whose positions define the rest shape"};
+  Link<MeshTopologyBase> topology{this, "topology", "topology container (topological changes)"};
+
+  void parse(AttributeMap& attrs, Diagnostics& diag) override;
+  void init() override;
+  void add_force(const MechParams& p) override;
+  void add_dforce(const MechParams& p, double kfactor) override;
+  bool build_stiffness(MatrixSink& K) override;
+
+ private:
+  bool compute_indices();
+  const std::vector<double>* rest() const;
+  std::vector<unsigned> idx_, ext_idx_;
+  std::vector<double> k_;
+  std::vector<char> active_;
+  std::size_t state_size_ = 0;
+  int dim_ = 3;
+};
+
+}  // namespace sinew

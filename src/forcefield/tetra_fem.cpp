@@ -1,0 +1,604 @@
+#include "forcefield/tetra_fem.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <Eigen/Eigenvalues>
+
+#include "math/decompose.h"
+
+namespace sinew::fem {
+
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+inline Vec3 sub(const Vec3& a, const Vec3& b) { return Vec3(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
+inline Vec3 cross3(const Vec3& a, const Vec3& b) {
+  return Vec3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
+}
+// SOFA's normalize: divide by the norm when it is above DBL_EPSILON.
+inline Vec3 normalized(Vec3 a) {
+  const double n = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  if (n > kEps) {
+    a[0] /= n;
+    a[1] /= n;
+    a[2] /= n;
+  }
+  return a;
+}
+// M·v, rows summed left to right.
+inline Vec3 mul(const Mat3& M, const Vec3& v) {
+  return Vec3(M(0, 0) * v[0] + M(0, 1) * v[1] + M(0, 2) * v[2], M(1, 0) * v[0] + M(1, 1) * v[1] + M(1, 2) * v[2],
+              M(2, 0) * v[0] + M(2, 1) * v[1] + M(2, 2) * v[2]);
+}
+// Plain 3×3 product (SOFA's Mat operator*).
+inline Mat3 mul(const Mat3& A, const Mat3& B) {
+  Mat3 r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r(i, j) = A(i, 0) * B(0, j) + A(i, 1) * B(1, j) + A(i, 2) * B(2, j);
+  return r;
+}
+inline double det3(const Mat3& m) {
+  return m(0, 0) * m(1, 1) * m(2, 2) + m(1, 0) * m(2, 1) * m(0, 2) + m(2, 0) * m(0, 1) * m(1, 2) -
+         m(0, 0) * m(2, 1) * m(1, 2) - m(1, 0) * m(0, 1) * m(2, 2) - m(2, 0) * m(1, 1) * m(0, 2);
+}
+// SOFA's invertMatrix (cofactors / det); false when det is (almost) zero.
+inline bool invert3(const Mat3& a, Mat3& inv) {
+  const double det = det3(a);
+  if (std::fabs(det) <= kEps) return false;
+  inv(0, 0) = (a(1, 1) * a(2, 2) - a(2, 1) * a(1, 2)) / det;
+  inv(1, 0) = (a(1, 2) * a(2, 0) - a(2, 2) * a(1, 0)) / det;
+  inv(2, 0) = (a(1, 0) * a(2, 1) - a(2, 0) * a(1, 1)) / det;
+  inv(0, 1) = (a(2, 1) * a(0, 2) - a(0, 1) * a(2, 2)) / det;
+  inv(1, 1) = (a(2, 2) * a(0, 0) - a(0, 2) * a(2, 0)) / det;
+  inv(2, 1) = (a(2, 0) * a(0, 1) - a(0, 0) * a(2, 1)) / det;
+  inv(0, 2) = (a(0, 1) * a(1, 2) - a(1, 1) * a(0, 2)) / det;
+  inv(1, 2) = (a(0, 2) * a(1, 0) - a(1, 2) * a(0, 0)) / det;
+  inv(2, 2) = (a(0, 0) * a(1, 1) - a(1, 0) * a(0, 1)) / det;
+  return true;
+}
+
+// Cofactor expression of SOFA's peudo_determinant_for_coef for the 2×3 matrix
+// rows (u0 u1 u2), (v0 v1 v2).
+inline double pd(double u0, double u1, double u2, double v0, double v1, double v2) {
+  return u1 * v2 - v1 * u2 - u0 * v2 + v0 * u2 + u0 * v1 - v0 * u1;
+}
+
+// Edge rows of a tetrahedron: (b−a, c−a, d−a).
+inline Mat3 edge_rows(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  Mat3 A;
+  const Vec3 e1 = sub(b, a), e2 = sub(c, a), e3 = sub(d, a);
+  for (int k = 0; k < 3; ++k) {
+    A(0, k) = e1[k];
+    A(1, k) = e2[k];
+    A(2, k) = e3[k];
+  }
+  return A;
+}
+
+// Strain Jᵀ·Δ with SOFA's zero pattern and order.
+inline void strain(const TetraJ& J, const double* D, double* e) {
+  e[0] = J(0, 0) * D[0] + J(3, 0) * D[3] + J(6, 0) * D[6] + J(9, 0) * D[9];
+  e[1] = J(1, 1) * D[1] + J(4, 1) * D[4] + J(7, 1) * D[7] + J(10, 1) * D[10];
+  e[2] = J(2, 2) * D[2] + J(5, 2) * D[5] + J(8, 2) * D[8] + J(11, 2) * D[11];
+  e[3] = J(0, 3) * D[0] + J(1, 3) * D[1] + J(3, 3) * D[3] + J(4, 3) * D[4] + J(6, 3) * D[6] + J(7, 3) * D[7] +
+         J(9, 3) * D[9] + J(10, 3) * D[10];
+  e[4] = J(1, 4) * D[1] + J(2, 4) * D[2] + J(4, 4) * D[4] + J(5, 4) * D[5] + J(7, 4) * D[7] + J(8, 4) * D[8] +
+         J(10, 4) * D[10] + J(11, 4) * D[11];
+  e[5] = J(0, 5) * D[0] + J(2, 5) * D[2] + J(3, 5) * D[3] + J(5, 5) * D[5] + J(6, 5) * D[6] + J(8, 5) * D[8] +
+         J(9, 5) * D[9] + J(11, 5) * D[11];
+}
+
+inline void stress(const TetraMaterial& K, const double* e, double* s) {
+  s[0] = K.d * e[0] + K.o * e[1] + K.o * e[2];
+  s[1] = K.o * e[0] + K.d * e[1] + K.o * e[2];
+  s[2] = K.o * e[0] + K.o * e[1] + K.d * e[2];
+  s[3] = K.s * e[3];
+  s[4] = K.s * e[4];
+  s[5] = K.s * e[5];
+}
+
+inline void nodal(const TetraJ& J, const double* s, double* F) {
+  for (int k = 0; k < 4; ++k) {
+    const int r = 3 * k;
+    F[r + 0] = J(r + 0, 0) * s[0] + J(r + 0, 3) * s[3] + J(r + 0, 5) * s[5];
+    F[r + 1] = J(r + 1, 1) * s[1] + J(r + 1, 3) * s[3] + J(r + 1, 4) * s[4];
+    F[r + 2] = J(r + 2, 2) * s[2] + J(r + 2, 4) * s[4] + J(r + 2, 5) * s[5];
+  }
+}
+
+// SOFA's polarDecomposition_stable (robust SVD: eigenvectors of FᵀF with V
+// made a rotation; U = F·V·S⁻¹ with degenerate columns rebuilt). The
+// eigen-solver differs from SOFA's iterative Jacobi, so results may differ
+// at round-off in this (degenerate element) path.
+Mat3 polar_stable(const Mat3& F) {
+  Mat3 FtF;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) FtF(i, j) = F(0, i) * F(0, j) + F(1, i) * F(1, j) + F(2, i) * F(2, j);
+  Eigen::SelfAdjointEigenSolver<Mat3> es(FtF);
+  Mat3 V = es.eigenvectors();
+  Vec3 S = es.eigenvalues();
+  if (det3(V) < 0)
+    for (int i = 0; i < 3; ++i) V(i, 0) = -V(i, 0);
+  int degenerated = 0;
+  Vec3 S1;
+  const double zero_tol = 1e-8;
+  for (int i = 0; i < 3; ++i) {
+    if (S[i] < zero_tol) {
+      ++degenerated;
+      S[i] = 0;
+      S1[i] = 1;
+    } else {
+      S[i] = std::sqrt(S[i]);
+      S1[i] = 1.0 / S[i];
+    }
+  }
+  // eigenvalues are sorted ascending by Eigen: order = 0, 1, 2
+  Mat3 U;
+  if (degenerated == 3) {
+    U.setIdentity();
+  } else {
+    Mat3 VS = V;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) VS(i, j) = V(i, j) * S1[j];
+    U = mul(F, VS);
+    if (degenerated == 1) {
+      const Vec3 c = cross3(Vec3(U(0, 1), U(1, 1), U(2, 1)), Vec3(U(0, 2), U(1, 2), U(2, 2)));
+      for (int i = 0; i < 3; ++i) U(i, 0) = c[i];
+    } else if (degenerated == 2) {
+      Vec3 e2(U(0, 2), U(1, 2), U(2, 2));
+      e2 = normalized(e2);
+      Vec3 e0 = std::fabs(e2[0]) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+      Vec3 e1 = normalized(cross3(e2, e0));
+      e0 = cross3(e1, e2);
+      for (int i = 0; i < 3; ++i) {
+        U(i, 0) = e0[i];
+        U(i, 1) = e1[i];
+        U(i, 2) = e2[i];
+      }
+    }
+  }
+  Mat3 Q;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) Q(i, j) = U(i, 0) * V(j, 0) + U(i, 1) * V(j, 1) + U(i, 2) * V(j, 2);
+  return Q;
+}
+
+}  // namespace
+
+TetraMaterial tetra_material(double young, double poisson, double volume) {
+  const double off = poisson / (1 - poisson);
+  const double shear = (1 - 2 * poisson) / (2 * (1 - poisson));
+  const double scale = (young * (1 - poisson)) / ((1 + poisson) * (1 - 2 * poisson));
+  const double div = volume * 36;
+  TetraMaterial K;
+  K.d = (1.0 * scale) / div;
+  K.o = (off * scale) / div;
+  K.s = (shear * scale) / div;
+  return K;
+}
+
+double tetra_signed_volume(const Vec3& n0, const Vec3& n1, const Vec3& n2, const Vec3& n3) {
+  const Vec3 a = sub(n1, n0), b = sub(n2, n0), c = sub(n3, n0);
+  const Vec3 x = cross3(a, b);
+  return (x[0] * c[0] + x[1] * c[1] + x[2] * c[2]) / 6.0;
+}
+
+void tetra_strain_displacement(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, TetraJ& J) {
+  J = TetraJ{};
+  // Node k with the three others (cyclic); SOFA fills M row by row, first with
+  // (y, z), then (x, z), then (x, y), reusing the previous rows.
+  auto fill = [&](int k, const Vec3& p, const Vec3& q, const Vec3& r, double sign) {
+    const int row = 3 * k;
+    // pd(y; z)
+    double v = pd(p[1], q[1], r[1], p[2], q[2], r[2]);
+    const double a0 = sign < 0 ? -v : v;
+    J(row + 0, 0) = J(row + 1, 3) = J(row + 2, 5) = a0;
+    v = pd(p[0], q[0], r[0], p[2], q[2], r[2]);
+    const double a1 = sign < 0 ? v : -v;
+    J(row + 0, 3) = J(row + 1, 1) = J(row + 2, 4) = a1;
+    v = pd(p[0], q[0], r[0], p[1], q[1], r[1]);
+    const double a2 = sign < 0 ? -v : v;
+    J(row + 0, 5) = J(row + 1, 4) = J(row + 2, 2) = a2;
+  };
+  fill(0, b, c, d, -1.0);
+  fill(1, c, d, a, +1.0);
+  fill(2, d, a, b, -1.0);
+  fill(3, a, b, c, +1.0);
+}
+
+Mat3 tetra_frame_large(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ex = normalized(sub(b, a));
+  Vec3 ey = sub(c, a);
+  const Vec3 ez = normalized(cross3(ex, ey));
+  ey = cross3(ez, ex);
+  Mat3 r;
+  for (int k = 0; k < 3; ++k) {
+    r(0, k) = ex[k];
+    r(1, k) = ey[k];
+    r(2, k) = ez[k];
+  }
+  return r;
+}
+
+void tetra_force(const TetraJ& J, const TetraMaterial& K, const double D[12], double F[12]) {
+  double e[6], s[6];
+  strain(J, D, e);
+  stress(K, e, s);
+  nodal(J, s, F);
+}
+
+void tetra_force_plastic(const TetraJ& J, const TetraMaterial& K, const double D[12], const TetraPlasticity& p,
+                         double ps[6], double F[12]) {
+  double e[6], s[6];
+  strain(J, D, e);
+  if (p.max_threshold > 0) {
+    double el[6];
+    for (int i = 0; i < 6; ++i) el[i] = e[i] - ps[i];
+    double n2 = el[0] * el[0];
+    for (int i = 1; i < 6; ++i) n2 += el[i] * el[i];
+    if (n2 > p.yield_threshold * p.yield_threshold)
+      for (int i = 0; i < 6; ++i) ps[i] += p.creep * el[i];
+    double pn2 = ps[0] * ps[0];
+    for (int i = 1; i < 6; ++i) pn2 += ps[i] * ps[i];
+    if (pn2 > p.max_threshold * p.max_threshold) {
+      const double f = p.max_threshold / std::sqrt(pn2);
+      for (int i = 0; i < 6; ++i) ps[i] *= f;
+    }
+    for (int i = 0; i < 6; ++i) e[i] -= ps[i];
+  }
+  stress(K, e, s);
+  nodal(J, s, F);
+}
+
+void tetra_force_scaled(const TetraJ& J, const TetraMaterial& K, const double D[12], double fact, double F[12]) {
+  double e[6], s[6];
+  strain(J, D, e);
+  stress(K, e, s);
+  for (int i = 0; i < 6; ++i) s[i] *= fact;
+  nodal(J, s, F);
+}
+
+void tetra_jkjt(const TetraJ& J, const TetraMaterial& K, Mat12& out) {
+  double Km[6][6] = {};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) Km[i][j] = i == j ? K.d : K.o;
+  Km[3][3] = Km[4][4] = Km[5][5] = K.s;
+  double JK[12][6];
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 6; ++j) {
+      double r = 0;
+      for (int k = 0; k < 6; ++k) r += J(i, k) * Km[k][j];
+      JK[i][j] = r;
+    }
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j) {
+      double r = 0;
+      for (int k = 0; k < 6; ++k) r += JK[i][k] * J(j, k);
+      out(i, j) = r;
+    }
+}
+
+void tetra_rotated_stiffness(const Mat12& JKJt, const Mat3& rot, Mat12& S, Mat12& SR) {
+  for (int i = 0; i < 12; ++i) {
+    const int bi = (i / 3) * 3, li = i % 3;
+    for (int j = 0; j < 12; ++j)
+      S(i, j) = rot(li, 0) * JKJt(bi, j) + rot(li, 1) * JKJt(bi + 1, j) + rot(li, 2) * JKJt(bi + 2, j);
+  }
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j) {
+      const int bj = (j / 3) * 3, lj = j % 3;
+      SR(i, j) = S(i, bj) * rot(lj, 0) + S(i, bj + 1) * rot(lj, 1) + S(i, bj + 2) * rot(lj, 2);
+    }
+}
+
+std::vector<TetraIssue> TetraFEM::init(std::span<const Vec3> X, std::span<const std::array<int, 4>> tets,
+                                       std::span<const double> E, std::span<const double> nu, TetraMethod m) {
+  std::vector<TetraIssue> issues;
+  method = m;
+  const std::size_t ne = tets.size();
+  tetra.assign(tets.begin(), tets.end());
+  X0.assign(X.begin(), X.end());
+  if (E.size() != ne || nu.size() != ne) {
+    issues.push_back({-1, true, "material arrays do not match the number of elements"});
+    tetra.clear();
+    return issues;
+  }
+  J.assign(ne, TetraJ{});
+  K.assign(ne, TetraMaterial{});
+  rot.assign(ne, Mat3::Identity());
+  rot0.assign(ne, Mat3::Identity());
+  rest.assign(ne, {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()});
+  plastic.assign(ne, {0, 0, 0, 0, 0, 0});
+  T0.assign(m == TetraMethod::svd ? ne : 0, Mat3::Identity());
+  rest_volume = 0;
+  const std::size_t np = X.size();
+  for (std::size_t e = 0; e < ne; ++e) {
+    const auto& t = tets[e];
+    bool bad = false;
+    for (int k = 0; k < 4; ++k)
+      if (t[k] < 0 || static_cast<std::size_t>(t[k]) >= np) bad = true;
+    if (bad) {
+      issues.push_back({static_cast<int>(e), true,
+                        "node index out of range (the state has " + std::to_string(np) + " points)"});
+      continue;
+    }
+    const Vec3 &a = X[t[0]], &b = X[t[1]], &c = X[t[2]], &d = X[t[3]];
+    const double vol = tetra_volume(a, b, c, d);
+    rest_volume += vol;
+    if (!(vol > 0) || !std::isfinite(vol)) {
+      issues.push_back({static_cast<int>(e), true, "degenerate element (zero rest volume)"});
+      continue;
+    }
+    K[e] = tetra_material(E[e], nu[e], vol);
+    switch (m) {
+      case TetraMethod::small:
+        tetra_strain_displacement(a, b, c, d, J[e]);
+        break;
+      case TetraMethod::large: {
+        const Mat3 R = tetra_frame_large(a, b, c);
+        rot0[e] = R.transpose();
+        rot[e] = rot0[e];
+        auto& q = rest[e];
+        q[0] = mul(R, a);
+        q[1] = mul(R, b);
+        q[2] = mul(R, c);
+        q[3] = mul(R, d);
+        for (int k = 1; k < 4; ++k) q[k] = sub(q[k], q[0]);
+        q[0] = Vec3::Zero();
+        tetra_strain_displacement(q[0], q[1], q[2], q[3], J[e]);
+        break;
+      }
+      case TetraMethod::polar:
+      case TetraMethod::svd: {
+        const Mat3 A = edge_rows(a, b, c, d);
+        if (m == TetraMethod::svd) {
+          if (!invert3(A, T0[e])) {
+            issues.push_back({static_cast<int>(e), true, "degenerate element (singular rest edges)"});
+            continue;
+          }
+        }
+        const Mat3 R = polar_rotation(A);
+        rot0[e] = R.transpose();
+        rot[e] = rot0[e];
+        auto& q = rest[e];
+        q[0] = mul(R, a);
+        q[1] = mul(R, b);
+        q[2] = mul(R, c);
+        q[3] = mul(R, d);
+        tetra_strain_displacement(q[0], q[1], q[2], q[3], J[e]);
+        break;
+      }
+    }
+  }
+  return issues;
+}
+
+void TetraFEM::reset_plasticity() {
+  for (auto& p : plastic) p = {0, 0, 0, 0, 0, 0};
+}
+
+bool TetraFEM::forces_supported() const {
+  if (assembling && (method == TetraMethod::polar || method == TetraMethod::svd)) return false;
+  if (assembling && plasticity.max_threshold > 0) return false;
+  return true;
+}
+
+void TetraFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
+  const std::size_t ne = tetra.size();
+  const bool plastic_on = plasticity.max_threshold > 0;
+  // SOFA: svd with computeGlobalMatrix returns before anything; small with
+  // plasticity and computeGlobalMatrix adds nothing.
+  if (assembling && method == TetraMethod::svd) return;
+  if (assembling && plastic_on && method == TetraMethod::small) return;
+  double D[12], F[12];
+  Mat12 jkjt, S, SR;
+  for (std::size_t e = 0; e < ne; ++e) {
+    const auto& t = tetra[e];
+    const int a = t[0], b = t[1], c = t[2], d = t[3];
+    switch (method) {
+      case TetraMethod::small: {
+        D[0] = D[1] = D[2] = 0;
+        const int idx[3] = {b, c, d};
+        for (int k = 0; k < 3; ++k)
+          for (int i = 0; i < 3; ++i)
+            D[3 + 3 * k + i] = X0[idx[k]][i] - X0[a][i] - x[idx[k]][i] + x[a][i];
+        if (!assembling) {
+          tetra_force_plastic(J[e], K[e], D, plasticity, plastic[e].data(), F);
+        } else {
+          tetra_jkjt(J[e], K[e], jkjt);
+          tetra_rotated_stiffness(jkjt, Mat3::Identity(), S, SR);
+          for (int i = 0; i < 12; ++i) {
+            double r = 0;
+            for (int j = 0; j < 12; ++j) r += S(i, j) * D[j];
+            F[i] = r;
+          }
+        }
+        for (int k = 0; k < 4; ++k) {
+          Vec3& fk = f[t[k]];
+          fk[0] += F[3 * k];
+          fk[1] += F[3 * k + 1];
+          fk[2] += F[3 * k + 2];
+        }
+        continue;
+      }
+      case TetraMethod::large: {
+        const Mat3 R = tetra_frame_large(x[a], x[b], x[c]);
+        rot[e] = R.transpose();
+        Vec3 p[4];
+        for (int k = 0; k < 4; ++k) p[k] = mul(R, x[t[k]]);
+        p[1][0] -= p[0][0];
+        p[2][0] -= p[0][0];
+        p[2][1] -= p[0][1];
+        p[3] = sub(p[3], p[0]);
+        const auto& q = rest[e];
+        D[0] = D[1] = D[2] = 0;
+        D[3] = q[1][0] - p[1][0];
+        D[4] = D[5] = 0;
+        D[6] = q[2][0] - p[2][0];
+        D[7] = q[2][1] - p[2][1];
+        D[8] = 0;
+        D[9] = q[3][0] - p[3][0];
+        D[10] = q[3][1] - p[3][1];
+        D[11] = q[3][2] - p[3][2];
+        if (update_stiffness_matrix) {
+          TetraJ& Je = J[e];
+          Je(0, 0) = (-p[2][1] * p[3][2]);
+          Je(1, 1) = (p[2][0] * p[3][2] - p[1][0] * p[3][2]);
+          Je(2, 2) = (p[2][1] * p[3][0] - p[2][0] * p[3][1] + p[1][0] * p[3][1] - p[1][0] * p[2][1]);
+          Je(3, 0) = (p[2][1] * p[3][2]);
+          Je(4, 1) = (-p[2][0] * p[3][2]);
+          Je(5, 2) = (-p[2][1] * p[3][0] + p[2][0] * p[3][1]);
+          Je(7, 1) = (p[1][0] * p[3][2]);
+          Je(8, 2) = (-p[1][0] * p[3][1]);
+          Je(11, 2) = (p[1][0] * p[2][1]);
+          if (symmetric_update) {
+            Je(1, 3) = Je(2, 5) = Je(0, 0);
+            Je(0, 3) = Je(2, 4) = Je(1, 1);
+            Je(0, 5) = Je(1, 4) = Je(2, 2);
+            Je(4, 3) = Je(5, 5) = Je(3, 0);
+            Je(3, 3) = Je(5, 4) = Je(4, 1);
+            Je(3, 5) = Je(4, 4) = Je(5, 2);
+            Je(6, 3) = Je(8, 4) = Je(7, 1);
+            Je(6, 5) = Je(7, 4) = Je(8, 2);
+            Je(9, 5) = Je(10, 4) = Je(11, 2);
+          }
+        }
+        if (!assembling) {
+          tetra_force_plastic(J[e], K[e], D, plasticity, plastic[e].data(), F);
+          const Mat3& r = rot[e];
+          for (int k = 0; k < 4; ++k) {
+            const Vec3 fk = mul(r, Vec3(F[3 * k], F[3 * k + 1], F[3 * k + 2]));
+            Vec3& out = f[t[k]];
+            out[0] += fk[0];
+            out[1] += fk[1];
+            out[2] += fk[2];
+          }
+        } else if (!plastic_on) {
+          J[e](6, 0) = 0;
+          J[e](9, 0) = 0;
+          J[e](10, 1) = 0;
+          tetra_jkjt(J[e], K[e], jkjt);
+          tetra_rotated_stiffness(jkjt, rot[e], S, SR);
+          for (int i = 0; i < 12; ++i) {
+            double r = 0;
+            for (int j = 0; j < 12; ++j) r += S(i, j) * D[j];
+            F[i] = r;
+          }
+          for (int k = 0; k < 4; ++k) {
+            Vec3& out = f[t[k]];
+            out[0] += F[3 * k];
+            out[1] += F[3 * k + 1];
+            out[2] += F[3 * k + 2];
+          }
+        }
+        continue;
+      }
+      case TetraMethod::polar:
+      case TetraMethod::svd: {
+        const Mat3 A = edge_rows(x[a], x[b], x[c], x[d]);
+        Mat3 R;
+        if (method == TetraMethod::svd) {
+          const Mat3 Fd = mul(A, T0[e]);
+          if (det3(Fd) < 1e-6) {
+            // R = polarStable(F) · R0 (rot0 = R0ᵀ, so multTransposed(rot0) = ·R0)
+            const Mat3 Q = polar_stable(Fd);
+            R = mul(Q, Mat3(rot0[e].transpose()));
+          } else {
+            R = polar_rotation(A);
+          }
+        } else {
+          R = polar_rotation(A);
+        }
+        rot[e] = R.transpose();
+        Vec3 p[4];
+        for (int k = 0; k < 4; ++k) p[k] = mul(R, x[t[k]]);
+        const auto& q = rest[e];
+        for (int k = 0; k < 4; ++k)
+          for (int i = 0; i < 3; ++i) D[3 * k + i] = q[k][i] - p[k][i];
+        if (update_stiffness_matrix) tetra_strain_displacement(p[0], p[1], p[2], p[3], J[e]);
+        if (assembling) continue;  // polar: SOFA reports an error and adds no force
+        tetra_force_plastic(J[e], K[e], D, plasticity, plastic[e].data(), F);
+        const Mat3& r = rot[e];
+        for (int k = 0; k < 4; ++k) {
+          const Vec3 fk = mul(r, Vec3(F[3 * k], F[3 * k + 1], F[3 * k + 2]));
+          Vec3& out = f[t[k]];
+          out[0] += fk[0];
+          out[1] += fk[1];
+          out[2] += fk[2];
+        }
+        continue;
+      }
+    }
+  }
+}
+
+void TetraFEM::add_dforce(std::span<const Vec3> dx, std::span<Vec3> df, double kfactor) const {
+  const std::size_t ne = tetra.size();
+  double X[12], F[12];
+  if (method == TetraMethod::small) {
+    for (std::size_t e = 0; e < ne; ++e) {
+      const auto& t = tetra[e];
+      for (int k = 0; k < 4; ++k)
+        for (int i = 0; i < 3; ++i) X[3 * k + i] = dx[t[k]][i];
+      tetra_force_scaled(J[e], K[e], X, kfactor, F);
+      for (int k = 0; k < 4; ++k) {
+        Vec3& out = df[t[k]];
+        out[0] += -F[3 * k];
+        out[1] += -F[3 * k + 1];
+        out[2] += -F[3 * k + 2];
+      }
+    }
+    return;
+  }
+  for (std::size_t e = 0; e < ne; ++e) {
+    const auto& t = tetra[e];
+    const Mat3& r = rot[e];
+    for (int k = 0; k < 4; ++k) {
+      const Vec3& v = dx[t[k]];
+      X[3 * k + 0] = r(0, 0) * v[0] + r(1, 0) * v[1] + r(2, 0) * v[2];
+      X[3 * k + 1] = r(0, 1) * v[0] + r(1, 1) * v[1] + r(2, 1) * v[2];
+      X[3 * k + 2] = r(0, 2) * v[0] + r(1, 2) * v[1] + r(2, 2) * v[2];
+    }
+    tetra_force_scaled(J[e], K[e], X, kfactor, F);
+    for (int k = 0; k < 4; ++k) {
+      Vec3& out = df[t[k]];
+      const double* Fk = F + 3 * k;
+      out[0] -= r(0, 0) * Fk[0] + r(0, 1) * Fk[1] + r(0, 2) * Fk[2];
+      out[1] -= r(1, 0) * Fk[0] + r(1, 1) * Fk[1] + r(1, 2) * Fk[2];
+      out[2] -= r(2, 0) * Fk[0] + r(2, 1) * Fk[1] + r(2, 2) * Fk[2];
+    }
+  }
+}
+
+std::vector<std::array<int, 4>> split_hexahedra(std::span<const std::array<unsigned, 8>> hexa, int nx, int ny) {
+  static constexpr int kX[4][2] = {{0, 1}, {4, 5}, {3, 2}, {7, 6}};
+  static constexpr int kY[4][2] = {{4, 7}, {5, 6}, {1, 2}, {0, 3}};
+  static constexpr int kZ[4][2] = {{4, 0}, {5, 1}, {6, 2}, {7, 3}};
+  if (nx <= 0) nx = 1;
+  if (ny <= 0) ny = 1;
+  std::vector<std::array<int, 4>> out;
+  out.reserve(hexa.size() * 6);
+  for (std::size_t i = 0; i < hexa.size(); ++i) {
+    std::array<int, 8> c;
+    for (int k = 0; k < 8; ++k) c[k] = static_cast<int>(hexa[i][k]);
+    const std::size_t ux = static_cast<std::size_t>(nx), uy = static_cast<std::size_t>(ny);
+    if (!((i % ux) & 1))
+      for (auto& p : kX) std::swap(c[p[0]], c[p[1]]);
+    if (((i / ux) % uy) & 1)
+      for (auto& p : kY) std::swap(c[p[0]], c[p[1]]);
+    if ((i / (ux * uy)) & 1)
+      for (auto& p : kZ) std::swap(c[p[0]], c[p[1]]);
+    out.push_back({c[0], c[5], c[1], c[6]});
+    out.push_back({c[0], c[1], c[3], c[6]});
+    out.push_back({c[1], c[3], c[6], c[2]});
+    out.push_back({c[6], c[3], c[0], c[7]});
+    out.push_back({c[6], c[7], c[0], c[5]});
+    out.push_back({c[7], c[5], c[4], c[0]});
+  }
+  return out;
+}
+
+}  // namespace sinew::fem

@@ -1,0 +1,82 @@
+#include "forcefield/tetrahedron_fem_force_field.h"
+
+#include "core/node.h"
+#include "core/registry.h"
+#include "forcefield/tetra_fem_setup.h"
+
+namespace sinew {
+
+TetrahedronFEMForceField::TetrahedronFEMForceField() { assembling.add_alias("assembling"); }
+
+void TetrahedronFEMForceField::init() {
+  ForceField::init();
+  if (state() != ComponentState::valid) return;
+  if (!topology) topology.set(node()->get_mesh_topology_link());
+
+  bool known = true;
+  TetraFEMSetup in;
+  in.topology = topology.get();
+  in.allow_hexa_split = true;
+  in.young = young_modulus.get();
+  in.poisson = poisson_ratio.get();
+  in.local_stiffness_factor = local_stiffness_factor.get();
+  in.method = parse_tetra_method(method.get(), true, known);
+  if (!known) msg_error("unknown method '" + method.get() + "' (expected small, large, polar or svd): large is used");
+
+  const int vm = compute_von_mises_stress.get();
+  if (vm < 0 || vm > 2) msg_warning("computeVonMisesStress must be 0, 1 or 2");
+  if (vm == 1 && in.method == fem::TetraMethod::small)
+    msg_warning("VonMisesStress can only be computed with full Green strain when the method is SMALL");
+
+  fem_.update_stiffness_matrix = update_stiffness_matrix.get();
+  fem_.assembling = assembling.get();
+  fem_.symmetric_update = false;
+  fem_.plasticity.max_threshold = plastic_max_threshold.get();
+  fem_.plasticity.yield_threshold = plastic_yield_threshold.get();
+  fem_.plasticity.creep = plastic_creep.get();
+  if (!setup_tetra_fem(*this, in, fem_)) {
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if (!fem_.forces_supported())
+    msg_error(std::string("computeGlobalMatrix is not supported with ") +
+              (fem_.plasticity.max_threshold > 0 ? "plasticity" : "method " + method.get()) +
+              ": this force field adds no force (as SOFA)");
+  initial_points.set(std::vector<Vec3>(fem_.X0.begin(), fem_.X0.end()));
+}
+
+void TetrahedronFEMForceField::reset() { fem_.reset_plasticity(); }
+
+void TetrahedronFEMForceField::add_force(const MechParams& p) {
+  MechanicalState& s = *mstate;
+  const std::vector<double>& x = s.vec(p.x);
+  std::vector<double>& f = s.vec(p.f);
+  fem_.add_force(as_vec3(x), as_vec3(f));
+}
+
+void TetrahedronFEMForceField::add_dforce(const MechParams& p, double kfactor) {
+  MechanicalState& s = *mstate;
+  const std::vector<double>& dx = s.vec(p.dx);
+  std::vector<double>& df = s.vec(p.df);
+  fem_.add_dforce(as_vec3(dx), as_vec3(df), kfactor);
+}
+
+bool TetrahedronFEMForceField::build_stiffness(MatrixSink& K) {
+  const MechanicalState* s = mstate.get();
+  fem_.add_stiffness_blocks([&](int i, int j, const Mat3& b) { K.add_block(s, 3 * i, s, 3 * j, b); });
+  return true;
+}
+
+void register_tetrahedron_fem_force_field(Registry& r) {
+  ComponentInfo info;
+  info.name = "TetrahedronFEMForceField";
+  info.category = "ForceField/FEM";
+  info.description = "tetrahedral finite elements, linear (small) or corotational (large, polar, svd), with plasticity";
+  info.templates = {"Vec3d"};
+  info.default_template = "Vec3d";
+  info.requirement = Requirement::state;
+  info.create = creator<TetrahedronFEMForceField>();
+  r.add(std::move(info));
+}
+
+}  // namespace sinew

@@ -1,0 +1,81 @@
+// TetrahedronFEMForceField: linear elasticity on tetrahedra, linear (small)
+// or corotational (large: 3-node frame, polar, svd), with optional plasticity
+// and the hexahedron split fallback (spec/mechanics.md §2.1).
+// The numerical kernel lives in forcefield/tetra_fem.h.
+#pragma once
+
+#include "core/roles.h"
+#include "forcefield/tetra_fem.h"
+
+namespace sinew {
+
+class TetrahedronFEMForceField final : public ForceField {
+ public:
+  Field<std::vector<double>> young_modulus{this, "youngModulus", {5000.0},
+                                           "FEM Young's Modulus in Hooke's law (Pa), one value or one per element",
+                                           "Material"};
+  Field<std::vector<double>> poisson_ratio{this, "poissonRatio", {0.45},
+                                           "FEM Poisson Ratio in Hooke's law [0,0.5[, one value or one per element",
+                                           "Material"};
+  Field<std::string> method{this, "method", "large",
+                            "\"small\", \"large\" (by QR), \"polar\" or \"svd\" displacements", "Material"};
+  Field<std::vector<double>> local_stiffness_factor{
+      this, "localStiffnessFactor", {},
+      "per-element Young's modulus factor: element i uses localStiffnessFactor[i*M/N] (M values, N elements)",
+      "Material"};
+  Field<bool> update_stiffness_matrix{this, "updateStiffnessMatrix", false,
+                                      "recompute the strain-displacement matrix from the current shape", "Material"};
+  Field<bool> assembling{this, "computeGlobalMatrix", false,
+                         "compute the force through the assembled element matrix (alias: assembling)", "Material"};
+  Field<double> plastic_max_threshold{this, "plasticMaxThreshold", 0.0,
+                                      "Plastic Max Threshold (2-norm of the strain); 0 disables plasticity",
+                                      "Plasticity"};
+  Field<double> plastic_yield_threshold{this, "plasticYieldThreshold", static_cast<double>(0.0001f),
+                                        "Plastic Yield Threshold (2-norm of the strain)", "Plasticity"};
+  Field<double> plastic_creep{this, "plasticCreep", static_cast<double>(0.9f),
+                              "Plastic Creep Factor * dt [0,1]. Warning this factor depends on dt.", "Plasticity"};
+  Field<std::string> gather_pt{this, "gatherPt", "", "unused (GPU version only)", "Material"};
+  Field<std::string> gather_bsize{this, "gatherBsize", "", "unused (GPU version only)", "Material"};
+  Field<bool> update_stiffness{this, "updateStiffness", false,
+                               "recompute the material matrices at each time step (same values)", "Material"};
+  Field<std::vector<Vec3>> initial_points{this, "initialPoints", {}, "rest positions copied at init (output)",
+                                          "Material"};
+  Field<int> compute_von_mises_stress{this, "computeVonMisesStress", 0,
+                                      "0: no von Mises stress, 1: from the corotational strain, 2: from the Green "
+                                      "strain (output only)",
+                                      "Stress"};
+  Field<std::vector<double>> von_mises_per_element{this, "vonMisesPerElement", {}, "von Mises stress per element",
+                                                   "Stress"};
+  Field<std::vector<double>> von_mises_per_node{this, "vonMisesPerNode", {}, "von Mises stress per node", "Stress"};
+  Field<bool> draw_heterogeneous_tetra{this, "drawHeterogeneousTetra", false,
+                                       "draw heterogeneous tetrahedra in different colours (viewer)", "Visualization"};
+  Field<std::string> show_stress_color_map{this, "showStressColorMap", "Blue to Red",
+                                           "colour map of the stress (viewer)", "Visualization"};
+  Field<float> show_stress_alpha{this, "showStressAlpha", 1.0f, "alpha of the stress display (viewer)",
+                                 "Visualization"};
+  Field<bool> show_von_mises_per_node{this, "showVonMisesStressPerNode", false,
+                                      "draw von Mises stress at nodes (viewer)", "Visualization"};
+  Field<bool> show_von_mises_per_node_color_map{this, "showVonMisesStressPerNodeColorMap", false,
+                                                "draw elements coloured by nodal von Mises stress (viewer)",
+                                                "Visualization"};
+  Field<bool> show_von_mises_per_element{this, "showVonMisesStressPerElement", false,
+                                         "draw elements coloured by their von Mises stress (viewer)",
+                                         "Visualization"};
+  Field<double> show_element_gap_scale{this, "showElementGapScale", 0.333,
+                                       "gap between drawn elements in [0,1] (viewer)", "Visualization"};
+  Link<MeshTopologyBase> topology{this, "topology", "topology holding the tetrahedra (default: the node's)"};
+
+  TetrahedronFEMForceField();
+  void init() override;
+  void reset() override;
+  void add_force(const MechParams& p) override;
+  void add_dforce(const MechParams& p, double kfactor) override;
+  bool build_stiffness(MatrixSink& K) override;
+
+  const fem::TetraFEM& kernel() const { return fem_; }
+
+ private:
+  fem::TetraFEM fem_;
+};
+
+}  // namespace sinew

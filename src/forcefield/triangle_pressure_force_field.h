@@ -1,0 +1,41 @@
+// TrianglePressureForceField: a pressure (force per unit area, a vector) on a
+// list of topology triangles: each vertex receives P·A/3 with A the rest area
+// (useConstantForce), or σ·((x1−x0)×(x2−x0))/6 with the Cauchy stress σ
+// (spec/mechanics.md §3.10). No stiffness.
+#pragma once
+
+#include <vector>
+
+#include "core/roles.h"
+
+namespace sinew {
+
+class TrianglePressureForceField final : public ForceField {
+ public:
+  Field<Vec3> pressure{this, "pressure", Vec3::Zero(), "Pressure force per unit area", "Load"};
+  Field<std::vector<double>> cauchy_stress{this, "cauchyStress", {0, 0, 0, 0, 0, 0},
+                                           "Cauchy stress (symmetric: xx xy yy xz yz zz) applied on the normal of "
+                                           "each triangle",
+                                           "Load"};
+  Field<std::vector<unsigned>> triangle_list{this, "triangleList", {},
+                                             "Indices of triangles where a pressure is applied", "Load"};
+  Field<bool> show_forces{this, "showForces", false, "draw triangles which have a given pressure", "Visualization"};
+  Field<bool> use_constant_force{this, "useConstantForce", true,
+                                 "applied force is computed as the pressure vector times the area at rest", "Load"};
+  Link<MeshTopologyBase> topology{this, "topology", "topology holding the triangles (default: the node's)"};
+
+  void init() override;
+  void add_force(const MechParams& p) override;
+  void add_dforce(const MechParams&, double) override {}
+  bool build_stiffness(MatrixSink&) override { return true; }
+
+ private:
+  bool rebuild();
+  std::vector<unsigned> list_;      // triangle indices in use
+  std::vector<Triangle> tris_;      // their vertices
+  std::vector<Vec3> force_;         // P·A per triangle
+  Vec3 pressure_seen_ = Vec3::Zero();
+  std::size_t n_triangles_ = 0;
+};
+
+}  // namespace sinew

@@ -1,0 +1,146 @@
+#include "forcefield/triangular_bending_springs.h"
+
+#include <cmath>
+
+#include "core/node.h"
+#include "core/registry.h"
+#include "forcefield/triangle_adjacency.h"
+
+namespace sinew {
+
+void TriangularBendingSprings::init() {
+  ForceField::init();
+  if (state() != ComponentState::valid) return;
+  if (mstate->state_type() != StateType::vec3) {
+    msg_error("only Vec3d states are supported");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  // SOFA keeps its defaults when a negative value is given (with a warning).
+  ks_ = stiffness.get();
+  kd_ = damping.get();
+  if (ks_ < 0) {
+    msg_warning("stiffness " + parse::format_double(ks_) + " is negative: using 100000");
+    ks_ = 100000.0;
+  }
+  if (kd_ < 0) {
+    msg_warning("damping " + parse::format_double(kd_) + " is negative: using 1");
+    kd_ = 1.0;
+  }
+  if (!topology) topology.set(node()->get_mesh_topology_link());
+  if (!topology) {
+    msg_error("no topology found (a triangular mesh is required)");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if (topology->triangles().empty()) {
+    msg_error("the topology " + topology->describe() + " has no triangles (a triangular set topology is required)");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if (!rebuild()) state_ = ComponentState::invalid;
+}
+
+void TriangularBendingSprings::reinit() {
+  if (state() == ComponentState::valid && !rebuild()) state_ = ComponentState::invalid;
+}
+
+bool TriangularBendingSprings::rebuild() {
+  const auto& tris = topology->triangles();
+  TriangleAdjacency adj;
+  adj.build(tris, topology->edges());
+  n_triangles_ = tris.size();
+  n_edges_ = topology->edges().size();
+  const std::size_t np = mstate->size();
+  for (std::size_t i = 0; i < tris.size(); ++i)
+    for (unsigned v : tris[i])
+      if (v >= np) {
+        msg_error("triangle " + std::to_string(i) + " refers to point " + std::to_string(v) + " but the state has " +
+                  std::to_string(np) + " points");
+        return false;
+      }
+  const std::vector<double>& x0 = mstate->vec(kRestPosition);
+  // SOFA's triangle-creation pass: the first triangle (in order) holding an
+  // edge initialises its spring: m1 opposite in the other triangle, m2 in this one.
+  std::vector<springs::LinearSpring> per_edge(adj.edges.size());
+  std::vector<char> init(adj.edges.size(), 0), active(adj.edges.size(), 0);
+  for (unsigned t2 = 0; t2 < tris.size(); ++t2)
+    for (int j = 0; j < 3; ++j) {
+      const int e = adj.edges_in_triangle[t2][j];
+      if (e < 0 || init[e]) continue;
+      init[e] = 1;
+      const auto& shell = adj.triangles_around_edge[e];
+      if (shell.size() != 2) continue;
+      const unsigned t1 = shell[0] == t2 ? shell[1] : shell[0];
+      springs::LinearSpring s;
+      s.m1 = tris[t1][adj.edge_index_in_triangle(t1, e)];
+      s.m2 = tris[t2][j];
+      s.ks = ks_;
+      s.kd = kd_;
+      const double u0 = x0[3 * s.m1] - x0[3 * s.m2], u1 = x0[3 * s.m1 + 1] - x0[3 * s.m2 + 1],
+                   u2 = x0[3 * s.m1 + 2] - x0[3 * s.m2 + 2];
+      s.l0 = std::sqrt(u0 * u0 + u1 * u1 + u2 * u2);
+      per_edge[e] = s;
+      active[e] = 1;
+    }
+  springs_.clear();
+  for (std::size_t e = 0; e < per_edge.size(); ++e)
+    if (active[e]) springs_.push_back(per_edge[e]);
+  dfdx_.assign(springs_.size(), springs::Block{});
+  return true;
+}
+
+void TriangularBendingSprings::add_force(const MechParams& p) {
+  // Topology changes: rebuild the springs from the new lists (no per-event handling).
+  if ((topology->triangles().size() != n_triangles_ || topology->edges().size() != n_edges_) && !rebuild()) {
+    state_ = ComponentState::invalid;
+    springs_.clear();
+    dfdx_.clear();
+  }
+  MechanicalState& s = *mstate;
+  const double* x = s.vec(p.x).data();
+  const double* v = s.vec(p.v).data();
+  double* f = s.vec(p.f).data();
+  energy_ = 0;
+  for (std::size_t i = 0; i < springs_.size(); ++i)
+    springs::add_spring_force<3>(springs_[i], x, v, f, x, v, f, dfdx_[i], energy_, 1.0e-4);
+}
+
+void TriangularBendingSprings::add_dforce(const MechParams& p, double kfactor) {
+  MechanicalState& s = *mstate;
+  const double* dx = s.vec(p.dx).data();
+  double* df = s.vec(p.df).data();
+  for (std::size_t i = 0; i < springs_.size(); ++i)
+    springs::add_spring_dforce<3>(springs_[i], dfdx_[i], dx, df, dx, df, kfactor);
+}
+
+bool TriangularBendingSprings::build_stiffness(MatrixSink& K) {
+  const MechanicalState* s = mstate.get();
+  for (std::size_t e = 0; e < springs_.size(); ++e) {
+    const springs::Block& m = dfdx_[e];
+    const std::size_t a = 3 * springs_[e].m1, b = 3 * springs_[e].m2;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const double k = m[i * 3 + j];
+        K.add(s, a + i, s, a + j, -k);
+        K.add(s, a + i, s, b + j, k);
+        K.add(s, b + i, s, a + j, k);
+        K.add(s, b + i, s, b + j, -k);
+      }
+  }
+  return true;
+}
+
+void register_triangular_bending_springs(Registry& r) {
+  ComponentInfo info;
+  info.name = "TriangularBendingSprings";
+  info.category = "ForceField/Spring";
+  info.description = "springs between the opposite vertices of triangles sharing an edge";
+  info.templates = {"Vec3d"};
+  info.default_template = "Vec3d";
+  info.requirement = Requirement::state;
+  info.create = creator<TriangularBendingSprings>();
+  r.add(std::move(info));
+}
+
+}  // namespace sinew

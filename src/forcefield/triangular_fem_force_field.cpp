@@ -1,0 +1,244 @@
+#include "forcefield/triangular_fem_force_field.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/node.h"
+#include "core/registry.h"
+
+namespace sinew {
+
+namespace {
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 cross(const Vec3& a, const Vec3& b) {
+  return Vec3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
+}
+inline Vec3 normalized(Vec3 v) {
+  const double n = std::sqrt(dot(v, v));
+  if (n > std::numeric_limits<double>::epsilon())
+    for (int c = 0; c < 3; ++c) v[c] /= n;
+  return v;
+}
+inline Vec3 at(const double* x, unsigned i) { return Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]); }
+inline Vec3 minus(const Vec3& a, const Vec3& b) { return Vec3(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
+// Rows (ex, ey, ez): ex along AB, ez along ex × AC, ey = ez × ex (SOFA's computeRotationLarge).
+inline Mat3 frame_large(const Vec3& pA, const Vec3& pB, const Vec3& pC) {
+  const Vec3 ex = normalized(minus(pB, pA));
+  const Vec3 ez = normalized(cross(ex, minus(pC, pA)));
+  const Vec3 ey = cross(ez, ex);
+  Mat3 r;
+  r << ex[0], ex[1], ex[2], ey[0], ey[1], ey[2], ez[0], ez[1], ez[2];
+  return r;
+}
+inline Vec3 mul(const Mat3& m, const Vec3& v) {
+  return Vec3(m(0, 0) * v[0] + m(0, 1) * v[1] + m(0, 2) * v[2], m(1, 0) * v[0] + m(1, 1) * v[1] + m(1, 2) * v[2],
+              m(2, 0) * v[0] + m(2, 1) * v[1] + m(2, 2) * v[2]);
+}
+// J from the local shape (A at 0, B on x, C in the plane); false when det ≈ 0.
+inline bool local_j(double bx, double cx, double cy, std::array<double, 18>& J) {
+  const double det = bx * cy;
+  if (std::fabs(det) < std::numeric_limits<double>::epsilon()) return false;
+  const double inv = 1 / det;
+  J.fill(0.0);
+  J[0 * 3 + 0] = J[1 * 3 + 2] = -cy * inv;
+  J[0 * 3 + 2] = J[1 * 3 + 1] = (cx - bx) * inv;
+  J[2 * 3 + 0] = J[3 * 3 + 2] = cy * inv;
+  J[2 * 3 + 2] = J[3 * 3 + 1] = -cx * inv;
+  J[4 * 3 + 0] = J[5 * 3 + 2] = 0;
+  J[4 * 3 + 2] = J[5 * 3 + 1] = bx * inv;
+  return true;
+}
+// SOFA's sparse kernel: strain = Jᵀ·D, stress = K·strain, F = J·stress (zero pattern of J and K).
+inline void kernel(const std::array<double, 18>& J, const std::array<double, 9>& K, const double* D, double* F) {
+  auto j = [&](int r, int c) { return J[r * 3 + c]; };
+  const double e0 = j(0, 0) * D[0] + j(2, 0) * D[2];
+  const double e1 = j(1, 1) * D[1] + j(3, 1) * D[3] + j(5, 1) * D[5];
+  const double e2 = j(0, 2) * D[0] + j(1, 2) * D[1] + j(2, 2) * D[2] + j(3, 2) * D[3] + j(4, 2) * D[4];
+  const double s0 = K[0] * e0 + K[1] * e1;
+  const double s1 = K[3] * e0 + K[4] * e1;
+  const double s2 = K[8] * e2;
+  F[0] = j(0, 0) * s0 + j(0, 2) * s2;
+  F[1] = j(1, 1) * s1 + j(1, 2) * s2;
+  F[2] = j(2, 0) * s0 + j(2, 2) * s2;
+  F[3] = j(3, 1) * s1 + j(3, 2) * s2;
+  F[4] = j(4, 2) * s2;
+  F[5] = j(5, 1) * s1;
+}
+}  // namespace
+
+void TriangularFEMForceField::init() {
+  ForceField::init();
+  if (state() != ComponentState::valid) return;
+  if (mstate->state_type() != StateType::vec3) {
+    msg_error("only Vec3d states are supported");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if (method.value() != "large") {
+    msg_error("method \"" + method.value() + "\" is not supported (only \"large\")");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if (rotated_initial_elements.is_set() || initial_transformation.is_set()) {
+    msg_error("rotatedInitialElements/initialTransformation are not supported");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if (young_modulus.get().empty() || poisson_ratio.get().empty()) {
+    msg_error("youngModulus and poissonRatio must not be empty");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if (!topology) topology.set(node()->get_mesh_topology_link());
+  if (!topology) {
+    msg_error("no topology found (a triangular mesh is required)");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if (topology->triangles().empty()) msg_warning("no triangles found in the topology " + topology->describe());
+  if (!rebuild()) state_ = ComponentState::invalid;
+}
+
+void TriangularFEMForceField::reinit() {
+  if (state() == ComponentState::valid && !rebuild()) state_ = ComponentState::invalid;
+}
+
+bool TriangularFEMForceField::rebuild() {
+  const auto& tris = topology->triangles();
+  n_triangles_ = tris.size();
+  const std::size_t np = mstate->size();
+  const std::vector<double>& x0 = mstate->vec(kRestPosition);
+  const auto& ey = young_modulus.get();
+  const auto& pr = poisson_ratio.get();
+  // SOFA computes the material before checking the values (then warns).
+  if (ey.size() == 1 && ey[0] < 0) msg_warning("youngModulus is negative (SOFA resets it to 1000 after use)");
+  if (pr.size() == 1 && pr[0] < 0) msg_warning("poissonRatio is negative (SOFA resets it to 0.3 after use)");
+  el_.assign(tris.size(), Element{});
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    const Triangle& t = tris[i];
+    if (t[0] >= np || t[1] >= np || t[2] >= np) {
+      msg_error("triangle " + std::to_string(i) + " refers to a point >= " + std::to_string(np) +
+                " (the number of points of the state)");
+      return false;
+    }
+    Element& e = el_[i];
+    e.a = t[0];
+    e.b = t[1];
+    e.c = t[2];
+    const Vec3 pA = at(x0.data(), t[0]), pB = at(x0.data(), t[1]), pC = at(x0.data(), t[2]);
+    const Mat3 R01 = frame_large(pA, pB, pC);
+    e.rotation = R01.transpose();
+    const Vec3 rb = mul(R01, minus(pB, pA)), rc = mul(R01, minus(pC, pA));
+    e.rbx = rb[0];
+    e.rcx = rc[0];
+    e.rcy = rc[1];
+    if (!local_j(rb[0], rc[0], rc[1], e.J)) {
+      msg_error("triangle " + std::to_string(i) + " is degenerate in its rest shape (zero area)");
+      return false;
+    }
+    e.area = rb[0] * rc[1] * 0.5;
+    const double y = ey.size() > i ? ey[i] : ey[0];
+    const double p = pr.size() > i ? pr[i] : pr[0];
+    const double s = (y / (1.0 - p * p)) * e.area;
+    e.D = {1 * s, p * s, 0 * s, p * s, 1 * s, 0 * s, 0 * s, 0 * s, ((1.0 - p) * 0.5) * s};
+  }
+  return true;
+}
+
+void TriangularFEMForceField::add_force(const MechParams& p) {
+  if (topology->triangles().size() != n_triangles_ && !rebuild()) {
+    state_ = ComponentState::invalid;
+    el_.clear();
+  }
+  MechanicalState& s = *mstate;
+  const double* x = s.vec(p.x).data();
+  double* f = s.vec(p.f).data();
+  for (std::size_t i = 0; i < el_.size(); ++i) {
+    Element& e = el_[i];
+    const Vec3 pA = at(x, e.a), pB = at(x, e.b), pC = at(x, e.c);
+    const Mat3 R02 = frame_large(pA, pB, pC);
+    const Vec3 db = mul(R02, minus(pB, pA)), dc = mul(R02, minus(pC, pA));
+    const double D[6] = {0, 0, e.rbx - db[0], 0, e.rcx - dc[0], e.rcy - dc[1]};
+    std::array<double, 18> J;
+    if (!local_j(db[0], dc[0], dc[1], J)) {
+      msg_error("triangle " + std::to_string(i) + " is degenerate (zero area) at step " +
+                std::to_string(node()->step_index) + ": the force field stops");
+      state_ = ComponentState::invalid;
+      el_.clear();
+      return;
+    }
+    double F[6];
+    kernel(J, e.D, D, F);
+    const unsigned v[3] = {e.a, e.b, e.c};
+    for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 3; ++c)
+        f[3 * v[k] + c] += R02(0, c) * F[2 * k] + R02(1, c) * F[2 * k + 1] + R02(2, c) * 0;
+    e.J = J;
+    e.rotation = R02.transpose();
+  }
+}
+
+void TriangularFEMForceField::add_dforce(const MechParams& p, double kfactor) {
+  MechanicalState& s = *mstate;
+  const double* dx = s.vec(p.dx).data();
+  double* df = s.vec(p.df).data();
+  for (const Element& e : el_) {
+    const Mat3& rot = e.rotation;  // local → world; its transpose maps world → local
+    const unsigned v[3] = {e.a, e.b, e.c};
+    double D[6];
+    for (int k = 0; k < 3; ++k) {
+      const double* d = dx + 3 * v[k];
+      D[2 * k] = rot(0, 0) * d[0] + rot(1, 0) * d[1] + rot(2, 0) * d[2];
+      D[2 * k + 1] = rot(0, 1) * d[0] + rot(1, 1) * d[1] + rot(2, 1) * d[2];
+    }
+    double F[6];
+    kernel(e.J, e.D, D, F);
+    for (int k = 0; k < 3; ++k) {
+      const double l0 = -1.0 * F[2 * k], l1 = -1.0 * F[2 * k + 1];
+      for (int c = 0; c < 3; ++c)
+        df[3 * v[k] + c] += (rot(c, 0) * l0 + rot(c, 1) * l1 + rot(c, 2) * 0) * kfactor;
+    }
+  }
+}
+
+bool TriangularFEMForceField::build_stiffness(MatrixSink& K) {
+  const MechanicalState* s = mstate.get();
+  using Mat63 = Eigen::Matrix<double, 6, 3>;
+  using Mat9 = Eigen::Matrix<double, 9, 9>;
+  for (const Element& e : el_) {
+    Mat63 J;
+    for (int r = 0; r < 6; ++r)
+      for (int c = 0; c < 3; ++c) J(r, c) = e.J[r * 3 + c];
+    Mat3 D;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) D(r, c) = e.D[r * 3 + c];
+    const Eigen::Matrix<double, 6, 6> JKJt = J * D * J.transpose();
+    Mat9 Ke = Mat9::Zero(), RR = Mat9::Zero();
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        for (int k = 0; k < 2; ++k)
+          for (int l = 0; l < 2; ++l) Ke(3 * i + k, 3 * j + l) = JKJt(2 * i + k, 2 * j + l);
+      }
+    for (int b = 0; b < 3; ++b) RR.block<3, 3>(3 * b, 3 * b) = e.rotation;
+    const Mat9 SR = RR * Ke * RR.transpose();
+    const unsigned v[3] = {e.a, e.b, e.c};
+    for (int n1 = 0; n1 < 3; ++n1)
+      for (int n2 = 0; n2 < 3; ++n2)
+        K.add_block(s, 3 * v[n1], s, 3 * v[n2], -SR.block<3, 3>(3 * n1, 3 * n2));
+  }
+  return true;
+}
+
+void register_triangular_fem_force_field(Registry& r) {
+  ComponentInfo info;
+  info.name = "TriangularFEMForceField";
+  info.category = "ForceField/FEM";
+  info.description = "corotational plane-stress triangles (J rebuilt from the current shape)";
+  info.templates = {"Vec3d"};
+  info.default_template = "Vec3d";
+  info.requirement = Requirement::state;
+  info.create = creator<TriangularFEMForceField>();
+  r.add(std::move(info));
+}
+
+}  // namespace sinew

@@ -1,0 +1,59 @@
+// BarycentricMapping: each output point is a fixed weighted sum of the
+// vertices of one input element (spec/mechanics.md §6.2). Vec3d → Vec3d.
+//
+// The input topology (`input_topology`, default: the first mesh topology of
+// the input state's node or its ancestors) decides the mapper:
+//  - RegularGridTopology: the grid cell containing the point (computed from
+//    the grid's own origin and spacing), else the nearest cell with
+//    extrapolated coordinates; trilinear weights. No mapper without volume.
+//  - *SetTopologyContainer: hexahedra, else tetrahedra, quads, triangles;
+//    nearest element by SOFA's distance criterion; weights summed in
+//    element-node order.
+//  - other meshes (MeshTopology, loaders' meshes): tetrahedra and hexahedra,
+//    else triangles and quads, else edges (MeshMapper rules and summation order).
+// Coordinates are computed at init from the current (or, with
+// useRestPosition, rest) positions of input and output. J is constant: apply_j
+// uses the same weights, apply_jt scatters weight·f.
+#pragma once
+
+#include "mapping/mapping_base.h"
+
+namespace sinew {
+
+class BarycentricMapping final : public MappingBase {
+ public:
+  BarycentricMapping(StateType in, StateType out) : MappingBase(in, out) {}
+
+  Field<bool> use_rest_position{this, "useRestPosition", false,
+                                "Use the rest position of the input and output models to initialize the mapping",
+                                "Mapping"};
+  Link<MeshTopologyBase> input_topology{this, "input_topology",
+                                        "Input topology container (usually the surrounding domain)."};
+  Link<MeshTopologyBase> output_topology{this, "output_topology",
+                                         "Output topology container (usually the immersed domain)."};
+
+  void apply(int x) override;
+  void apply_j(int v, int role) override;
+  void apply_jt(int f, int role) override;
+  bool jacobian(std::vector<JacobianEntry>& out) override;
+
+  // Which mapper was chosen ("RegularGrid", "Mesh", "TetrahedronSet", ...), for tests and messages.
+  const std::string& mapper_name() const { return mapper_; }
+
+ protected:
+  bool init_mapping() override;
+  bool apply_at_init() const override { return false; }
+
+ private:
+  bool init_regular_grid(const std::vector<double>& out);
+  bool init_mesh(const std::vector<double>& out, const std::vector<double>& in, bool set_container);
+  void add_point(std::initializer_list<std::pair<unsigned, double>> terms);
+
+  // Output point i = Σ_{k in [start_i, start_{i+1})} w_k · in[idx_k], summed in this order.
+  std::vector<std::uint32_t> start_{0};
+  std::vector<unsigned> idx_;
+  std::vector<double> w_;
+  std::string mapper_;
+};
+
+}  // namespace sinew

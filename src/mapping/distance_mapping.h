@@ -1,0 +1,55 @@
+// DistanceMapping: one scalar per topology edge, out_e = |x_e1 − x_e0| − L0_e
+// (spec/mechanics.md §6.5). Input Vec3d (or the centres of Rigid3d), output Vec1d.
+//
+// restLengths: if its size differs from the edge count it is resized (new
+// entries 0) and, unless computeDistance, filled with the initial lengths.
+// Jacobian row e: −n on e0, +n on e1 (n = unit direction at the last apply;
+// (1,1,1)/√3 when the edge is degenerate). Geometric stiffness (applyDJT):
+// G = λ/d·(I − n nᵀ) with λ the output force, for every edge if Exact, for
+// edges in extension (λ < 0) if Stabilized, none if None.
+#pragma once
+
+#include "mapping/mapping_base.h"
+
+namespace sinew {
+
+class DistanceMapping final : public MappingBase {
+ public:
+  explicit DistanceMapping(StateType in) : MappingBase(in, StateType::vec1) {}
+
+  Field<bool> compute_distance{this, "computeDistance", false,
+                               "if 'computeDistance = true', then rest length of each element equal 0, otherwise rest "
+                               "length is the initial lenght of each of them",
+                               "Mapping"};
+  Field<std::vector<double>> rest_lengths{this, "restLengths", {}, "Rest lengths of the connections", "Mapping"};
+  Field<std::string> geometric_stiffness{this, "geometricStiffness", "Stabilized",
+                                         "Method used to compute the geometric stiffness: None, Exact or Stabilized "
+                                         "(0, 1, 2)",
+                                         "Mapping"};
+  Field<double> show_object_scale{this, "showObjectScale", 0.0, "Scale for object display", "Visualization"};
+  Field<std::vector<double>> show_color{this, "showColor", {1, 1, 0, 1}, "Color for object display", "Visualization"};
+  Link<MeshTopologyBase> topology{this, "topology", "link to the topology container"};
+
+  void apply(int x) override;
+  void apply_j(int v, int role) override;
+  void apply_jt(int f, int role) override;
+  void apply_djt(int df, int dx, double k) override;
+  bool jacobian(std::vector<JacobianEntry>& out) override;
+  bool build_geometric_stiffness(MatrixSink& K) override;
+
+ protected:
+  bool init_mapping() override;
+
+ private:
+  // Geometric stiffness block of edge e (scaled by `scale`), or false when the edge has none.
+  bool gs_block(std::size_t e, const std::vector<double>& child_force, double scale, double b[3][3]) const;
+
+  std::vector<Edge> edges_;
+  std::vector<double> rest_;
+  std::vector<double> dir_;      // 3 per edge
+  std::vector<double> invlen_;   // 1 per edge
+  int gs_ = 2;
+  int cw_ = 3, dw_ = 3;          // input layout (Rigid3d: 7 / 6, centre first)
+};
+
+}  // namespace sinew

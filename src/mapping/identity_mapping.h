@@ -1,0 +1,26 @@
+// IdentityMapping: out_i = in_i (spec/mechanics.md §6.1). The output is
+// resized to the input size at init; J is the identity, Jᵀ adds the output
+// forces to the input. Visual models (OglModel) are accepted as outputs.
+#pragma once
+
+#include "mapping/mapping_base.h"
+
+namespace sinew {
+
+class IdentityMapping final : public MappingBase {
+ public:
+  IdentityMapping(StateType in, StateType out) : MappingBase(in, out) {}
+
+  void apply(int x) override;
+  void apply_j(int v, int role) override;
+  void apply_jt(int f, int role) override;
+  bool jacobian(std::vector<JacobianEntry>& out) override;
+
+ protected:
+  bool init_mapping() override;
+
+ private:
+  int cw_ = 3, dw_ = 3;  // scalars per coordinate / derivative (same on both sides)
+};
+
+}  // namespace sinew

@@ -1,0 +1,253 @@
+#include "mapping/rigid_mapping.h"
+
+#include <cmath>
+
+#include "core/registry.h"
+
+namespace sinew {
+
+namespace {
+
+// SOFA's Quat::rotate: t = 2·(q⃗ × v); r = v + w·t + q⃗ × t (same operation order).
+inline void quat_rotate(double qx, double qy, double qz, double qw, const double* v, double* r) {
+  const double t0 = (qy * v[2] - qz * v[1]) * 2;
+  const double t1 = (qz * v[0] - qx * v[2]) * 2;
+  const double t2 = (qx * v[1] - qy * v[0]) * 2;
+  r[0] = v[0] + qw * t0 + (qy * t2 - qz * t1);
+  r[1] = v[1] + qw * t1 + (qz * t0 - qx * t2);
+  r[2] = v[2] + qw * t2 + (qx * t1 - qy * t0);
+}
+
+}  // namespace
+
+bool RigidMapping::init_mapping() {
+  dim_ = state_type_info(out_type()).coord_width;  // Vec3d: 3, Vec2d: 2
+  gs_ = geometric_stiffness_id(geometric_stiffness.get(), 0);
+  if (gs_ < 0) {
+    msg_error("geometricStiffness must be None, Exact or Stabilized (0, 1 or 2), not \"" + geometric_stiffness.get() +
+              "\"");
+    return false;
+  }
+  if (gs_ == 2 || (gs_ == 1 && !rigid3())) {
+    msg_error("this geometricStiffness option is not supported (only None, and Exact for Rigid3d)");
+    return false;
+  }
+  if (!filename.value().empty()) {
+    msg_error("loading local coordinates from a file (filename=\"" + filename.value() + "\") is not supported");
+    return false;
+  }
+  const std::size_t n_in = in_size();
+  if (n_in == 0) {
+    msg_error("the input state has no rigid DoF");
+    return false;
+  }
+  const int cw_in = state_type_info(in_type()).coord_width;
+  std::vector<double> pts = initial_points.get();
+  const std::vector<double>& x_out = initial_output_positions();
+  const std::size_t n_out = x_out.size() / dim_;
+  const std::vector<unsigned>& per_point = rigid_index_per_point.get();
+
+  // Rigid index of each point (SOFA's getRigidIndex, on the number of local points).
+  auto rigid_of = [&](std::size_t i, std::size_t n_points) -> long long {
+    if (per_point.size() == n_points) return per_point[i];
+    if (!index_from_end.value()) return index.value();
+    return static_cast<long long>(n_in) - 1 - static_cast<long long>(index.value());
+  };
+
+  if (pts.empty() && !use_x0.value()) {
+    pts.assign(n_out * dim_, 0.0);
+    const std::vector<double>& x_in = in_coord(kPosition);
+    for (std::size_t i = 0; i < n_out; ++i) {
+      const double* p = &x_out[i * dim_];
+      double* l = &pts[i * dim_];
+      if (!global_to_local_coords.value()) {
+        for (int c = 0; c < dim_; ++c) l[c] = p[c];
+        continue;
+      }
+      const long long r = rigid_of(i, n_out);
+      if (r < 0 || static_cast<std::size_t>(r) >= n_in) {
+        msg_error("point " + std::to_string(i) + " is mapped from rigid " + std::to_string(r) + " but the input has " +
+                  std::to_string(n_in) + " DoFs");
+        return false;
+      }
+      const double* c = &x_in[r * cw_in];
+      if (rigid3()) {
+        const double d[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
+        quat_rotate(-c[3], -c[4], -c[5], c[6], d, l);  // inverse rotation
+      } else {
+        const double s = std::sin(c[2]), co = std::cos(c[2]);
+        const double d0 = p[0] - c[0], d1 = p[1] - c[1];
+        l[0] = co * d0 + s * d1;
+        l[1] = -s * d0 + co * d1;
+      }
+    }
+    initial_points.set(pts);
+  }
+  const std::size_t n_pts = use_x0.value() ? n_out : pts.size() / dim_;
+  local_ = std::move(pts);
+  rigid_.assign(n_pts, 0);
+  for (std::size_t i = 0; i < n_pts; ++i) {
+    const long long r = rigid_of(i, n_pts);
+    if (r < 0 || static_cast<std::size_t>(r) >= n_in) {
+      msg_error("point " + std::to_string(i) + " is mapped from rigid " + std::to_string(r) + " but the input has " +
+                std::to_string(n_in) + " DoFs");
+      return false;
+    }
+    rigid_[i] = static_cast<unsigned>(r);
+  }
+  rotated_.assign(n_pts * dim_, 0.0);
+  resize_output(n_pts);
+  return true;
+}
+
+void RigidMapping::apply(int x) {
+  std::vector<double>* outp = out_coord(x);
+  if (!outp) return;
+  const std::vector<double>& in = in_coord(x);
+  const std::vector<double>* pts = &local_;
+  if (use_x0.value() && out_) pts = &out_->vec(kRestPosition);
+  const std::size_t n = rigid_.size();
+  std::vector<double>& out = *outp;
+  out.resize(n * dim_);
+  if (rigid3()) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* c = &in[rigid_[i] * 7];
+      double* rp = &rotated_[i * 3];
+      quat_rotate(c[3], c[4], c[5], c[6], &(*pts)[i * 3], rp);
+      out[i * 3 + 0] = rp[0] + c[0];
+      out[i * 3 + 1] = rp[1] + c[1];
+      out[i * 3 + 2] = rp[2] + c[2];
+    }
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* c = &in[rigid_[i] * 3];
+      const double* l = &(*pts)[i * 2];
+      const double s = std::sin(c[2]), co = std::cos(c[2]);
+      double* rp = &rotated_[i * 2];
+      rp[0] = co * l[0] - s * l[1];
+      rp[1] = s * l[0] + co * l[1];
+      out[i * 2 + 0] = rp[0] + c[0];
+      out[i * 2 + 1] = rp[1] + c[1];
+    }
+  }
+}
+
+void RigidMapping::apply_j(int v, int role) {
+  std::vector<double>* outp = out_deriv(v, role);
+  if (!outp) return;
+  const std::vector<double>& in = in_deriv(v, role);
+  const std::size_t n = rigid_.size();
+  std::vector<double>& out = *outp;
+  out.resize(n * dim_);
+  if (rigid3()) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* d = &in[rigid_[i] * 6];
+      const double* p = &rotated_[i * 3];
+      // v + ω × p
+      out[i * 3 + 0] = d[0] + (d[4] * p[2] - d[5] * p[1]);
+      out[i * 3 + 1] = d[1] + (d[5] * p[0] - d[3] * p[2]);
+      out[i * 3 + 2] = d[2] + (d[3] * p[1] - d[4] * p[0]);
+    }
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* d = &in[rigid_[i] * 3];
+      const double* p = &rotated_[i * 2];
+      out[i * 2 + 0] = d[0] + -p[1] * d[2];
+      out[i * 2 + 1] = d[1] + p[0] * d[2];
+    }
+  }
+}
+
+void RigidMapping::apply_jt(int f, int role) {
+  const std::vector<double>* outp = out_deriv(f, role);
+  if (!outp) return;
+  const std::vector<double>& out = *outp;
+  std::vector<double>& in = in_deriv(f, role);
+  const std::size_t n = std::min(rigid_.size(), out.size() / dim_);
+  if (rigid3()) {
+    for (std::size_t i = 0; i < n; ++i) {
+      double* d = &in[rigid_[i] * 6];
+      const double* fi = &out[i * 3];
+      const double* p = &rotated_[i * 3];
+      d[0] += fi[0];
+      d[1] += fi[1];
+      d[2] += fi[2];
+      // τ += p × f
+      d[3] += p[1] * fi[2] - p[2] * fi[1];
+      d[4] += p[2] * fi[0] - p[0] * fi[2];
+      d[5] += p[0] * fi[1] - p[1] * fi[0];
+    }
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      double* d = &in[rigid_[i] * 3];
+      const double* fi = &out[i * 2];
+      const double* p = &rotated_[i * 2];
+      d[0] += fi[0];
+      d[1] += fi[1];
+      d[2] += p[0] * fi[1] - p[1] * fi[0];
+    }
+  }
+}
+
+void RigidMapping::apply_djt(int df, int dx, double k) {
+  if (gs_ != 1 || !out_ || !rigid3()) return;
+  const std::vector<double>& child_force = out_->vec(kForce);
+  std::vector<double>& f = in_deriv(df, kDforce);
+  const std::vector<double>& d = in_deriv(dx, kDx);
+  const std::size_t n = std::min(rigid_.size(), child_force.size() / 3);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* fi = &child_force[i * 3];
+    const double* w = &d[rigid_[i] * 6 + 3];
+    const double* p = &rotated_[i * 3];
+    // torque −= k · f × (δω × p)
+    const double c0 = w[1] * p[2] - w[2] * p[1];
+    const double c1 = w[2] * p[0] - w[0] * p[2];
+    const double c2 = w[0] * p[1] - w[1] * p[0];
+    double* t = &f[rigid_[i] * 6 + 3];
+    t[0] -= (fi[1] * c2 - fi[2] * c1) * k;
+    t[1] -= (fi[2] * c0 - fi[0] * c2) * k;
+    t[2] -= (fi[0] * c1 - fi[1] * c0) * k;
+  }
+}
+
+bool RigidMapping::jacobian(std::vector<JacobianEntry>& out) {
+  const int dw_in = state_type_info(in_type()).deriv_width;
+  for (std::size_t i = 0; i < rigid_.size(); ++i) {
+    const std::uint32_t col = rigid_[i] * dw_in;
+    const std::uint32_t row = static_cast<std::uint32_t>(i * dim_);
+    if (rigid3()) {
+      const double* p = &rotated_[i * 3];
+      const double m[3][3] = {{0, p[2], -p[1]}, {-p[2], 0, p[0]}, {p[1], -p[0], 0}};  // ω ↦ ω × p
+      for (std::uint32_t a = 0; a < 3; ++a) {
+        out.push_back({0, row + a, col + a, 1.0});
+        for (std::uint32_t b = 0; b < 3; ++b)
+          if (m[a][b] != 0.0) out.push_back({0, row + a, col + 3 + b, m[a][b]});
+      }
+    } else {
+      const double* p = &rotated_[i * 2];
+      out.push_back({0, row, col, 1.0});
+      out.push_back({0, row, col + 2, -p[1]});
+      out.push_back({0, row + 1, col + 1, 1.0});
+      out.push_back({0, row + 1, col + 2, p[0]});
+    }
+  }
+  return true;
+}
+
+void register_rigid_mapping(Registry& r) {
+  ComponentInfo info;
+  info.name = "RigidMapping";
+  info.category = "Mapping/NonLinear";
+  info.description = "points attached to rigid frames";
+  info.templates = {"Rigid3d,Vec3d", "Rigid2d,Vec2d"};
+  info.default_template = "Rigid3d,Vec3d";
+  info.requirement = Requirement::mapping;
+  info.create = [](const std::string& t) -> std::unique_ptr<Component> {
+    StateType in, out;
+    if (!parse_mapping_template(t, in, out)) return nullptr;
+    return std::make_unique<RigidMapping>(in, out);
+  };
+  r.add(std::move(info));
+}
+
+}  // namespace sinew

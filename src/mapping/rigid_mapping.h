@@ -1,0 +1,58 @@
+// RigidMapping: points attached to rigid frames (spec/mechanics.md §6.3).
+// Rigid3d → Vec3d and Rigid2d → Vec2d.
+//
+// Local coordinates (`initialPoints`) are taken at init from the output's
+// current positions when not given: as they are, or converted to the frame of
+// their rigid with globalToLocalCoords. The rigid of point i is
+// rigidIndexPerPoint[i] when that list has one entry per point, else `index`
+// (counted from the end with indexFromEnd).
+// apply: rp_i = R(q_r)·local_i, out_i = c_r + rp_i; J: v_i = v_r + ω_r × rp_i;
+// Jᵀ: F_r += f_i, τ_r += rp_i × f_i. Geometric stiffness (Exact, Rigid3d):
+// τ_r −= k · f_i × (δω_r × rp_i).
+#pragma once
+
+#include "mapping/mapping_base.h"
+
+namespace sinew {
+
+class RigidMapping final : public MappingBase {
+ public:
+  RigidMapping(StateType in, StateType out) : MappingBase(in, out) { filename.add_alias("fileRigidMapping"); }
+
+  Field<std::vector<double>> initial_points{this, "initialPoints", {}, "Local Coordinates of the points", "Mapping"};
+  Field<unsigned> index{this, "index", 0u, "input DOF index", "Mapping"};
+  Field<std::string> filename{this, "filename", "",
+                              "Xsp file where rigid mapping information can be loaded from.", "Mapping"};
+  Field<bool> use_x0{this, "useX0", false,
+                     "Use x0 instead of local copy of initial positions (to support topo changes)", "Mapping"};
+  Field<bool> index_from_end{this, "indexFromEnd", false, "input DOF index starts from the end of input DOFs vector",
+                             "Mapping"};
+  Field<std::vector<unsigned>> rigid_index_per_point{this, "rigidIndexPerPoint", {},
+                                                     "For each mapped point, the index of the Rigid it is mapped from",
+                                                     "Mapping"};
+  Field<bool> global_to_local_coords{this, "globalToLocalCoords", false,
+                                     "are the output DOFs initially expressed in global coordinates", "Mapping"};
+  Field<std::string> geometric_stiffness{this, "geometricStiffness", "None",
+                                         "Method used to compute the geometric stiffness: None, Exact or Stabilized "
+                                         "(0, 1, 2)",
+                                         "Mapping"};
+
+  void apply(int x) override;
+  void apply_j(int v, int role) override;
+  void apply_jt(int f, int role) override;
+  void apply_djt(int df, int dx, double k) override;
+  bool jacobian(std::vector<JacobianEntry>& out) override;
+
+ protected:
+  bool init_mapping() override;
+
+ private:
+  bool rigid3() const { return in_type() == StateType::rigid3; }
+  std::vector<unsigned> rigid_;    // rigid index per point
+  std::vector<double> local_;      // local coordinates, dim per point
+  std::vector<double> rotated_;    // R·local at the last apply, dim per point
+  int dim_ = 3;
+  int gs_ = 0;
+};
+
+}  // namespace sinew

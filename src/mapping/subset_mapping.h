@@ -1,0 +1,43 @@
+// SubsetMapping: out_i = in[indices[i]] (spec/mechanics.md §6.4).
+// Indices come from `indices`, else the range first..last, else the nearest
+// input point within `radius` of each initial output point. An index out of
+// range keeps the output's rest position (only with ignoreNotFound).
+#pragma once
+
+#include "mapping/mapping_base.h"
+
+namespace sinew {
+
+class SubsetMapping final : public MappingBase {
+ public:
+  SubsetMapping(StateType in, StateType out) : MappingBase(in, out) {}
+
+  Field<std::vector<unsigned>> indices{this, "indices", {}, "list of input indices", "Mapping"};
+  Field<unsigned> first{this, "first", 4294967295u, "first index (use if indices are sequential)", "Mapping"};
+  Field<unsigned> last{this, "last", 4294967295u, "last index (use if indices are sequential)", "Mapping"};
+  Field<double> radius{this, "radius", 1.0e-5,
+                       "search radius to find corresponding points in case no indices are given", "Mapping"};
+  Field<bool> handle_topology_change{this, "handleTopologyChange", true,
+                                     "Enable support of topological changes for indices", "Mapping"};
+  Field<bool> ignore_not_found{this, "ignoreNotFound", false,
+                               "True to ignore points that are not found in the input model, they will be treated "
+                               "as fixed points",
+                               "Mapping"};
+  Field<bool> resize_to_model{this, "resizeToModel", false,
+                              "True to resize the output MechanicalState to match the size of indices", "Mapping"};
+  Link<MeshTopologyBase> topology{this, "topology", "link to the topology container"};
+
+  void apply(int x) override;
+  void apply_j(int v, int role) override;
+  void apply_jt(int f, int role) override;
+  bool jacobian(std::vector<JacobianEntry>& out) override;
+
+ protected:
+  bool init_mapping() override;
+
+ private:
+  std::vector<unsigned> idx_;
+  int cw_ = 3, dw_ = 3;
+};
+
+}  // namespace sinew

@@ -1,0 +1,228 @@
+#include "mass/diagonal_mass.h"
+
+#include <limits>
+
+#include "core/node.h"
+#include "core/registry.h"
+#include "mass/mesh_geometry.h"
+
+namespace sinew {
+
+using meshgeo::MassElement;
+
+DiagonalMass::DiagonalMass() { file_mass.add_alias("fileMass"); }
+
+double DiagonalMass::compute_vertex_mass(double rho) {
+  MechanicalState& s = *mstate;
+  MechanicalState& g = *geometry_state;
+  const std::vector<double>& X = g.vec(compute_mass_on_rest.get() ? kRestPosition : kPosition);
+  const int w = g.info().coord_width;
+  std::vector<double> m(s.size(), 0.0);
+  double total = 0;
+  const MeshTopologyBase& t = *topology;
+  auto add = [&](auto const& elem, double mass) {
+    for (unsigned i : elem) {
+      m[i] += mass;
+      total += mass;
+    }
+  };
+  switch (static_cast<MassElement>(kind_)) {
+    case MassElement::edge:
+      for (const Edge& e : t.edges()) add(e, (rho * meshgeo::edge_length(X, w, e[0], e[1])) / 2.0);
+      break;
+    case MassElement::triangle:
+      for (const Triangle& e : t.triangles()) add(e, (rho * meshgeo::triangle_area(X, w, e[0], e[1], e[2])) / 3.0);
+      break;
+    case MassElement::quad:
+      for (const Quad& e : t.quads()) add(e, (rho * meshgeo::quad_area(X, w, e)) / 4.0);
+      break;
+    case MassElement::tetra:
+      for (const Tetra& e : t.tetrahedra()) add(e, (rho * meshgeo::tetra_volume(X, e[0], e[1], e[2], e[3])) / 4.0);
+      break;
+    case MassElement::hexa:
+      for (const Hexa& e : t.hexahedra()) add(e, (rho * meshgeo::hexa_volume(X, e)) / 8.0);
+      break;
+    case MassElement::none:
+      break;
+  }
+  vertex_mass.set(std::move(m));
+  return total;
+}
+
+void DiagonalMass::init() {
+  ForceField::init();
+  if (state() != ComponentState::valid) return;
+  MechanicalState& s = *mstate;
+  if (s.state_type() != StateType::vec1 && s.state_type() != StateType::vec2 && s.state_type() != StateType::vec3) {
+    msg_error(std::string("template ") + s.info().name + " is not supported (Vec1d, Vec2d, Vec3d only)");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if (!file_mass.get().empty()) {
+    msg_error("mass files (filename=) are not supported");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if (!topology) topology.set(node()->get_mesh_topology_link());
+  if (!topology) {
+    msg_error("no topology found");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if (!geometry_state) {
+    Node* tn = topology->node() ? topology->node() : node();
+    geometry_state.set(tn->get_mechanical_state());
+  }
+  if (!geometry_state || geometry_state->state_type() != s.state_type()) {
+    msg_error("no state compatible with the mass was found for the topology's geometry");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  const MassElement k = meshgeo::mass_element(*topology);
+  const int dim = s.info().spatial_dim;
+  if (k == MassElement::none) {
+    msg_error("the topology " + topology->describe() + " is empty");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  if ((k == MassElement::tetra || k == MassElement::hexa) && dim < 3) {
+    msg_error("volume elements need a 3D state");
+    state_ = ComponentState::invalid;
+    return;
+  }
+  kind_ = static_cast<int>(k);
+  const std::size_t need = meshgeo::max_index_plus_one(*topology, k);
+  if (need > s.size() || need > geometry_state->size()) {
+    msg_error("an element of " + topology->describe() + " uses point " + std::to_string(need - 1) +
+              " but the state has " + std::to_string(std::min(s.size(), geometry_state->size())) + " points");
+    state_ = ComponentState::invalid;
+    return;
+  }
+
+  // A short vertexMass list is padded with its last value.
+  {
+    const auto& vm = vertex_mass.value();
+    if (!vm.empty() && vm.size() < s.size()) {
+      std::vector<double> p = vm;
+      const double last = p.back();
+      p.resize(s.size(), last);
+      vertex_mass.set(std::move(p));
+    }
+  }
+
+  auto init_from_total = [&] {
+    if (total_mass.value() < 0) {
+      msg_warning("totalMass can not be negative: switching back to totalMass = 1");
+      total_mass.set(1.0);
+    }
+    const double total = total_mass.value();
+    const double sum = compute_vertex_mass(1.0);
+    const double rho = sum < std::numeric_limits<double>::epsilon() ? 1.0 : total / sum;
+    mass_density.set(rho);
+    std::vector<double>& m = vertex_mass.edit();
+    for (double& v : m) v *= rho;
+  };
+
+  const bool vm_set = vertex_mass.is_set(), md_set = mass_density.is_set(), tm_set = total_mass.is_set();
+  if (tm_set) {
+    if (vm_set || md_set) msg_warning("totalMass value overriding other mass information (vertexMass or massDensity)");
+    init_from_total();
+  } else if (md_set) {
+    if (vm_set) msg_warning("massDensity value overriding the value of the attribute vertexMass");
+    if (mass_density.value() < 0) {
+      msg_warning("negative massDensity: the totalMass path is used");
+      init_from_total();
+    } else {
+      total_mass.set(compute_vertex_mass(mass_density.value()));
+    }
+  } else if (vm_set) {
+    const std::vector<double> vm = vertex_mass.value();
+    bool ok = vm.size() == s.size();
+    for (double v : vm)
+      if (v < 0) ok = false;
+    if (!ok) {
+      msg_warning("vertexMass must have one non-negative value per point: the totalMass path is used");
+      init_from_total();
+    } else {
+      double sum_in = 0;
+      for (double v : vm) sum_in += v;
+      total_mass.set(sum_in);
+      const double sum = compute_vertex_mass(1.0);
+      mass_density.set(sum < std::numeric_limits<double>::epsilon() ? 1.0 : sum_in / sum);
+      vertex_mass.set(vm);
+    }
+  } else {
+    init_from_total();
+  }
+}
+
+void DiagonalMass::add_force(const MechParams& p) {
+  if (separate_gravity.value()) return;
+  MechanicalState& s = *mstate;
+  std::vector<double>& f = s.vec(p.f);
+  const Vec3 g = node()->gravity.value();
+  const int w = s.info().deriv_width;
+  const auto& m = vertex_mass.value();
+  for (std::size_t i = 0; i < m.size(); ++i)
+    for (int c = 0; c < w; ++c) f[i * w + c] += g[c] * m[i];
+}
+
+void DiagonalMass::add_mdx(const MechParams&, int res, int dx, double factor) {
+  MechanicalState& s = *mstate;
+  std::vector<double>& r = s.vec(res);
+  const std::vector<double>& d = s.vec(dx);
+  const int w = s.info().deriv_width;
+  const auto& m = vertex_mass.value();
+  const std::size_t n = std::min(m.size(), s.size());
+  if (factor == 1.0) {
+    for (std::size_t i = 0; i < n; ++i)
+      for (int c = 0; c < w; ++c) r[i * w + c] += d[i * w + c] * m[i];
+  } else {
+    for (std::size_t i = 0; i < n; ++i)
+      for (int c = 0; c < w; ++c) r[i * w + c] += (d[i * w + c] * m[i]) * factor;
+  }
+}
+
+void DiagonalMass::acc_from_f(const MechParams&, int a, int f) {
+  MechanicalState& s = *mstate;
+  std::vector<double>& av = s.vec(a);
+  const std::vector<double>& fv = s.vec(f);
+  const int w = s.info().deriv_width;
+  const auto& m = vertex_mass.value();
+  for (std::size_t i = 0; i < m.size(); ++i)
+    for (int c = 0; c < w; ++c) av[i * w + c] = fv[i * w + c] / m[i];
+}
+
+void DiagonalMass::add_gravity_to_v(int v, double dt) {
+  MechanicalState& s = *mstate;
+  std::vector<double>& vv = s.vec(v);
+  const Vec3 g = node()->gravity.value();
+  const int w = s.info().deriv_width;
+  double hg[3];
+  for (int c = 0; c < w; ++c) hg[c] = g[c] * dt;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    for (int c = 0; c < w; ++c) vv[i * w + c] += hg[c];
+}
+
+bool DiagonalMass::build_mass(MatrixSink& M) {
+  MechanicalState* s = mstate.get();
+  const int w = s->info().deriv_width;
+  const auto& m = vertex_mass.value();
+  for (std::size_t i = 0; i < m.size(); ++i)
+    for (int c = 0; c < w; ++c) M.add(s, i * w + c, s, i * w + c, m[i]);
+  return true;
+}
+
+void register_diagonal_mass(Registry& r) {
+  ComponentInfo info;
+  info.name = "DiagonalMass";
+  info.category = "Mass";
+  info.description = "lumped mass per vertex from the element lengths, areas or volumes of the topology";
+  info.templates = {"Vec1d", "Vec2d", "Vec3d"};
+  info.default_template = "Vec3d";
+  info.requirement = Requirement::state;
+  info.create = creator<DiagonalMass>();
+  r.add(std::move(info));
+}
+
+}  // namespace sinew

@@ -1,0 +1,166 @@
+// LinearVelocityProjectiveConstraint: imposes a velocity, interpolated
+// linearly between key times, on listed DoFs and integrates their positions
+// itself (spec/mechanics.md §4).
+#include <limits>
+
+#include "core/node.h"
+#include "core/registry.h"
+#include "core/roles.h"
+#include "math/rigid.h"
+
+namespace sinew {
+
+namespace {
+
+class LinearVelocityProjectiveConstraint final : public ProjectiveConstraint {
+ public:
+  explicit LinearVelocityProjectiveConstraint(StateType t) : type_(t) {}
+
+  Field<std::vector<unsigned>> indices{this, "indices", {}, "indices of the driven DoFs", "Constraint"};
+  Field<std::vector<double>> key_times{this, "keyTimes", {}, "times of the key velocities (ascending)",
+                                       "Constraint"};
+  Field<std::vector<double>> velocities{this, "velocities", {}, "one velocity (derivative) per key time",
+                                        "Constraint"};
+  Field<std::vector<unsigned>> coordinates{this, "coordinates", {},
+                                           "driven components (default: all)", "Constraint"};
+  Field<bool> continue_after_end{this, "continueAfterEnd", false, "keep the last velocity after the last key",
+                                 "Constraint"};
+  Link<MeshTopologyBase> topology{this, "topology", "topology the indices refer to"};
+
+  void init() override {
+    ProjectiveConstraint::init();
+    if (state() != ComponentState::valid) return;
+    w_ = mstate->info().deriv_width;
+    cw_ = mstate->info().coord_width;
+    if (velocities.get().size() != key_times.get().size() * static_cast<std::size_t>(w_)) {
+      msg_error("velocities must hold one " + std::to_string(w_) + "-component velocity per key time (" +
+                std::to_string(key_times.get().size()) + " key times)");
+      state_ = ComponentState::invalid;
+      return;
+    }
+    for (unsigned i : indices.get())
+      if (i >= mstate->size()) {
+        msg_error("index " + std::to_string(i) + " is out of range");
+        state_ = ComponentState::invalid;
+        return;
+      }
+    x0_.clear();
+    xp_.clear();
+    prev_v_.assign(w_, 0.0);
+    next_v_.assign(w_, 0.0);
+    finished_ = false;
+  }
+  void reset() override {
+    next_t_ = prev_t_ = 0.0;
+    prev_v_.assign(w_, 0.0);
+    next_v_.assign(w_, 0.0);
+    finished_ = false;
+  }
+
+  void project_response(int dx) override {
+    find_key_times();
+    if ((finished_ || continue_after_end.value()) && next_t_ != prev_t_) {
+      std::vector<double>& d = mstate->vec(dx);
+      for (unsigned i : indices.get())
+        for (int c = 0; c < w_; ++c) d[i * w_ + c] = 0.0;
+    }
+  }
+
+  void project_velocity(int vid, double) override {
+    find_key_times();
+    if (!((finished_ || continue_after_end.value()) && next_t_ != prev_t_)) return;
+    const double t = node()->time.value();
+    std::vector<double> v(w_);
+    for (int c = 0; c < w_; ++c) v[c] = (next_v_[c] - prev_v_[c]) * ((t - prev_t_) / (next_t_ - prev_t_)) + prev_v_[c];
+    std::vector<double>& d = mstate->vec(vid);
+    const auto& coords = coordinates.get();
+    for (unsigned i : indices.get()) {
+      if (coords.empty())
+        for (int c = 0; c < w_; ++c) d[i * w_ + c] = v[c];
+      else
+        for (unsigned c : coords)
+          if (static_cast<int>(c) < w_) d[i * w_ + c] = v[c];
+    }
+  }
+
+  void project_position(int xid, double) override {
+    std::vector<double>& x = mstate->vec(xid);
+    if (x0_.empty()) {  // remember the start positions at the first call
+      x0_.assign(x.size(), 0.0);
+      xp_.assign(x.size(), 0.0);
+      for (unsigned i : indices.get())
+        for (int c = 0; c < cw_; ++c) x0_[i * cw_ + c] = xp_[i * cw_ + c] = x[i * cw_ + c];
+    }
+    find_key_times();
+    if (!(finished_ || continue_after_end.value())) return;
+    const double t = node()->time.value(), dt_sim = node()->dt.value();
+    const double s = (t - prev_t_) / (next_t_ - prev_t_);
+    std::vector<double> m(w_);
+    for (int c = 0; c < w_; ++c) m[c] = (next_v_[c] - prev_v_[c]) * s + prev_v_[c];
+    const auto& coords = coordinates.get();
+    for (unsigned i : indices.get()) {
+      double* xi = &x[i * cw_];
+      double* pi = &xp_[i * cw_];
+      if (coords.empty()) {
+        if (type_ == StateType::rigid3) rigid3_add_deriv(pi, m.data(), dt_sim, xi);
+        else
+          for (int c = 0; c < w_; ++c) xi[c] = pi[c] + m[c] * dt_sim;
+        for (int c = 0; c < cw_; ++c) pi[c] = xi[c];
+      } else {
+        // SOFA indexes coordinate and velocity components with the same number.
+        for (unsigned c : coords) {
+          if (static_cast<int>(c) >= w_ || static_cast<int>(c) >= cw_) continue;
+          xi[c] = pi[c] + m[c] * dt_sim;
+          for (int k = 0; k < cw_; ++k) pi[k] = xi[k];
+        }
+      }
+    }
+  }
+
+ private:
+  // Keys around the current time; `finished_` means a next key was found.
+  void find_key_times() {
+    const double t = node()->time.value();
+    finished_ = false;
+    const auto& kt = key_times.get();
+    const auto& kv = velocities.get();
+    if (kt.empty() || t < kt.front() || t > kt.back()) return;
+    next_t_ = prev_t_ = kt.front();
+    for (std::size_t k = 0; k < kt.size() && !finished_; ++k) {
+      if (kt[k] <= t) {
+        prev_t_ = kt[k];
+        prev_v_.assign(kv.begin() + k * w_, kv.begin() + (k + 1) * w_);
+      } else {
+        next_t_ = kt[k];
+        next_v_.assign(kv.begin() + k * w_, kv.begin() + (k + 1) * w_);
+        finished_ = true;
+      }
+    }
+  }
+
+  StateType type_;
+  int w_ = 3, cw_ = 3;
+  std::vector<double> x0_, xp_, prev_v_, next_v_;
+  double prev_t_ = 0, next_t_ = 0;
+  bool finished_ = false;
+};
+
+}  // namespace
+
+void register_linear_velocity_projective_constraint(Registry& r) {
+  ComponentInfo info;
+  info.name = "LinearVelocityProjectiveConstraint";
+  info.category = "Constraint/Projective";
+  info.description = "imposes a velocity interpolated between key times";
+  info.templates = {"Vec1d", "Vec2d", "Vec3d", "Vec6d", "Rigid2d", "Rigid3d"};
+  info.default_template = "Vec3d";
+  info.requirement = Requirement::state;
+  info.create = [](const std::string& t) -> std::unique_ptr<Component> {
+    StateType st;
+    if (!state_type_from_name(t, st)) return nullptr;
+    return std::make_unique<LinearVelocityProjectiveConstraint>(st);
+  };
+  r.add(std::move(info));
+}
+
+}  // namespace sinew

@@ -1,0 +1,45 @@
+// AssembledCGLinearSolver: CGLinearSolver on an assembled matrix (templates
+// FullMatrix, SparseMatrix, CompressedRowSparseMatrixd and the
+// CompressedRowSparseMatrixMat{N}x{N}d block variants; spec/solvers.md §3.1).
+// Same XML class as the matrix-free CGLinearSolver (GraphScattered), which
+// creates this class for the assembled templates. Same stopping rules:
+// ‖r‖/‖b‖ ≤ tolerance, |pᵀAp| ≤ threshold, first solve never stops at
+// iteration 1; vector dot products sum scalars sequentially.
+#pragma once
+
+#include <memory>
+
+#include "solver/matrix_linear_solver.h"
+
+namespace sinew {
+
+class AssembledCGLinearSolver final : public MatrixLinearSolver {
+ public:
+  Field<unsigned> iterations{this, "iterations", 25, "Maximum number of iterations of the Conjugate Gradient solution",
+                             "Solver"};
+  Field<double> tolerance{this, "tolerance", 1e-5, "Desired accuracy of the Conjugate Gradient solution evaluating: "
+                          "|r|²/|b|² (ratio of current residual norm over initial residual norm)", "Solver"};
+  Field<double> threshold{this, "threshold", 1e-5,
+                          "Minimum value of the denominator (pT A p)^ in the conjugate Gradient solution", "Solver"};
+  Field<bool> warm_start{this, "warmStart", false,
+                         "Use previous solution as initial solution, which may improve the initial guess if your "
+                         "system is evolving smoothly", "Solver"};
+
+  void init() override;
+  int last_iterations() const { return last_iterations_; }
+
+ protected:
+  void invert(const BlockCsrMatrix&) override {}
+  void solve(const BlockCsrMatrix& A, Eigen::VectorXd& x, const Eigen::VectorXd& b) override;
+
+ private:
+  Eigen::VectorXd r_, p_, q_;
+  long time_step_count_ = 0;
+  int last_iterations_ = 0;
+};
+
+// Used by CGLinearSolver's registration for the assembled templates.
+std::unique_ptr<Component> create_assembled_cg_linear_solver();
+const std::vector<std::string>& assembled_cg_templates();
+
+}  // namespace sinew

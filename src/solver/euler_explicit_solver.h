@@ -1,0 +1,29 @@
+// EulerExplicitSolver: forward Euler, symplectic by default (spec/solvers.md §1.2).
+//   a = M⁻¹ f (diagonal masses) or solve M·a = P·f with a linear solver;
+//   symplectic: v += h·a, x += h·v;  otherwise: x += h·v (old v), v += h·a.
+#pragma once
+
+#include <memory>
+
+#include "core/mechanical_ops.h"
+#include "core/roles.h"
+
+namespace sinew {
+
+class EulerExplicitSolver final : public OdeSolver {
+ public:
+  Field<bool> symplectic{this, "symplectic", true, "update velocities first, then positions with the new velocities",
+                         "Solver"};
+  Field<bool> thread_safe_visitor{this, "threadSafeVisitor", false, "no effect (SOFA allocation detail)", "Solver"};
+  Link<LinearSolver> linear_solver{this, "linearSolver",
+                                   "linear solver for non-diagonal masses (default: first one up the graph)"};
+
+  void init() override;
+  void solve(double dt, int x_result, int v_result) override;
+
+ private:
+  std::unique_ptr<MechanicalOps> ops_;
+  int acc_ = -1;
+};
+
+}  // namespace sinew

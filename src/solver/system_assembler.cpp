@@ -1,0 +1,266 @@
+#include "solver/system_assembler.h"
+
+#include <algorithm>
+#include <map>
+
+#include "core/component.h"
+
+namespace sinew {
+
+void SystemAssembler::configure(int block_size, BlockCsrMatrix::Structure structure) {
+  bs_ = block_size;
+  structure_ = structure;
+  n_ = 0;
+  layout_.clear();
+  pattern_valid_ = false;
+}
+
+bool SystemAssembler::update_layout(MechanicalOps& ops) {
+  bool changed = false;
+  std::size_t offset = 0, i = 0;
+  const auto& states = ops.independent_states();
+  if (states.size() != layout_.size()) {
+    layout_.resize(states.size());
+    changed = true;
+  }
+  for (MechanicalState* s : states) {
+    const std::size_t size = s->size() * static_cast<std::size_t>(s->info().deriv_width);
+    StateBlock& b = layout_[i++];
+    if (b.state != s || b.offset != offset || b.size != size) changed = true;
+    b = {s, offset, size};
+    offset += size;
+  }
+  if (offset != n_) changed = true;
+  n_ = offset;
+  if (changed || !matrix_.has_pattern()) {
+    matrix_.reset(n_, bs_, structure_);
+    pattern_valid_ = false;
+  }
+  return changed;
+}
+
+const SystemAssembler::StateBlock* SystemAssembler::find_block(const MechanicalState* s) const {
+  for (const StateBlock& b : layout_)
+    if (b.state == s) return &b;
+  return nullptr;
+}
+
+MatrixSink::Binding SystemAssembler::bind(const MechanicalState* rs, const MechanicalState* cs) {
+  const StateBlock* r = find_block(rs);
+  const StateBlock* c = find_block(cs);
+  if (r && c) return {0, static_cast<std::uint32_t>(r->offset), static_cast<std::uint32_t>(c->offset)};
+  // At least one mapped state: a matrix per state pair, local indices.
+  const auto key = std::make_pair(rs, cs);
+  auto it = std::find(mapped_pairs_.begin(), mapped_pairs_.end(), key);
+  if (it == mapped_pairs_.end()) {
+    mapped_pairs_.push_back(key);
+    it = mapped_pairs_.end() - 1;
+  }
+  return {1 + static_cast<int>(it - mapped_pairs_.begin()), 0, 0};
+}
+
+void SystemAssembler::report_once(const Component& owner, const void* who, const std::string& text) {
+  if (reported_.insert(who).second) owner.msg_error(text);
+}
+
+void SystemAssembler::assemble(MechanicalOps& ops, double m, double b, double k, const Options& o,
+                               const Component& owner) {
+  update_layout(ops);
+  sink_.begin(this);
+  mapped_pairs_.clear();
+
+  const auto& ffs = ops.force_fields();
+  if (o.stiffness)
+    for (ForceField* ff : ffs) {
+      const double f = k + b * ff->rayleigh_stiffness.value();
+      if (f == 0.0) continue;
+      sink_.set_factor(f);
+      if (!ff->build_stiffness(sink_))
+        report_once(owner, ff, ff->describe() + " cannot assemble its stiffness matrix; it is missing from the system");
+    }
+  if (o.mass)
+    for (ForceField* ff : ffs)
+      if (auto* mass = dynamic_cast<Mass*>(ff)) {
+        const double f = m - b * mass->rayleigh_mass.value();
+        if (f == 0.0) continue;
+        sink_.set_factor(f);
+        if (!mass->build_mass(sink_))
+          report_once(owner, mass, mass->describe() + " cannot assemble its mass matrix; it is missing from the system");
+      }
+  if (o.damping && b != 0.0)
+    for (ForceField* ff : ffs) {
+      sink_.set_factor(b);
+      if (!ff->build_damping(sink_))
+        report_once(owner, ff, ff->describe() + " cannot assemble its damping matrix; it is missing from the system");
+    }
+  if (o.geometric && k != 0.0)
+    for (Mapping* mp : ops.mappings()) {
+      sink_.set_factor(k);
+      if (!mp->build_geometric_stiffness(sink_))
+        report_once(owner, mp, mp->describe() + " cannot assemble its geometric stiffness; it is missing from the system");
+    }
+  if (o.mapped && !mapped_pairs_.empty()) assemble_mapped(ops, owner);
+
+  scatter_triplets();
+
+  if (o.projective)
+    for (ProjectiveConstraint* c : ops.projective_constraints()) {
+      const StateBlock* blk = find_block(c->mstate.get());
+      if (!blk) continue;  // constraints on mapped states have no meaningful global position
+      dirichlet_.clear();
+      if (!c->dirichlet_indices(dirichlet_)) {
+        // As SOFA's default applyConstraint(ZeroDirichletCondition): nothing applied, one warning.
+        if (reported_.insert(c).second)
+          owner.msg_warning(c->describe() + " provides no Dirichlet indices; it is not applied on the assembled matrix");
+        continue;
+      }
+      for (std::size_t i : dirichlet_)
+        if (i < blk->size) matrix_.clear_row_col_set_diag(blk->offset + i, 1.0);
+    }
+}
+
+void SystemAssembler::scatter_triplets() {
+  const auto& t = sink_.triplets();
+  auto key_of = [](const MatrixSink::Triplet& e) { return (static_cast<std::uint64_t>(e.row) << 32) | e.col; };
+  auto& values = matrix_.values();
+  if (pattern_valid_) {
+    matrix_.set_zero();
+    std::size_t j = 0;
+    bool ok = true;
+    for (const auto& e : t) {
+      if (e.target != 0) continue;
+      if (j >= keys_.size() || keys_[j] != key_of(e)) {
+        ok = false;
+        break;
+      }
+      const std::int64_t s = slots_[j++];
+      if (s >= 0) values[s] += e.value;
+    }
+    if (ok && j == keys_.size()) return;
+  }
+  // First assembly, or the insertion sequence changed: new pattern.
+  keys_.clear();
+  for (const auto& e : t)
+    if (e.target == 0 && e.row < n_ && e.col < n_) keys_.push_back(key_of(e));
+  matrix_.reset(n_, bs_, structure_);
+  matrix_.build_pattern(keys_);
+  keys_.clear();
+  slots_.clear();
+  for (const auto& e : t) {
+    if (e.target != 0) continue;
+    keys_.push_back(key_of(e));
+    slots_.push_back(e.row < n_ && e.col < n_ ? matrix_.slot(e.row, e.col) : -1);
+  }
+  auto& vals = matrix_.values();
+  std::size_t j = 0;
+  for (const auto& e : t) {
+    if (e.target != 0) continue;
+    const std::int64_t s = slots_[j++];
+    if (s >= 0) vals[s] += e.value;
+  }
+  pattern_valid_ = true;
+  ++pattern_builds_;
+}
+
+bool SystemAssembler::chain(MechanicalOps& ops, const MechanicalState* s, std::vector<TopJacobian>& out,
+                            const Component& owner, int depth) {
+  out.clear();
+  if (!s) return false;
+  const std::size_t ns = s->size() * static_cast<std::size_t>(s->info().deriv_width);
+  if (const StateBlock* blk = find_block(s)) {
+    RowSparse I(static_cast<int>(ns), static_cast<int>(ns));
+    I.setIdentity();
+    out.push_back({s, std::move(I)});
+    return true;
+  }
+  if (depth > 64) return false;
+  Mapping* mapping = nullptr;
+  for (Mapping* mp : ops.mappings())
+    if (mp->output() == s) mapping = mp;
+  if (!mapping) return false;
+  std::vector<JacobianEntry> entries;
+  if (!mapping->jacobian(entries)) {
+    report_once(owner, mapping,
+                mapping->describe() + " provides no Jacobian; contributions on its output are not assembled");
+    return false;
+  }
+  const auto inputs = mapping->inputs();
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    const MechanicalState* in = inputs[k];
+    if (!in) continue;
+    const std::size_t nin = in->size() * static_cast<std::size_t>(in->info().deriv_width);
+    std::vector<Eigen::Triplet<double, int>> tr;
+    for (const JacobianEntry& e : entries)
+      if (e.input == k && e.row < ns && e.col < nin)
+        tr.emplace_back(static_cast<int>(e.row), static_cast<int>(e.col), e.value);
+    RowSparse Jk(static_cast<int>(ns), static_cast<int>(nin));
+    Jk.setFromTriplets(tr.begin(), tr.end());
+    std::vector<TopJacobian> up;
+    if (!chain(ops, in, up, owner, depth + 1)) return false;
+    for (TopJacobian& t : up) {
+      RowSparse J = Jk * t.J;
+      auto it = std::find_if(out.begin(), out.end(), [&](const TopJacobian& o) { return o.top == t.top; });
+      if (it == out.end()) out.push_back({t.top, std::move(J)});
+      else it->J += J;
+    }
+  }
+  return true;
+}
+
+void SystemAssembler::assemble_mapped(MechanicalOps& ops, const Component& owner) {
+  const auto& t = sink_.triplets();
+  const std::size_t count = t.size();  // entries appended below are not re-read
+  for (std::size_t p = 0; p < mapped_pairs_.size(); ++p) {
+    const int target = 1 + static_cast<int>(p);
+    const MechanicalState* a = mapped_pairs_[p].first;
+    const MechanicalState* b = mapped_pairs_[p].second;
+    if (!a || !b) continue;
+    const int na = static_cast<int>(a->size() * a->info().deriv_width);
+    const int nb = static_cast<int>(b->size() * b->info().deriv_width);
+    std::vector<Eigen::Triplet<double, int>> tr;
+    for (std::size_t i = 0; i < count; ++i) {
+      const auto& e = sink_.triplets()[i];
+      if (e.target == target && static_cast<int>(e.row) < na && static_cast<int>(e.col) < nb)
+        tr.emplace_back(static_cast<int>(e.row), static_cast<int>(e.col), e.value);
+    }
+    RowSparse K(na, nb);
+    K.setFromTriplets(tr.begin(), tr.end());  // duplicates summed
+    std::vector<TopJacobian> ja, jb;
+    if (!chain(ops, a, ja, owner) || !chain(ops, b, jb, owner)) continue;
+    for (const TopJacobian& A : ja) {
+      const StateBlock* oa = find_block(A.top);
+      for (const TopJacobian& B : jb) {
+        const StateBlock* ob = find_block(B.top);
+        if (!oa || !ob) continue;
+        const RowSparse KJ = K * B.J;
+        const RowSparse JtKJ = RowSparse(A.J.transpose()) * KJ;
+        for (int r = 0; r < JtKJ.outerSize(); ++r)
+          for (RowSparse::InnerIterator it(JtKJ, r); it; ++it)
+            sink_.add_raw(0, static_cast<std::uint32_t>(oa->offset + it.row()),
+                          static_cast<std::uint32_t>(ob->offset + it.col()), it.value());
+      }
+    }
+  }
+  (void)t;
+}
+
+void SystemAssembler::gather(int id, Eigen::VectorXd& out) const {
+  if (static_cast<std::size_t>(out.size()) != n_) out.setZero(static_cast<Eigen::Index>(n_));
+  for (const StateBlock& b : layout_) {
+    const auto& v = b.state->vec(id);
+    const std::size_t m = std::min(v.size(), b.size);
+    for (std::size_t i = 0; i < m; ++i) out[static_cast<Eigen::Index>(b.offset + i)] = v[i];
+    for (std::size_t i = m; i < b.size; ++i) out[static_cast<Eigen::Index>(b.offset + i)] = 0.0;
+  }
+}
+
+void SystemAssembler::scatter(const Eigen::VectorXd& in, int id) const {
+  for (const StateBlock& b : layout_) {
+    auto& v = b.state->vec(id);
+    if (v.size() < b.size) v.resize(b.size, 0.0);
+    for (std::size_t i = 0; i < b.size && b.offset + i < static_cast<std::size_t>(in.size()); ++i)
+      v[i] = in[static_cast<Eigen::Index>(b.offset + i)];
+  }
+}
+
+}  // namespace sinew

@@ -1,0 +1,281 @@
+// Assembled linear systems and direct solvers (spec/solvers.md §2–§3):
+// every matrix solver against a dense reference solve on random SPD systems,
+// block storage against dense products, ordering effects on fill-in, and
+// error reporting on singular systems.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <random>
+
+#include "core/node.h"
+#include "core/registry.h"
+#include "math/block_csr.h"
+#include "solver/amd_ordering_method.h"
+#include "solver/assembled_cg_linear_solver.h"
+#include "solver/colamd_ordering_method.h"
+#include "solver/eigen_simplicial_ldlt.h"
+#include "solver/eigen_simplicial_llt.h"
+#include "solver/eigen_sparse_lu.h"
+#include "solver/eigen_sparse_qr.h"
+#include "solver/matrix_linear_system.h"
+#include "solver/metis_ordering_method.h"
+#include "solver/natural_ordering_method.h"
+#include "solver/sparse_ldl_solver.h"
+#include "test_scene.h"
+
+using namespace sinew;
+
+namespace {
+
+// Random sparse SPD matrix of size n (block size bs): a few random couplings
+// between scalar rows, made diagonally dominant.
+Eigen::MatrixXd random_spd(int n, unsigned seed, double density = 0.15) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), pick(0.0, 1.0);
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < i; ++j)
+      if (pick(rng) < density) A(i, j) = A(j, i) = u(rng);
+  for (int i = 0; i < n; ++i) A(i, i) = A.row(i).cwiseAbs().sum() + 0.5 + pick(rng);
+  return A;
+}
+
+// Fills a BlockCsrMatrix with the non-zero entries of a dense matrix.
+void fill(BlockCsrMatrix& M, const Eigen::MatrixXd& A, int bs) {
+  const std::size_t n = static_cast<std::size_t>(A.rows());
+  M.reset(n, bs);
+  std::vector<std::uint64_t> keys;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      if (A(i, j) != 0.0) keys.push_back((static_cast<std::uint64_t>(i) << 32) | j);
+  M.build_pattern(keys);
+  for (std::uint64_t k : keys) M.values()[M.slot(k >> 32, k & 0xffffffffu)] += A(k >> 32, k & 0xffffffffu);
+}
+
+// A solver driven without a scene: its own system, filled by hand.
+struct Standalone {
+  std::unique_ptr<MatrixLinearSystem> system = std::make_unique<MatrixLinearSystem>();
+  std::unique_ptr<OrderingMethod> ordering;
+  std::unique_ptr<MatrixLinearSolver> solver;
+
+  Standalone(std::unique_ptr<MatrixLinearSolver> s, std::unique_ptr<OrderingMethod> o) : ordering(std::move(o)),
+                                                                                        solver(std::move(s)) {
+    solver->linear_system.set(system.get());
+    if (auto* ldl = dynamic_cast<SparseLDLSolver*>(solver.get())) ldl->ordering_method.set(ordering.get());
+    if (auto* e = dynamic_cast<EigenDirectSolver*>(solver.get())) e->ordering_method.set(ordering.get());
+    solver->init();
+  }
+  Eigen::VectorXd solve(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, int bs) {
+    fill(system->matrix(), A, bs);
+    system->factorization_invalidation.set(true);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+    solver->solve_global(x, b);
+    return x;
+  }
+};
+
+std::unique_ptr<OrderingMethod> make_ordering(const std::string& name) {
+  if (name == "Natural") return std::make_unique<NaturalOrderingMethod>();
+  if (name == "AMD") return std::make_unique<AMDOrderingMethod>();
+  if (name == "COLAMD") return std::make_unique<COLAMDOrderingMethod>();
+  return std::make_unique<MetisOrderingMethod>();
+}
+
+std::unique_ptr<MatrixLinearSolver> make_solver(const std::string& name) {
+  if (name == "SparseLDLSolver") return std::make_unique<SparseLDLSolver>();
+  if (name == "EigenSimplicialLDLT") return std::make_unique<EigenSimplicialLDLT>();
+  if (name == "EigenSimplicialLLT") return std::make_unique<EigenSimplicialLLT>();
+  if (name == "EigenSparseLU") return std::make_unique<EigenSparseLU>();
+  if (name == "EigenSparseQR") return std::make_unique<EigenSparseQR>();
+  auto cg = std::make_unique<AssembledCGLinearSolver>();
+  cg->iterations.set(1000);
+  cg->tolerance.set(1e-14);
+  cg->threshold.set(1e-300);
+  return cg;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- BlockCsrMatrix
+
+TEST(LinsysBlockCsr, ProductMatchesDenseForScalarAndBlockStorage) {
+  for (int bs : {1, 3}) {
+    const Eigen::MatrixXd A = random_spd(24, 7u + bs);
+    BlockCsrMatrix M;
+    fill(M, A, bs);
+    EXPECT_EQ(M.block_size(), bs);
+    EXPECT_TRUE(M.to_dense().isApprox(A, 0.0));
+    Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(24, -1.0, 2.0), y(24);
+    M.mult(x.data(), y.data());
+    EXPECT_LT((y - A * x).norm(), 1e-12 * (A * x).norm());
+  }
+}
+
+TEST(LinsysBlockCsr, DirichletClearsRowAndColumnAndSetsDiagonal) {
+  for (int bs : {1, 3}) {
+    Eigen::MatrixXd A = random_spd(12, 3u);
+    BlockCsrMatrix M;
+    fill(M, A, bs);
+    M.clear_row_col_set_diag(4, 1.0);
+    A.row(4).setZero();
+    A.col(4).setZero();
+    A(4, 4) = 1.0;
+    EXPECT_TRUE(M.to_dense().isApprox(A, 0.0)) << "bs=" << bs;
+    // Zeros created by the clearing are not in the filtered copy.
+    std::vector<int> rb, ci;
+    std::vector<double> v;
+    M.to_filtered_csr(rb, ci, v);
+    EXPECT_EQ(rb[5] - rb[4], 1);
+    for (double x : v) EXPECT_NE(x, 0.0);
+  }
+}
+
+TEST(LinsysBlockCsr, StructureFiltersDropOffDiagonalEntries) {
+  const Eigen::MatrixXd A = random_spd(9, 11u, 0.9);
+  BlockCsrMatrix D;
+  D.reset(9, 1, BlockCsrMatrix::Structure::diagonal);
+  std::vector<std::uint64_t> keys;
+  for (std::uint64_t i = 0; i < 9; ++i)
+    for (std::uint64_t j = 0; j < 9; ++j) keys.push_back((i << 32) | j);
+  D.build_pattern(keys);
+  EXPECT_EQ(D.nnz_blocks(), 9u);
+  EXPECT_EQ(D.slot(0, 1), -1);
+  BlockCsrMatrix B;
+  B.reset(9, 3, BlockCsrMatrix::Structure::block_diagonal);
+  B.build_pattern(keys);
+  EXPECT_EQ(B.nnz_blocks(), 3u);
+  EXPECT_GE(B.slot(1, 2), 0);
+  EXPECT_EQ(B.slot(2, 3), -1);
+}
+
+// ---------------------------------------------------------------- solvers vs dense reference
+
+class LinsysSolverAccuracy : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(LinsysSolverAccuracy, MatchesDenseSolveOnRandomSpdSystems) {
+  const auto& [solver_name, ordering_name] = GetParam();
+  for (int bs : {1, 3})
+    for (int n : {3, 12, 48, 150}) {
+      const Eigen::MatrixXd A = random_spd(n, static_cast<unsigned>(n * 31 + bs));
+      Eigen::VectorXd b(n);
+      std::mt19937 rng(static_cast<unsigned>(n));
+      std::normal_distribution<double> g;
+      for (int i = 0; i < n; ++i) b[i] = g(rng);
+      const Eigen::VectorXd ref = A.ldlt().solve(b);
+      Standalone s(make_solver(solver_name), make_ordering(ordering_name));
+      const Eigen::VectorXd x = s.solve(A, b, bs);
+      ASSERT_EQ(x.size(), n);
+      EXPECT_LT((x - ref).norm(), 1e-10 * ref.norm()) << solver_name << "/" << ordering_name << " n=" << n
+                                                       << " bs=" << bs;
+      // A second factorization with different values and the same pattern (symbolic part reused).
+      const Eigen::MatrixXd A2 = A * 2.0;
+      const Eigen::VectorXd x2 = s.solve(A2, b, bs);
+      EXPECT_LT((x2 - ref * 0.5).norm(), 1e-10 * ref.norm());
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    All, LinsysSolverAccuracy,
+    ::testing::Values(std::make_tuple("SparseLDLSolver", "Natural"), std::make_tuple("SparseLDLSolver", "AMD"),
+                      std::make_tuple("SparseLDLSolver", "COLAMD"), std::make_tuple("SparseLDLSolver", "Metis"),
+                      std::make_tuple("EigenSimplicialLDLT", "Natural"), std::make_tuple("EigenSimplicialLDLT", "AMD"),
+                      std::make_tuple("EigenSimplicialLLT", "Natural"), std::make_tuple("EigenSimplicialLLT", "Metis"),
+                      std::make_tuple("EigenSparseLU", "Natural"), std::make_tuple("EigenSparseLU", "COLAMD"),
+                      std::make_tuple("EigenSparseQR", "Natural"), std::make_tuple("EigenSparseQR", "AMD"),
+                      std::make_tuple("CGLinearSolver", "Natural")),
+    [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
+
+TEST(LinsysSparseLDL, SymbolicFactorizationRecomputedOnlyWhenPatternChanges) {
+  Standalone s(make_solver("SparseLDLSolver"), make_ordering("AMD"));
+  auto* ldl = static_cast<SparseLDLSolver*>(s.solver.get());
+  Eigen::MatrixXd A = random_spd(30, 5u);
+  const Eigen::VectorXd b = Eigen::VectorXd::Ones(30);
+  s.solve(A, b, 1);
+  s.solve(A * 3.0, b, 1);
+  EXPECT_EQ(ldl->symbolic_count(), 1);
+  A(0, 29) = A(29, 0) = 0.25;  // new entries: new pattern
+  A(0, 0) += 1.0;
+  const Eigen::VectorXd x = s.solve(A, b, 1);
+  EXPECT_EQ(ldl->symbolic_count(), 2);
+  EXPECT_LT((x - A.ldlt().solve(b)).norm(), 1e-10 * x.norm());
+}
+
+// ---------------------------------------------------------------- ordering and fill-in
+
+TEST(LinsysOrdering, FillReducingOrderingsBeatNaturalOnAShuffledGrid) {
+  // 2D 5-point Laplacian on a 20×20 grid, unknowns randomly renumbered.
+  const int g = 20, n = g * g;
+  std::vector<int> relabel(n);
+  for (int i = 0; i < n; ++i) relabel[i] = i;
+  std::shuffle(relabel.begin(), relabel.end(), std::mt19937(42));
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 0; i < g; ++i)
+    for (int j = 0; j < g; ++j) {
+      const int p = relabel[i * g + j];
+      A(p, p) = 4.5;
+      if (i + 1 < g) A(p, relabel[(i + 1) * g + j]) = A(relabel[(i + 1) * g + j], p) = -1;
+      if (j + 1 < g) A(p, relabel[i * g + j + 1]) = A(relabel[i * g + j + 1], p) = -1;
+    }
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  const Eigen::VectorXd ref = A.ldlt().solve(b);
+  std::map<std::string, int> fill_in;
+  for (const char* o : {"Natural", "AMD", "COLAMD", "Metis"}) {
+    Standalone s(make_solver("SparseLDLSolver"), make_ordering(o));
+    const Eigen::VectorXd x = s.solve(A, b, 1);
+    EXPECT_LT((x - ref).norm(), 1e-10 * ref.norm()) << o;
+    fill_in[o] = static_cast<SparseLDLSolver*>(s.solver.get())->l_nnz.value();
+  }
+  EXPECT_LT(fill_in["AMD"] * 3, fill_in["Natural"]);
+  EXPECT_LT(fill_in["Metis"] * 3, fill_in["Natural"]);
+  EXPECT_LT(fill_in["COLAMD"], fill_in["Natural"]);
+}
+
+TEST(LinsysOrdering, NaturalIsIdentityAndOthersArePermutations) {
+  const Eigen::MatrixXd A = random_spd(40, 9u);
+  BlockCsrMatrix M;
+  fill(M, A, 1);
+  std::vector<int> rb, ci;
+  std::vector<double> v;
+  M.to_filtered_csr(rb, ci, v);
+  for (const char* o : {"Natural", "AMD", "COLAMD", "Metis"}) {
+    std::vector<int> perm;
+    make_ordering(o)->compute_permutation(40, rb.data(), ci.data(), perm);
+    ASSERT_EQ(perm.size(), 40u);
+    std::vector<int> sorted = perm;
+    std::sort(sorted.begin(), sorted.end());
+    for (int i = 0; i < 40; ++i) EXPECT_EQ(sorted[i], i) << o;
+    if (std::string(o) == "Natural")
+      for (int i = 0; i < 40; ++i) EXPECT_EQ(perm[i], i);
+  }
+}
+
+// ---------------------------------------------------------------- failures are reported
+
+TEST(LinsysSingular, ZeroPivotIsAnErrorAndTheSolutionStaysFinite) {
+  Eigen::MatrixXd A = random_spd(6, 1u);
+  A.row(2).setZero();
+  A.col(2).setZero();
+  const Eigen::VectorXd b = Eigen::VectorXd::Ones(6);
+  for (const char* name : {"SparseLDLSolver", "EigenSimplicialLLT", "EigenSimplicialLDLT"}) {
+    Node root("root");
+    Standalone s(make_solver(name), make_ordering("Natural"));
+    s.solver->set_node(&root);
+    s.solver->set_type(name, "CompressedRowSparseMatrixd");
+    const int before = root.diagnostics().error_count();
+    const Eigen::VectorXd x = s.solve(A, b, 1);
+    EXPECT_GT(root.diagnostics().error_count(), before) << name;
+    EXPECT_TRUE(x.allFinite()) << name;
+  }
+}
+
+TEST(LinsysSingular, IndefiniteMatrixIsRejectedByCholesky) {
+  Eigen::MatrixXd A = random_spd(8, 2u);
+  A(3, 3) = -A(3, 3);
+  Node root("root");
+  Standalone s(make_solver("EigenSimplicialLLT"), make_ordering("AMD"));
+  s.solver->set_node(&root);
+  const Eigen::VectorXd x = s.solve(A, Eigen::VectorXd::Ones(8), 1);
+  EXPECT_GT(root.diagnostics().error_count(), 0);
+  EXPECT_TRUE(x.allFinite());
+  EXPECT_EQ(x.norm(), 0.0);
+}

@@ -1,0 +1,145 @@
+// Topology containers (spec/mechanics.md §5.1, §5.6): derived element lists
+// and neighbourhood queries on small meshes, checked against hand-derived lists.
+#include "topology/edge_set_topology_container.h"
+#include "topology/hexahedron_set_topology_container.h"
+#include "topology/mesh_topology.h"
+#include "topology/point_set_topology_container.h"
+#include "topology/quad_set_topology_container.h"
+#include "topology/tetrahedron_set_topology_container.h"
+#include "topology/triangle_set_topology_container.h"
+#include "topology/triangle_set_topology_modifier.h"
+
+#include <gtest/gtest.h>
+
+#include "test_scene.h"
+
+using namespace sinew;
+using sinew::test::get;
+using sinew::test::load;
+
+namespace {
+
+using IdxLists = std::vector<std::vector<unsigned>>;
+
+template <class T>
+T& find(scene::LoadedScene& s, std::string_view name) {
+  T* t = get<T>(*s.root, name);
+  if (!t) throw std::runtime_error("component not found: " + std::string(name));
+  return *t;
+}
+
+// Two tetrahedra sharing the face {1,2,3}.
+const char* kTwoTets = "0 1 2 3  1 2 3 4";
+
+}  // namespace
+
+TEST(TopoMeshTopology, EdgesAndTrianglesFromTetrahedra) {
+  auto s = load(std::string(R"(<Node><MeshTopology name="t" tetrahedra=")") + kTwoTets + R"("/></Node>)");
+  auto& t = find<MeshTopology>(s, "t");
+  const std::vector<Edge> edges{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}, {1, 4}, {2, 4}, {3, 4}};
+  EXPECT_EQ(t.edges(), edges);
+  // Faces (1,2,3),(0,3,2),(1,3,0),(0,2,1) rotated smallest-first; the shared face (1,3,2) of the
+  // second tetrahedron is the reverse of (1,2,3) and is not added again.
+  const std::vector<Triangle> tris{{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}, {2, 3, 4}, {1, 4, 3}, {1, 2, 4}};
+  EXPECT_EQ(t.triangles(), tris);
+  EXPECT_TRUE(t.quads().empty());
+  EXPECT_EQ(t.nb_points(), 5u);
+
+  const auto& tat = t.tetrahedra_around_triangle();
+  ASSERT_EQ(tat.size(), 7u);
+  EXPECT_EQ(tat[0], (std::vector<unsigned>{0, 1}));
+  for (std::size_t i = 1; i < 7; ++i) EXPECT_EQ(tat[i].size(), 1u) << i;
+  const auto& tit = t.triangles_in_tetrahedron();
+  ASSERT_EQ(tit.size(), 2u);
+  EXPECT_EQ(tit[0], (std::array<unsigned, 4>{0, 1, 2, 3}));
+  // Second tet (1,2,3,4): faces opposite each vertex: (2,3,4),(3,4,1),(4,1,2),(1,2,3).
+  EXPECT_EQ(tit[1], (std::array<unsigned, 4>{4, 5, 6, 0}));
+  const auto& eit = t.edges_in_tetrahedron();
+  EXPECT_EQ(eit[1], (std::array<unsigned, 6>{3, 4, 6, 5, 7, 8}));
+  EXPECT_EQ(t.tetrahedra_around_edge()[5], (std::vector<unsigned>{0, 1}));  // edge (2,3)
+  EXPECT_EQ(t.edges_around_vertex()[4], (std::vector<unsigned>{6, 7, 8}));
+  EXPECT_EQ(t.edge_index(3, 2), 5u);
+  EXPECT_EQ(t.edge_index(0, 4), MeshTopologyBase::kInvalidIndex);
+}
+
+TEST(TopoMeshTopology, EdgesFromSurfacesKeepTriangleOrientation) {
+  auto s = load(R"(<Node><MeshTopology name="t" triangles="0 1 2  0 2 3"/>
+                   <MeshTopology name="q" quads="0 1 2 3"/>
+                   <MeshTopology name="given" triangles="0 1 2" edges="0 1"/></Node>)");
+  auto& t = find<MeshTopology>(s, "t");
+  EXPECT_EQ(t.edges(), (std::vector<Edge>{{1, 2}, {2, 0}, {0, 1}, {2, 3}, {3, 0}}));
+  EXPECT_EQ(t.edges_in_triangle()[1], (std::array<unsigned, 3>{3, 4, 1}));
+  // Edge (2,0) runs along triangle 0 (…,2,0 …) so triangle 0 comes first; triangle 1 has (0,2).
+  EXPECT_EQ(t.triangles_around_edge()[1], (std::vector<unsigned>{0, 1}));
+  EXPECT_EQ(t.triangles_around_vertex()[0], (std::vector<unsigned>{0, 1}));
+  EXPECT_EQ(t.triangle_index(2, 3, 0), 1u);
+  // Quad edges are stored with the smaller index first.
+  EXPECT_EQ(find<MeshTopology>(s, "q").edges(), (std::vector<Edge>{{1, 2}, {2, 3}, {0, 3}, {0, 1}}));
+  // A list given in the scene is never regenerated.
+  EXPECT_EQ(find<MeshTopology>(s, "given").edges(), (std::vector<Edge>{{0, 1}}));
+}
+
+TEST(TopoMeshTopology, QuadsFromHexahedron) {
+  auto s = load(R"(<Node><MeshTopology name="t" hexas="0 1 2 3 4 5 6 7"/></Node>)");
+  auto& t = find<MeshTopology>(s, "t");
+  EXPECT_EQ(t.quads(), (std::vector<Quad>{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
+                                          {0, 4, 7, 3}}));
+  EXPECT_EQ(t.edges(), (std::vector<Edge>{{0, 1}, {0, 3}, {0, 4}, {1, 2}, {1, 5}, {2, 3}, {2, 6}, {3, 7}, {4, 5},
+                                          {4, 7}, {5, 6}, {6, 7}}));
+  EXPECT_EQ(t.quads_in_hexahedron()[0], (std::array<unsigned, 6>{0, 1, 2, 3, 4, 5}));
+  for (const auto& around : t.hexahedra_around_quad()) EXPECT_EQ(around, (std::vector<unsigned>{0}));
+  EXPECT_EQ(t.edges_in_quad()[5], (std::array<unsigned, 4>{9, 7, 1, 2}));  // quad (0,4,7,3)
+}
+
+TEST(TopoDynamicContainers, TetrahedronContainerCreatesEdgesThenTriangles) {
+  auto s = load(std::string(R"(<Node><TetrahedronSetTopologyContainer name="t" tetrahedra=")") + kTwoTets +
+                R"("/></Node>)");
+  auto& t = find<TetrahedronSetTopologyContainer>(s, "t");
+  EXPECT_EQ(t.edges().size(), 9u);
+  EXPECT_EQ(t.edges()[6], (Edge{1, 4}));
+  EXPECT_EQ(t.triangles(), (std::vector<Triangle>{{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}, {2, 3, 4}, {1, 4, 3},
+                                                  {1, 2, 4}}));
+  EXPECT_EQ(t.nb_points(), 5u);
+  EXPECT_EQ(t.nb_points_f.value(), 5u);
+}
+
+TEST(TopoDynamicContainers, TriangleAndQuadContainers) {
+  auto s = load(R"(<Node>
+      <TriangleSetTopologyContainer name="t" position="0 0 0  1 0 0  1 1 0  0 1 0  5 5 5" triangles="0 1 2  0 2 3"/>
+      <QuadSetTopologyContainer name="q" quads="0 1 2 3"/>
+      <HexahedronSetTopologyContainer name="h" hexahedra="0 1 2 3 4 5 6 7"/>
+      <EdgeSetTopologyContainer name="e" edges="0 1  1 5"/>
+      <PointSetTopologyContainer name="p" position="0 0 0  1 1 1"/>
+    </Node>)");
+  auto& t = find<TriangleSetTopologyContainer>(s, "t");
+  EXPECT_EQ(t.edges(), (std::vector<Edge>{{1, 2}, {2, 0}, {0, 1}, {2, 3}, {3, 0}}));
+  EXPECT_EQ(t.nb_points(), 5u);  // position given: its size wins over the indices
+  EXPECT_EQ(find<QuadSetTopologyContainer>(s, "q").edges(), (std::vector<Edge>{{1, 2}, {2, 3}, {0, 3}, {0, 1}}));
+  auto& h = find<HexahedronSetTopologyContainer>(s, "h");
+  EXPECT_EQ(h.quads().size(), 6u);
+  EXPECT_EQ(h.quads()[5], (Quad{0, 4, 7, 3}));
+  EXPECT_EQ(h.edges().size(), 12u);
+  auto& e = find<EdgeSetTopologyContainer>(s, "e");
+  EXPECT_EQ(e.nb_points(), 6u);
+  EXPECT_TRUE(e.triangles().empty());
+  EXPECT_EQ(e.edges_around_vertex()[1], (std::vector<unsigned>{0, 1}));
+  EXPECT_EQ(find<PointSetTopologyContainer>(s, "p").nb_points(), 2u);
+}
+
+TEST(TopoDynamicContainers, ListsFromLoaderAreKept) {
+  // Triangles given with the tetrahedra: only the edges are created (from the tetrahedra).
+  auto s = load(R"(<Node><TetrahedronSetTopologyContainer name="t" tetrahedra="0 1 2 3" triangles="0 1 2"/></Node>)");
+  auto& t = find<TetrahedronSetTopologyContainer>(s, "t");
+  EXPECT_EQ(t.triangles(), (std::vector<Triangle>{{0, 1, 2}}));
+  EXPECT_EQ(t.edges().size(), 6u);
+}
+
+TEST(TopoDynamicContainers, ModifierFindsItsContainer) {
+  auto s = load(R"(<Node><TriangleSetTopologyContainer name="c" triangles="0 1 2"/>
+                   <Node name="child"><TriangleSetTopologyModifier name="m"/></Node></Node>)");
+  Node* child = s.root->find_child_named("child");
+  ASSERT_NE(child, nullptr);
+  auto* m = get<TriangleSetTopologyModifier>(*child, "m");
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(m->container(), get<MeshContainer>(*s.root, "c"));
+}
