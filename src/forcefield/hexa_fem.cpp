@@ -86,12 +86,18 @@ inline Vec3 edge_y(const std::array<Vec3, 8>& n) { return edge_chain(n, 3, 0, 2,
 inline Vec3 edge_z(const std::array<Vec3, 8>& n) { return edge_chain(n, 4, 0, 5, 1, 7, 3, 6, 2); }
 
 // F = K·D, each row summed left to right starting from the first product.
+// F = K·D with each F[i] summed left to right from K(i,0)·D[0], as SOFA does.
+// K is exactly symmetric (its lower half is a copy of the upper half), so
+// row c of the storage is column c: accumulating column by column keeps every
+// row's summation order while letting the 24 rows proceed independently
+// (vectorised, no dependency chain), for bit-identical results.
 inline void mul24(const Mat24& K, const double* D, double* F) {
-  for (int i = 0; i < 24; ++i) {
-    const double* row = K.data() + 24 * i;
-    double s = row[0] * D[0];
-    for (int j = 1; j < 24; ++j) s += row[j] * D[j];
-    F[i] = s;
+  const double* k = K.data();
+  for (int i = 0; i < 24; ++i) F[i] = k[i] * D[0];
+  for (int c = 1; c < 24; ++c) {
+    const double* col = k + 24 * c;
+    const double d = D[c];
+    for (int i = 0; i < 24; ++i) F[i] += col[i] * d;
   }
 }
 

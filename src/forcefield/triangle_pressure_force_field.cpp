@@ -26,12 +26,14 @@ void TrianglePressureForceField::init() {
     state_ = ComponentState::invalid;
     return;
   }
-  if (!rebuild()) state_ = ComponentState::invalid;
+  if (!rebuild(true)) state_ = ComponentState::invalid;
 }
 
-bool TrianglePressureForceField::rebuild() {
-  list_ = triangle_list.get();
-  pressure_seen_ = pressure.get();
+bool TrianglePressureForceField::rebuild(bool read_list) {
+  if (read_list) {
+    list_ = triangle_list.get();
+    pressure_seen_ = pressure.get();
+  }
   const auto& all = topology->triangles();
   n_triangles_ = all.size();
   const std::size_t np = mstate->size();
@@ -64,15 +66,14 @@ bool TrianglePressureForceField::rebuild() {
 }
 
 void TrianglePressureForceField::add_force(const MechParams& p) {
-  // The triangle list (often an engine output) and the pressure are followed when they change.
-  if (triangle_list.get() != list_ || pressure.get() != pressure_seen_ ||
-      topology->triangles().size() != n_triangles_) {
-    if (!rebuild()) {
-      state_ = ComponentState::invalid;
-      tris_.clear();
-      force_.clear();
-      return;
-    }
+  // SOFA keeps the list and the forces computed at init, even when the list is
+  // an engine output that changes later (its update callback does not run
+  // during the simulation); only a change of the topology rebuilds them.
+  if (topology->triangles().size() != n_triangles_ && !rebuild(false)) {
+    state_ = ComponentState::invalid;
+    tris_.clear();
+    force_.clear();
+    return;
   }
   std::vector<double>& f = mstate->vec(p.f);
   if (use_constant_force.value()) {

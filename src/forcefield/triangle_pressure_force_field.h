@@ -30,11 +30,11 @@ class TrianglePressureForceField final : public ForceField {
   bool build_stiffness(MatrixSink&) override { return true; }
 
  private:
-  bool rebuild();
+  bool rebuild(bool read_list);
   std::vector<unsigned> list_;      // triangle indices in use
   std::vector<Triangle> tris_;      // their vertices
   std::vector<Vec3> force_;         // P·A per triangle
-  Vec3 pressure_seen_ = Vec3::Zero();
+  Vec3 pressure_seen_ = Vec3::Zero();  // pressure read at init
   std::size_t n_triangles_ = 0;
 };
 

@@ -54,7 +54,11 @@ void PointSetTopologyContainer::init() {
   const std::size_t np = position.get().size();
   if (level() == Level::point) {
     if (np > nb_points_f.value()) nb_points_f.set(static_cast<unsigned>(np));
-  } else if (position.is_set()) {
+  } else if (position.is_set() && !(np == 0 && nb_points_f.value() > 0)) {
+    // Deviation: an empty `position` with a point count already given (a topological mapping
+    // called clear() then setNbPoints()) keeps that count. SOFA's clear() marks `position` as
+    // set and the container ends with 0 points (warning while building its buffers); the
+    // element lists are the same either way.
     nb_points_f.set(static_cast<unsigned>(np));
   } else {
     const std::size_t n = main_list_points(*this);

@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "forcefield/fast_triangular_bending_springs.h"
 #include "forcefield/triangular_bending_springs.h"
 #include "forcefield/triangular_fem_force_field.h"

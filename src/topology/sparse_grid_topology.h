@@ -1,0 +1,75 @@
+// SparseGridTopology: the cells of a regular grid that intersect or lie
+// inside a closed surface mesh, as hexahedra (spec/mechanics.md §5.4).
+// Built from `fileTopology` (a surface mesh: .obj, .msh, .vtk, .stl) or from
+// `position` + `triangles`/`quads`. Only hexahedra and points are produced
+// (no edges, quads or triangles). Voxel files (.raw, .voxel) and virtual
+// finer levels are not supported (an error says so).
+#pragma once
+
+#include "topology/mesh_topology.h"
+
+namespace sinew {
+
+class SparseGridTopology final : public MeshTopology {
+ public:
+  enum class CellType { outside, inside, boundary };
+
+  Field<bool> fill_weighted{this, "fillWeighted", true,
+                            "Is quantity of matter inside a cell taken into account? (.5 for boundary, 1 for inside)",
+                            "Grid"};
+  Field<bool> only_inside_cells{this, "onlyInsideCells", false, "Select only inside cells (exclude boundary cells)",
+                                "Grid"};
+  Field<VecNi<3>> n{this, "n", VecNi<3>(2, 2, 2), "grid resolution", "Grid"};
+  Field<Vec3> min{this, "min", Vec3::Zero(), "Min", "Grid"};
+  Field<Vec3> max{this, "max", Vec3::Zero(), "Max", "Grid"};
+  Field<double> cell_width{this, "cellWidth", 0.0, "if > 0 : dimension of each cell in the created grid", "Grid"};
+  Field<int> nb_virtual_finer_levels{this, "nbVirtualFinerLevels", 0,
+                                     "create virtual (not in the animation tree) finer sparse grids in order to "
+                                     "dispose of finest information",
+                                     "Grid"};
+  Field<VecNi<3>> data_resolution{this, "dataResolution", VecNi<3>(0, 0, 0), "Dimension of the voxel File", "Grid"};
+  Field<Vec3> voxel_size{this, "voxelSize", Vec3::Ones(), "Dimension of one voxel", "Grid"};
+  Field<unsigned> marching_cube_step{this, "marchingCubeStep", 1u, "Step of the Marching Cube algorithm", "Grid"};
+  Field<unsigned> convolution_size{this, "convolutionSize", 0u,
+                                   "Dimension of the convolution kernel to smooth the voxels. 0 if no smoothing is "
+                                   "required.",
+                                   "Grid"};
+
+  void init() override;
+
+  // Per hexahedron: its type and the coefficients FEM/mass components apply (0.5 on boundary cells
+  // when fillWeighted, else 1).
+  CellType cell_type(std::size_t h) const { return h < types_.size() ? types_[h] : CellType::outside; }
+  float stiffness_coef(std::size_t h) const { return h < stiffness_coefs_.size() ? stiffness_coefs_[h] : 1.0f; }
+  float mass_coef(std::size_t h) const { return h < mass_coefs_.size() ? mass_coefs_[h] : 1.0f; }
+
+  // Grid look-ups (SOFA's findCube / findNearestCube): the hexahedron index and the local
+  // coordinates of `p` in it; kInvalidIndex when not found.
+  unsigned find_cube(const Vec3& p, double& fx, double& fy, double& fz) const;
+  unsigned find_nearest_cube(const Vec3& p, double& fx, double& fy, double& fz) const;
+
+ protected:
+  void generate() override;
+
+ private:
+  // The underlying regular grid (SOFA's _regularGrid).
+  struct Grid {
+    VecNi<3> n{2, 2, 2};
+    Vec3 p0 = Vec3::Zero(), dx = Vec3::Zero(), dy = Vec3::Zero(), dz = Vec3::Zero();
+    double inv_dx2 = 0, inv_dy2 = 0, inv_dz2 = 0;
+    int nb_cells() const { return (n[0] - 1) * (n[1] - 1) * (n[2] - 1); }
+    int cube(int i, int j, int k) const { return (n[0] - 1) * ((n[1] - 1) * k + j) + i; }
+    Vec3 point(int i, int j, int k) const { return p0 + dx * i + dy * j + dz * k; }
+    // Cell containing p, -1 if outside; (x,y,z) receive the continuous grid coordinates.
+    int find(const Vec3& p, double& x, double& y, double& z) const;
+  };
+  bool build_from_surface(const std::vector<Vec3>& vertices, const std::vector<std::vector<unsigned>>& facets);
+
+  Grid grid_;
+  std::vector<CellType> types_;
+  std::vector<float> stiffness_coefs_, mass_coefs_;
+  std::vector<int> sparse_of_regular_;  // regular cell → hexahedron index (-1 when absent)
+  bool build_failed_ = false;
+};
+
+}  // namespace sinew
