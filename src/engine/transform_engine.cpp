@@ -27,10 +27,7 @@ TransformEngine::TransformEngine(StateType type)
   add_output(&output_position);
 }
 
-void TransformEngine::init() {
-  set_dirty();
-  update();
-}
+void TransformEngine::init() { update(); }
 
 void TransformEngine::do_update() {
   using io::SQuat;

@@ -120,6 +120,29 @@ void SpringForceField::init() {
       return;
     }
   dfdx_.assign(springs_.size() + grid_springs_.size(), springs::Block{});
+  n1_ = n1;
+  n2_ = n2;
+}
+
+bool SpringForceField::sizes_ok() {
+  if (s1_->size() == n1_ && s2_->size() == n2_) return true;
+  // The states were resized (topological change): keep going only if every spring still fits.
+  n1_ = s1_->size();
+  n2_ = s2_->size();
+  auto fits = [&](const springs::LinearSpring& s) { return s.m1 < n1_ && s.m2 < n2_; };
+  for (std::size_t i = 0; i < springs_.size() + grid_springs_.size(); ++i) {
+    const auto& s = i < springs_.size() ? springs_[i] : grid_springs_[i - springs_.size()];
+    if (!fits(s)) {
+      msg_error("spring " + std::to_string(i) + " (" + std::to_string(s.m1) + ", " + std::to_string(s.m2) +
+                ") refers to a point removed from the state at step " + std::to_string(node()->step_index) +
+                ": the force field stops");
+      state_ = ComponentState::invalid;
+      springs_.clear();
+      grid_springs_.clear();
+      return false;
+    }
+  }
+  return true;
 }
 
 template <int N>
@@ -152,6 +175,7 @@ void SpringForceField::add_dforce_n(const MechParams& p, double kfactor) {
 }
 
 void SpringForceField::add_force(const MechParams& p) {
+  if (!sizes_ok()) return;
   switch (dim_) {
     case 1: add_force_n<1>(p); break;
     case 2: add_force_n<2>(p); break;
@@ -160,6 +184,7 @@ void SpringForceField::add_force(const MechParams& p) {
 }
 
 void SpringForceField::add_dforce(const MechParams& p, double kfactor) {
+  if (!sizes_ok()) return;
   switch (dim_) {
     case 1: add_dforce_n<1>(p, kfactor); break;
     case 2: add_dforce_n<2>(p, kfactor); break;

@@ -68,7 +68,10 @@ class SpringForceField : public ForceField {
   void add_force_n(const MechParams& p);
   template <int N>
   void add_dforce_n(const MechParams& p, double kfactor);
+  // False (component invalid, springs dropped) when a resized state no longer holds every spring end.
+  bool sizes_ok();
   std::vector<springs::Block> dfdx_;
+  std::size_t n1_ = 0, n2_ = 0;
   double energy_ = 0;
 };
 

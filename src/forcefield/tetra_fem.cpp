@@ -573,6 +573,147 @@ void TetraFEM::add_dforce(std::span<const Vec3> dx, std::span<Vec3> df, double k
   }
 }
 
+void TetraFEM::node_rotations(std::span<Mat3> out, bool average) const {
+  const std::size_t np = out.size();
+  if (method == TetraMethod::small || tetra.empty()) {
+    for (auto& r : out) r = Mat3::Identity();
+    return;
+  }
+  // rot·R0 with R0 = rot0ᵀ (SOFA: rotations[e] * transpose(_initialRotations[e])).
+  auto element_rotation = [&](std::size_t e) { return mul(rot[e], Mat3(rot0[e].transpose())); };
+  std::vector<Mat3> sum(average ? np : 0, Mat3::Zero());
+  std::vector<int> count(np, 0);
+  std::vector<std::size_t> last(np, 0);
+  for (std::size_t e = 0; e < tetra.size(); ++e) {
+    const Mat3 r = average ? element_rotation(e) : Mat3::Zero();
+    for (int k = 0; k < 4; ++k) {
+      const std::size_t i = static_cast<std::size_t>(tetra[e][k]);
+      if (i >= np) continue;
+      last[i] = e;
+      if (!average) continue;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) sum[i](a, b) += r(a, b);
+      ++count[i];
+    }
+  }
+  for (std::size_t i = 0; i < np; ++i) {
+    if (!average || count[i] == 0) {
+      out[i] = element_rotation(last[i]);
+      continue;
+    }
+    Mat3 m = sum[i];
+    const double n = static_cast<double>(count[i]);
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) m(a, b) = m(a, b) / n;
+    out[i] = polar_rotation(m);
+  }
+}
+
+void TetraFEM::prepare_von_mises(std::span<const double> E, std::span<const double> nu) {
+  const std::size_t ne = tetra.size();
+  lame_lambda.assign(ne, 0.0);
+  lame_mu.assign(ne, 0.0);
+  shape_inv.assign(ne, Eigen::Matrix4d::Identity());
+  for (std::size_t e = 0; e < ne && e < E.size() && e < nu.size(); ++e) {
+    const double v = nu[e];
+    const double scale = (E[e] * (1 - v)) / ((1 + v) * (1 - 2 * v));
+    lame_lambda[e] = (v / (1 - v)) * scale;
+    lame_mu[e] = ((1 - 2 * v) / (2 * (1 - v))) * scale;
+    Eigen::Matrix4d m;
+    for (int k = 0; k < 4; ++k) {
+      const Vec3& p = X0[tetra[e][k]];
+      m(k, 0) = 1.0;
+      m(k, 1) = p[0];
+      m(k, 2) = p[1];
+      m(k, 3) = p[2];
+    }
+    if (std::fabs(m.determinant()) > 0) shape_inv[e] = m.inverse();
+  }
+}
+
+void TetraFEM::von_mises(std::span<const Vec3> x, int mode, std::vector<double>& vme, std::vector<double>& vmn) {
+  const std::size_t ne = tetra.size();
+  vme.assign(ne, 0.0);
+  if (shape_inv.size() != ne) return;
+  for (std::size_t e = 0; e < ne; ++e) {
+    const auto& t = tetra[e];
+    const Eigen::Matrix4d& shf = shape_inv[e];
+    double U[12];
+    if (mode == 2) {
+      for (int k = 0; k < 4; ++k)
+        for (int c = 0; c < 3; ++c) U[3 * k + c] = x[t[k]][c] - X0[t[k]][c];
+    } else {
+      Mat3 R;
+      if (method == TetraMethod::large) {
+        R = tetra_frame_large(x[t[0]], x[t[1]], x[t[2]]);
+        Vec3 p[4];
+        for (int k = 0; k < 4; ++k) p[k] = mul(R, x[t[k]]);
+        p[1][0] -= p[0][0];
+        p[2][0] -= p[0][0];
+        p[2][1] -= p[0][1];
+        p[3] = sub(p[3], p[0]);
+        const auto& q = rest[e];
+        for (double& u : U) u = 0;
+        U[3] = q[1][0] - p[1][0];
+        U[6] = q[2][0] - p[2][0];
+        U[7] = q[2][1] - p[2][1];
+        U[9] = q[3][0] - p[3][0];
+        U[10] = q[3][1] - p[3][1];
+        U[11] = q[3][2] - p[3][2];
+      } else {
+        R = polar_rotation(edge_rows(x[t[0]], x[t[1]], x[t[2]], x[t[3]]));
+        const auto& q = rest[e];
+        for (int k = 0; k < 4; ++k) {
+          const Vec3 p = mul(R, x[t[k]]);
+          for (int c = 0; c < 3; ++c) U[3 * k + c] = q[k][c] - p[c];
+        }
+      }
+      if (method != TetraMethod::small) rot[e] = R.transpose();
+    }
+    Mat3 g;
+    for (int k = 0; k < 3; ++k)
+      for (int l = 0; l < 3; ++l) {
+        double v = 0.0;
+        for (int m = 0; m < 4; ++m) v += shf(l + 1, m) * U[3 * m + k];
+        g(k, l) = v;
+      }
+    Mat3 strain;
+    if (mode == 2) {
+      const Mat3 gtg = mul(Mat3(g.transpose()), g);
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) strain(i, j) = 0.5 * (g(i, j) + g(j, i) + gtg(i, j));
+    } else {
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) strain(i, j) = 0.5 * (g(i, j) + g(j, i));
+    }
+    const double vs[6] = {strain(0, 0), strain(1, 1), strain(2, 2), strain(1, 2), strain(0, 2), strain(0, 1)};
+    const double lambda = lame_lambda[e], mu = lame_mu[e];
+    double sg[6];
+    double tr = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      tr += vs[k];
+      sg[k] = vs[k] * 2 * mu;
+    }
+    for (int k = 3; k < 6; ++k) sg[k] = vs[k] * 2 * mu;
+    for (int k = 0; k < 3; ++k) sg[k] += lambda * tr;
+    double v = std::sqrt(sg[0] * sg[0] + sg[1] * sg[1] + sg[2] * sg[2] - sg[0] * sg[1] - sg[1] * sg[2] -
+                         sg[2] * sg[0] + 3 * sg[3] * sg[3] + 3 * sg[4] * sg[4] + 3 * sg[5] * sg[5]);
+    if (v < 1e-10) v = 0.0;
+    vme[e] = v;
+  }
+  vmn.assign(x.size(), 0.0);
+  std::vector<int> count(x.size(), 0);
+  for (std::size_t e = 0; e < ne; ++e)
+    for (int k = 0; k < 4; ++k) {
+      const std::size_t i = static_cast<std::size_t>(tetra[e][k]);
+      if (i >= vmn.size()) continue;
+      vmn[i] += vme[e];
+      ++count[i];
+    }
+  for (std::size_t i = 0; i < vmn.size(); ++i)
+    if (count[i] > 0) vmn[i] /= static_cast<double>(count[i]);
+}
+
 std::vector<std::array<int, 4>> split_hexahedra(std::span<const std::array<unsigned, 8>> hexa, int nx, int ny) {
   static constexpr int kX[4][2] = {{0, 1}, {4, 5}, {3, 2}, {7, 6}};
   static constexpr int kY[4][2] = {{4, 7}, {5, 6}, {1, 2}, {0, 3}};

@@ -94,6 +94,7 @@ struct TetraFEM {
   // (TetrahedronFEMForceField).
   bool symmetric_update = false;
   TetraPlasticity plasticity;            // TetrahedronFEMForceField only
+  bool split_from_hexahedra = false;     // elements made by split_hexahedra (no tetrahedra in the topology)
 
   std::vector<std::array<int, 4>> tetra;
   std::vector<Vec3> X0;                        // rest positions (small: Δ uses them)
@@ -105,6 +106,8 @@ struct TetraFEM {
   std::vector<Mat3> T0;                        // svd: inverse rest edge matrix
   std::vector<std::array<double, 6>> plastic;  // plastic strain per element
   double rest_volume = 0;                      // Σ V0
+  std::vector<double> lame_lambda, lame_mu;    // von Mises only
+  std::vector<Eigen::Matrix4d> shape_inv;      // von Mises only: inverse of rows (1, X0_k)
 
   // Precompute everything from rest positions X0 and per-element E, ν
   // (already broadcast and validated; E may include localStiffnessFactor).
@@ -123,6 +126,23 @@ struct TetraFEM {
 
   // df −= kfactor · rot·JKJᵀ·rotᵀ · dx per element.
   void add_dforce(std::span<const Vec3> dx, std::span<Vec3> df, double kfactor) const;
+
+  // Per-point rotation used by the Warp/PrecomputedWarp preconditioners
+  // (SOFA TetrahedronFEMForceField::getRotation): polar(Σ_e rot_e·R0_e / n_e)
+  // over the n_e incident elements in element order when the topology has
+  // tetrahedra (`average`); otherwise (hexahedra split internally: SOFA finds
+  // no tetrahedra around the point) and for points without element,
+  // rot_e·R0_e of the last element listing the point (element 0 if none).
+  // Identity everywhere for the small method. out.size() = number of points.
+  void node_rotations(std::span<Mat3> out, bool average = true) const;
+
+  // von Mises stress (output only, SOFA computeVonMisesStress): mode 1 from the
+  // corotational small strain of Δ (large/polar/svd; updates rot like SOFA),
+  // mode 2 from the Green strain of x − X0. Per element, then averaged over
+  // the incident elements of each point. Needs prepare_von_mises() first.
+  void prepare_von_mises(std::span<const double> E, std::span<const double> nu);
+  void von_mises(std::span<const Vec3> x, int mode, std::vector<double>& per_element,
+                 std::vector<double>& per_node);
 
   // sink(row_node, col_node, block) with block = −rot·JKJt·rotᵀ (node pair
   // (n1, n2) of each element, n1 outer); blocks of shared nodes must be summed.

@@ -28,6 +28,7 @@ bool setup_tetra_fem(ForceField& c, const TetraFEMSetup& in, fem::TetraFEM& fem)
     return false;
   }
   std::vector<std::array<int, 4>> tets;
+  fem.split_from_hexahedra = false;
   const auto& tt = topo->tetrahedra();
   if (!tt.empty()) {
     tets.reserve(tt.size());
@@ -40,6 +41,7 @@ bool setup_tetra_fem(ForceField& c, const TetraFEMSetup& in, fem::TetraFEM& fem)
       ny = grid->dims()[1] - 1;
     }
     tets = fem::split_hexahedra(topo->hexahedra(), nx, ny);
+    fem.split_from_hexahedra = true;
   } else {
     c.msg_error("the topology " + topo->describe() + " has no tetrahedra");
     return false;
@@ -88,6 +90,7 @@ bool setup_tetra_fem(ForceField& c, const TetraFEMSetup& in, fem::TetraFEM& fem)
       c.msg_warning(where + is.message);
     }
   }
+  if (!fatal && in.von_mises) fem.prepare_von_mises(E, nu);
   return !fatal;
 }
 

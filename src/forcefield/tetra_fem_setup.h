@@ -16,6 +16,7 @@ struct TetraFEMSetup {
   bool allow_hexa_split = false;  // TetrahedronFEMForceField: split hexahedra when there are no tetrahedra
   std::vector<double> young, poisson, local_stiffness_factor;
   fem::TetraMethod method = fem::TetraMethod::large;
+  bool von_mises = false;  // prepare the von Mises output data
 };
 
 // Fills `fem` from the component's state rest positions; reports problems

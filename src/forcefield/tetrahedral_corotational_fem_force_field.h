@@ -44,6 +44,7 @@ class TetrahedralCorotationalFEMForceField final : public ForceField {
 
   TetrahedralCorotationalFEMForceField();
   void init() override;
+  void reinit() override { init(); }  // recompute everything from the fields (SOFA reinit)
   void add_force(const MechParams& p) override;
   void add_dforce(const MechParams& p, double kfactor) override;
   bool build_stiffness(MatrixSink& K) override;

@@ -24,9 +24,16 @@ void TetrahedronFEMForceField::init() {
   if (!known) msg_error("unknown method '" + method.get() + "' (expected small, large, polar or svd): large is used");
 
   const int vm = compute_von_mises_stress.get();
-  if (vm < 0 || vm > 2) msg_warning("computeVonMisesStress must be 0, 1 or 2");
-  if (vm == 1 && in.method == fem::TetraMethod::small)
+  von_mises_mode_ = vm;
+  if (vm < 0 || vm > 2) {
+    msg_warning("computeVonMisesStress must be 0, 1 or 2: no von Mises stress is computed");
+    von_mises_mode_ = 0;
+  }
+  if (vm == 1 && in.method == fem::TetraMethod::small) {
     msg_warning("VonMisesStress can only be computed with full Green strain when the method is SMALL");
+    von_mises_mode_ = 0;
+  }
+  in.von_mises = von_mises_mode_ != 0;
 
   fem_.update_stiffness_matrix = update_stiffness_matrix.get();
   fem_.assembling = assembling.get();
@@ -43,6 +50,18 @@ void TetrahedronFEMForceField::init() {
               (fem_.plasticity.max_threshold > 0 ? "plasticity" : "method " + method.get()) +
               ": this force field adds no force (as SOFA)");
   initial_points.set(std::vector<Vec3>(fem_.X0.begin(), fem_.X0.end()));
+  update_von_mises();
+}
+
+void TetrahedronFEMForceField::update_von_mises() {
+  if (von_mises_mode_ == 0 || state() != ComponentState::valid) return;
+  MechanicalState& s = *mstate;
+  fem_.von_mises(as_vec3(s.vec(kPosition)), von_mises_mode_, von_mises_per_element.edit(),
+                 von_mises_per_node.edit());
+}
+
+void TetrahedronFEMForceField::handle_event(Event& ev) {
+  if (ev.kind == Event::Kind::animate_end) update_von_mises();
 }
 
 void TetrahedronFEMForceField::reset() { fem_.reset_plasticity(); }

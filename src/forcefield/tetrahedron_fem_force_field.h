@@ -67,15 +67,22 @@ class TetrahedronFEMForceField final : public ForceField {
 
   TetrahedronFEMForceField();
   void init() override;
+  void reinit() override { init(); }  // recompute everything from the fields (SOFA reinit)
   void reset() override;
+  void handle_event(Event& ev) override;
+  bool wants_events() const override { return listening.value() || von_mises_mode_ != 0; }
   void add_force(const MechParams& p) override;
   void add_dforce(const MechParams& p, double kfactor) override;
   bool build_stiffness(MatrixSink& K) override;
 
   const fem::TetraFEM& kernel() const { return fem_; }
+  // Per-point rotations for the Warp/PrecomputedWarp preconditioners (SOFA getRotations).
+  void node_rotations(std::span<Mat3> out) const { fem_.node_rotations(out, !fem_.split_from_hexahedra); }
 
  private:
+  void update_von_mises();
   fem::TetraFEM fem_;
+  int von_mises_mode_ = 0;  // 0: off; 1, 2: SOFA computeVonMisesStress
 };
 
 }  // namespace sinew

@@ -153,8 +153,7 @@ io::ReadOptions MeshLoader::read_options() const {
 }
 
 void MeshLoader::init() {
-  set_dirty();
-  update();
+  update();  // loads now unless a reader already triggered the load (same inputs: no reload)
 }
 
 void MeshLoader::do_update() {

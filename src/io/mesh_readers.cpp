@@ -644,11 +644,22 @@ std::optional<MeshData> read_gmsh(const std::string& path, std::string* error, c
 
 namespace {
 
+double decode_value(const unsigned char* p, int size, bool is_float, bool is_signed, bool swap);
+
 // One VTK array: values widened to double, plus whether it was float32.
 struct VtkArray {
   std::vector<double> v;
   bool is_float = false;
   bool ok = false;
+  // Legacy binary arrays: the raw bytes, to decode again if the data turn out byte-swapped.
+  std::string raw;
+  int size = 0;
+  bool is_signed = true;
+  void redecode_swapped() {
+    if (raw.empty()) return;
+    const auto* p = reinterpret_cast<const unsigned char*>(raw.data());
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = decode_value(p + i * size, size, is_float, is_signed, true);
+  }
 };
 
 int vtk_type_size(const std::string& t, bool* is_float, bool* is_signed) {
@@ -738,8 +749,11 @@ VtkArray legacy_read(LegacyIn& in, std::size_t n, const std::string& type, int b
     const std::size_t bytes = n * static_cast<std::size_t>(size);
     if (in.pos + bytes > in.s.size()) return a;
     const auto* p = reinterpret_cast<const unsigned char*>(in.s.data() + in.pos);
-    // Legacy binary VTK is big-endian; SOFA reads natively then detects swapped data. Values are decoded as big-endian.
-    for (std::size_t i = 0; i < n; ++i) a.v[i] = decode_value(p + i * size, size, a.is_float, is_signed, true);
+    // Read natively (little-endian) like SOFA; read_vtk_legacy detects byte-swapped (big-endian) files afterwards.
+    for (std::size_t i = 0; i < n; ++i) a.v[i] = decode_value(p + i * size, size, a.is_float, is_signed, false);
+    a.raw.assign(in.s.data() + in.pos, bytes);
+    a.size = size;
+    a.is_signed = is_signed;
     for (std::size_t k = 0; k < bytes; ++k)
       if (in.s[in.pos + k] == '\n') ++in.line;
     in.pos += bytes;
@@ -951,7 +965,7 @@ std::optional<MeshData> read_vtk_legacy(const std::string& path, const std::stri
 
   MeshData m;
   VtkCells vc;
-  VtkArray points, normals;
+  VtkArray points, normals, polygons, cells, types;
   bool has_points = false;
   while (!in.eof()) {
     line = in.next_nonempty();
@@ -971,28 +985,27 @@ std::optional<MeshData> read_vtk_legacy(const std::string& path, const std::stri
     } else if (kw == "POLYGONS") {
       long long n = 0, ni = 0;
       if (!to_int(c.next(), n) || !to_int(c.next(), ni) || ni < 0) return err("bad POLYGONS line");
-      auto a = legacy_read(in, static_cast<std::size_t>(ni), "int", binary);
-      if (!a.ok) return err("cannot read polygons");
-      vc.polygons = std::move(a.v);
+      polygons = legacy_read(in, static_cast<std::size_t>(ni), "int", binary);
+      if (!polygons.ok) return err("cannot read polygons");
       vc.has_polygons = true;
     } else if (kw == "CELLS" || kw == "LINES") {
       long long n = 0, ni = 0;
       if (!to_int(c.next(), n) || !to_int(c.next(), ni) || ni < 0 || n < 0) return err("bad " + kw + " line");
-      auto a = legacy_read(in, static_cast<std::size_t>(ni), "int", binary);
-      if (!a.ok) return err("cannot read cells");
-      vc.cells = std::move(a.v);
+      cells = legacy_read(in, static_cast<std::size_t>(ni), "int", binary);
+      if (!cells.ok) return err("cannot read cells");
       vc.has_cells = true;
       vc.number_of_cells = static_cast<std::size_t>(n);
       if (kw == "LINES") {
-        vc.types.assign(static_cast<std::size_t>(n), 4.0);
+        types = VtkArray{};
+        types.v.assign(static_cast<std::size_t>(n), 4.0);
+        types.ok = true;
         vc.has_types = true;
       }
     } else if (kw == "CELL_TYPES") {
       long long n = 0;
       if (!to_int(c.next(), n) || n < 0) return err("bad CELL_TYPES line");
-      auto a = legacy_read(in, static_cast<std::size_t>(n), "int", binary);
-      if (!a.ok) return err("cannot read cell types");
-      vc.types = std::move(a.v);
+      types = legacy_read(in, static_cast<std::size_t>(n), "int", binary);
+      if (!types.ok) return err("cannot read cell types");
       vc.has_types = true;
     } else if (kw == "CELL_DATA" || kw == "POINT_DATA") {
       const bool cell = kw == "CELL_DATA";
@@ -1050,6 +1063,21 @@ std::optional<MeshData> read_vtk_legacy(const std::string& path, const std::stri
     // other keywords (METADATA, ...) are skipped
   }
   if (!has_points) return err("no POINTS section");
+  if (binary) {
+    // SOFA's check: the data are byte-swapped when the first polygon size / cell type read natively is larger
+    // than its byte-swapped value (always the case for standard big-endian files).
+    const VtkArray* probe = vc.has_polygons ? &polygons : (vc.has_cells && vc.has_types) ? &types : nullptr;
+    if (probe && !probe->raw.empty() && probe->raw.size() >= 4) {
+      const auto* p = reinterpret_cast<const unsigned char*>(probe->raw.data());
+      const auto native = static_cast<uint32_t>(static_cast<int32_t>(decode_value(p, 4, false, true, false)));
+      const auto swapped = static_cast<uint32_t>(static_cast<int32_t>(decode_value(p, 4, false, true, true)));
+      if (native > swapped)
+        for (VtkArray* a : {&points, &normals, &polygons, &cells, &types}) a->redecode_swapped();
+    }
+  }
+  vc.polygons = std::move(polygons.v);
+  vc.cells = std::move(cells.v);
+  vc.types = std::move(types.v);
   set_points(m, points);
   if (normals.ok) {
     m.normals.resize(normals.v.size() / 3);

@@ -15,10 +15,7 @@ SphereLoader::SphereLoader() {
   add_output(&list_radius);
 }
 
-void SphereLoader::init() {
-  set_dirty();
-  update();
-}
+void SphereLoader::init() { update(); }
 
 void SphereLoader::do_update() {
   std::string error;

@@ -109,9 +109,12 @@ void FEMMass::init() {
   }
   if (!ok) return;
 
-  // Compress: entries sorted by (row, column); duplicates summed in element order.
-  std::stable_sort(trip.begin(), trip.end(),
-                   [](const Triplet& a, const Triplet& b) { return a.r != b.r ? a.r < b.r : a.c < b.c; });
+  // Compress as SOFA's CompressedRowSparseMatrix does: the (row, column, value)
+  // list in insertion order is std::sort-ed on (row, column) only (not stable:
+  // same algorithm, same comparisons, hence the same order of duplicates), then
+  // duplicates are summed in that order.
+  std::sort(trip.begin(), trip.end(),
+            [](const Triplet& a, const Triplet& b) { return (a.r < b.r) || (a.r == b.r && a.c < b.c); });
   row_begin_.assign(n + 1, 0);
   cols_.clear();
   vals_.clear();

@@ -11,7 +11,7 @@ void register_edge_set_geometry_algorithms(Registry& r) {
   info.name = "EdgeSetGeometryAlgorithms";
   info.category = "Topology";
   info.description = "Geometry algorithms dedicated to an edge topology";
-  info.templates = {"Vec3d", "Vec2d", "Vec1d"};
+  info.templates = {"Vec3d", "Vec2d", "Vec1d", "Rigid3d", "Rigid2d"};
   info.default_template = "Vec3d";
   info.create = creator<EdgeSetGeometryAlgorithms>();
   r.add(std::move(info));

@@ -11,7 +11,7 @@ void register_hexahedron_set_geometry_algorithms(Registry& r) {
   info.name = "HexahedronSetGeometryAlgorithms";
   info.category = "Topology";
   info.description = "Geometry algorithms dedicated to an hexahedral topology";
-  info.templates = {"Vec3d", "Vec2d", "Vec1d"};
+  info.templates = {"Vec3d", "Vec2d"};
   info.default_template = "Vec3d";
   info.create = creator<HexahedronSetGeometryAlgorithms>();
   r.add(std::move(info));

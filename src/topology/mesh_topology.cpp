@@ -6,6 +6,7 @@
 
 #include "core/engine.h"
 #include "core/registry.h"
+#include "io/mesh_readers.h"
 
 namespace sinew {
 
@@ -94,7 +95,7 @@ std::vector<Quad> quads_of_hexahedra(const std::vector<Hexa>& hexas) {
 // ---------------------------------------------------------------- neighbourhood cache
 
 struct MeshContainer::Cache {
-  std::uint64_t versions[5] = {0, 0, 0, 0, 0};
+  std::uint64_t versions[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   std::size_t nb_points = 0;
   bool has_eav = false, has_tav = false, has_tae = false, has_qav = false, has_qae = false;
   bool has_teav = false, has_teae = false, has_teat = false, has_hav = false, has_hae = false, has_haq = false;
@@ -128,12 +129,53 @@ void MeshContainer::ensure() const {
 
 void MeshContainer::init() {
   ensure();
-  if (!filename.value().empty()) {
-    // No mesh reader is wired into topology containers: scenes use loaders with src="@loader".
-    msg_error("cannot load '" + filename.value() +
-              "': reading a mesh file directly into a topology is not supported; use a mesh loader and src=\"@loader\"");
+  if (!filename.value().empty()) load_file(filename.value());
+}
+
+bool MeshContainer::load_file(const std::string& file) {
+  // SOFA's BaseMeshTopology::load with its MeshTopologyLoader: the container is cleared, then
+  // receives the file's points and elements (OBJ faces: 2 vertices → edge, 4 → quad, else a
+  // triangle fan).
+  auto ends_with = [&](const char* suffix) {
+    const std::string sx(suffix);
+    return file.size() > sx.size() && file.compare(file.size() - sx.size(), sx.size(), sx) == 0;
+  };
+  std::string err;
+  std::optional<io::MeshData> mesh;
+  if (ends_with(".obj")) mesh = io::read_obj(file, &err);
+  else if (ends_with(".msh")) mesh = io::read_gmsh(file, &err);
+  else if (ends_with(".vtk") || ends_with(".vtu")) mesh = io::read_vtk(file, &err);
+  else err = "this file format is not supported";
+  if (!mesh) {
+    msg_error("Unable to load Mesh \"" + file + "\": " + err);
     state_ = ComponentState::invalid;
+    return false;
   }
+  clear_topology();
+  if (ends_with(".obj")) {
+    position.set(mesh->positions_definition.empty() ? mesh->positions : mesh->positions_definition);
+    auto& edges = edges_f.edit();
+    auto& tris = triangles_f.edit();
+    auto& quads = quads_f.edit();
+    for (const auto& f : mesh->face_positions) {
+      std::vector<unsigned> v;
+      for (int i : f)
+        if (i >= 0) v.push_back(static_cast<unsigned>(i));
+      if (v.size() == 2) edges.push_back(v[0] < v[1] ? Edge{v[0], v[1]} : Edge{v[1], v[0]});
+      else if (v.size() == 4) quads.push_back({v[0], v[1], v[2], v[3]});
+      else
+        for (std::size_t j = 2; j < v.size(); ++j) tris.push_back({v[0], v[j - 1], v[j]});
+    }
+  } else {
+    position.set(mesh->positions);
+    edges_f.set(mesh->edges);
+    triangles_f.set(mesh->triangles);
+    quads_f.set(mesh->quads);
+    tetrahedra_f.set(mesh->tetrahedra);
+    hexahedra_f.set(mesh->hexahedra);
+  }
+  set_nb_points(position.value().size());
+  return true;
 }
 
 std::size_t MeshContainer::nb_points() const {
@@ -160,6 +202,26 @@ Vec3 MeshContainer::point(std::size_t i) const {
   return i < p.size() ? p[i] : Vec3::Zero();
 }
 
+bool MeshContainer::check_indices(std::size_t n) const {
+  bool ok = true;
+  auto scan = [&](const auto& list, const char* what) {
+    for (std::size_t e = 0; e < list.size() && ok; ++e)
+      for (unsigned v : list[e])
+        if (v >= n) {
+          msg_warning(std::string(what) + " " + std::to_string(e) + " uses point " + std::to_string(v) +
+                      " but the topology has " + std::to_string(n) + " points");
+          ok = false;
+          break;
+        }
+  };
+  scan(edges_f.get(), "edge");
+  scan(triangles_f.get(), "triangle");
+  scan(quads_f.get(), "quad");
+  scan(tetrahedra_f.get(), "tetrahedron");
+  scan(hexahedra_f.get(), "hexahedron");
+  return ok;
+}
+
 void MeshContainer::clear_topology() {
   nb_points_hint_ = 0;
   position.edit().clear();
@@ -178,13 +240,14 @@ MeshContainer::Cache& MeshContainer::cache() const {
   quads();
   tetrahedra();
   hexahedra();
-  const std::uint64_t v[5] = {edges_f.version(), triangles_f.version(), quads_f.version(), tetrahedra_f.version(),
-                              hexahedra_f.version()};
-  const std::size_t np = nb_points();
-  if (!std::equal(v, v + 5, cache_->versions) || np != cache_->nb_points) {
+  position.get();
+  const std::uint64_t v[8] = {edges_f.version(),      triangles_f.version(), quads_f.version(),
+                              tetrahedra_f.version(), hexahedra_f.version(), position.version(),
+                              static_cast<std::uint64_t>(nb_points_hint_), points_stamp()};
+  if (!std::equal(v, v + 8, cache_->versions)) {
     cache_ = std::make_unique<Cache>();
-    std::copy(v, v + 5, cache_->versions);
-    cache_->nb_points = np;
+    std::copy(v, v + 8, cache_->versions);
+    cache_->nb_points = nb_points();
   }
   return *cache_;
 }
@@ -543,6 +606,7 @@ void MeshTopology::init() {
         std::vector<BaseField*>{&hexahedra_f}, &quads_f,
         [this] { quads_f.edit() = topo::quads_of_hexahedra(hexahedra_f.get()); });
   }
+  if (has_positions()) check_indices(position.get().size());
   if (compute_all_buffers.value()) {
     // Build every crossed buffer now (SOFA's computeCrossElementBuffers).
     if (!hexahedra().empty()) {

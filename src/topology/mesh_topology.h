@@ -107,6 +107,12 @@ class MeshContainer : public MeshTopologyBase {
   virtual void generate() {}
   // Invalidate generated data (parameters changed).
   void regenerate() { generated_ = false; }
+  // Replaces the lists by the content of a mesh file (filename=); false (with an error) on failure.
+  bool load_file(const std::string& file);
+  // Warns (naming the first element) when an element uses a point index >= n; false then.
+  bool check_indices(std::size_t n) const;
+  // Changes whenever nb_points() may change for reasons other than the lists (subclasses).
+  virtual std::uint64_t points_stamp() const { return 0; }
   // Number of points given explicitly (mapping's setNbPoints, nbPoints field); 0 when unknown.
   std::size_t nb_points_hint_ = 0;
 

@@ -67,12 +67,7 @@ void PointSetTopologyContainer::init() {
   initialised_ = true;
   if (!main_list_empty(*this)) create_lower_lists();
   // Element indices beyond the point count make the neighbourhood buffers inconsistent (SOFA warns).
-  const std::size_t used = std::max({topo::count_points(edges_f.get()), topo::count_points(triangles_f.get()),
-                                     topo::count_points(quads_f.get()), topo::count_points(tetrahedra_f.get()),
-                                     topo::count_points(hexahedra_f.get())});
-  if (used > nb_points_f.value() && nb_points_f.value() > 0)
-    msg_warning("elements use point index " + std::to_string(used - 1) + " but the topology has only " +
-                std::to_string(nb_points_f.value()) + " points");
+  if (nb_points_f.value() > 0) check_indices(nb_points_f.value());
 }
 
 void register_point_set_topology_container(Registry& r) {

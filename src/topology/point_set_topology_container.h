@@ -32,6 +32,7 @@ class PointSetTopologyContainer : public MeshContainer {
   void set_nb_points(std::size_t n) override;
 
  protected:
+  std::uint64_t points_stamp() const override { return (nb_points_f.version() << 1) | (initialised_ ? 1u : 0u); }
   // Creates the empty lower lists from the main list (SOFA's computeCrossElementBuffers).
   virtual void create_lower_lists() {}
 

@@ -11,7 +11,7 @@ void register_tetrahedron_set_geometry_algorithms(Registry& r) {
   info.name = "TetrahedronSetGeometryAlgorithms";
   info.category = "Topology";
   info.description = "Geometry algorithms dedicated to a tetrahedral topology";
-  info.templates = {"Vec3d", "Vec2d", "Vec1d"};
+  info.templates = {"Vec3d", "Vec2d"};
   info.default_template = "Vec3d";
   info.create = creator<TetrahedronSetGeometryAlgorithms>();
   r.add(std::move(info));

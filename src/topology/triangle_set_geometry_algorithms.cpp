@@ -20,7 +20,7 @@ void register_triangle_set_geometry_algorithms(Registry& r) {
   info.name = "TriangleSetGeometryAlgorithms";
   info.category = "Topology";
   info.description = "Geometry algorithms dedicated to a triangular topology";
-  info.templates = {"Vec3d", "Vec2d", "Vec1d"};
+  info.templates = {"Vec3d", "Vec2d"};
   info.default_template = "Vec3d";
   info.create = creator<TriangleSetGeometryAlgorithms>();
   r.add(std::move(info));

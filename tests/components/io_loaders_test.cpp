@@ -193,6 +193,56 @@ $EndElements
   EXPECT_EQ(v4->tetrahedra, (std::vector<Tetra>{{0, 1, 2, 3}}));
 }
 
+// Quadratic tetrahedron (type 11): corner nodes kept, corner-pair edges (sorted) with their mid-node.
+TEST(IoGmsh, QuadraticTetrahedron) {
+  TempDir t;
+  std::string err;
+  auto m = io::read_gmsh(t.write("q.msh", R"($MeshFormat
+2.2 0 8
+$EndMeshFormat
+$Nodes
+10
+1 0 0 0
+2 1 0 0
+3 0 1 0
+4 0 0 1
+5 0.5 0 0
+6 0.5 0.5 0
+7 0 0.5 0
+8 0 0 0.5
+9 0 0.5 0.5
+10 0.5 0 0.5
+$EndNodes
+$Elements
+1
+1 11 2 0 1 1 2 3 4 5 6 7 8 9 10
+$EndElements
+)"),
+                         &err);
+  ASSERT_TRUE(m) << err;
+  EXPECT_EQ(m->tetrahedra, (std::vector<Tetra>{{0, 1, 2, 3}}));
+  EXPECT_EQ(m->edges, (Edges{{0, 1}, {1, 2}, {0, 2}, {0, 3}, {2, 3}, {1, 3}}));
+  ASSERT_EQ(m->high_order_edge_positions.size(), 6u);
+  EXPECT_EQ(m->high_order_edge_positions[4], (io::HighOrderEdgePosition{8, 4, 1, 1}));
+}
+
+// §7.1 createSubelements on a hexahedron: 6 quads (0,3,2,1),(4,5,6,7),... then their edges.
+TEST(IoLoader, HexahedronSubelements) {
+  io::MeshData m;
+  for (int k = 0; k < 8; ++k) m.positions.emplace_back(k & 1, (k >> 1) & 1, k >> 2);
+  m.hexahedra.push_back({0, 1, 3, 2, 4, 5, 7, 6});
+  m.quads.push_back({4, 5, 7, 6});  // already present (same vertex set as the second face)
+  io::FinishOptions o;
+  o.create_subelements = true;
+  io::finish_mesh(m, o);
+  ASSERT_EQ(m.quads.size(), 6u);
+  EXPECT_EQ(m.quads[0], (Quad{4, 5, 7, 6}));
+  EXPECT_EQ(m.quads[1], (Quad{0, 2, 3, 1}));
+  EXPECT_EQ(m.quads[5], (Quad{2, 0, 4, 6}));
+  EXPECT_EQ(m.edges.size(), 12u);
+  EXPECT_EQ(m.edges[0], (Edge{5, 7}));
+}
+
 TEST(IoGmsh, MalformedFileReportsTheLine) {
   TempDir t;
   std::string err;
@@ -305,6 +355,22 @@ TEST(IoVtk, LegacyBinaryIsBigEndian) {
   EXPECT_EQ(m->positions[1], Vec3(2.5, 0, 0));
   EXPECT_EQ(m->positions[2], Vec3(0, -1, 0));
   EXPECT_EQ(m->triangles, (Tris{{0, 1, 2}}));
+}
+
+// SOFA reads natively and swaps only when the first polygon size looks byte-swapped: little-endian files load too.
+TEST(IoVtk, LegacyBinaryLittleEndianIsDetected) {
+  TempDir t;
+  std::string f = "# vtk DataFile Version 3.0\nbin\nBINARY\nDATASET POLYDATA\nPOINTS 3 float\n";
+  for (float x : {0.f, 0.f, 0.f, 0.5f, 0.f, 0.f, 0.f, 3.f, 0.f}) f.append(reinterpret_cast<const char*>(&x), 4);
+  f += "\nPOLYGONS 1 4\n";
+  for (uint32_t v : {3u, 2u, 1u, 0u}) f.append(reinterpret_cast<const char*>(&v), 4);
+  f += "\n";
+  std::string err;
+  auto m = io::read_vtk(t.write("le.vtk", f), &err);
+  ASSERT_TRUE(m) << err;
+  ASSERT_EQ(m->positions.size(), 3u);
+  EXPECT_EQ(m->positions[2], Vec3(0, 3, 0));
+  EXPECT_EQ(m->triangles, (Tris{{2, 1, 0}}));
 }
 
 TEST(IoVtk, XmlAsciiAndBase64) {
@@ -558,10 +624,11 @@ TEST(IoData, EveryMeshReferencedByTheScenesLoads) {
   EXPECT_EQ(m->positions.size(), 800u);
   EXPECT_EQ(m->texcoords_definition.size(), 861u);
   EXPECT_EQ(m->triangles.size(), 1600u);
-  m = io::read_mesh(resolve("mesh/dragon.obj"), nullptr);  // 1190 v, 2564 quad faces
+  m = io::read_mesh(resolve("mesh/dragon.obj"), nullptr);  // 1190 v, 2564 triangular faces (CRLF lines)
   ASSERT_TRUE(m);
   EXPECT_EQ(m->positions.size(), 1190u);
-  EXPECT_EQ(m->quads.size(), 2564u);
+  EXPECT_EQ(m->triangles.size(), 2564u);
+  EXPECT_TRUE(m->quads.empty());
   m = io::read_mesh(resolve("mesh/SofaScene/A.vtk"), nullptr);  // 413 points; 1942 lines, 2645 triangles, 1116 tets
   ASSERT_TRUE(m);
   EXPECT_EQ(m->positions.size(), 413u);

@@ -7,12 +7,16 @@
 #include <cmath>
 
 #include "forcefield/constant_force_field.h"
+#include "forcefield/edge_pressure_force_field.h"
+#include "forcefield/quadular_bending_springs.h"
+#include "forcefield/interaction_ellipsoid_force_field.h"
 #include "forcefield/mesh_spring_force_field.h"
 #include "forcefield/plane_force_field.h"
 #include "forcefield/quad_bending_springs.h"
 #include "forcefield/regular_grid_spring_force_field.h"
 #include "forcefield/rest_shape_springs_force_field.h"
 #include "forcefield/spring_force_field.h"
+#include "forcefield/triangle_pressure_force_field.h"
 #include "forcefield/uniform_velocity_damping_force_field.h"
 #include "spring_helpers.h"
 #include "test_scene.h"
@@ -229,8 +233,8 @@ TEST(MeshSpringForceField, StiffnessAliasSetsEveryElementKindAndFirstBlockWins) 
   EXPECT_DOUBLE_EQ(ff->cubes_stiffness.value(), 300.0);
   // the listed edge (0,1) plus the 5 other quad pairs, diagonals included.
   EXPECT_EQ(ff->spring_list().size(), 6u);
-  EXPECT_NEAR(ff->spring_list()[2].l0, std::sqrt(2.0), 1e-15);  // quad (0,2)
-  EXPECT_NEAR(ff->spring_list()[2].ks, 300.0 / std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(ff->spring_list()[1].l0, std::sqrt(2.0), 1e-15);  // quad pair (0,2) follows the edge (0,1)
+  EXPECT_NEAR(ff->spring_list()[1].ks, 300.0 / std::sqrt(2.0), 1e-12);
 }
 
 TEST(RegularGridSpringForceField, GeneratesLinesQuadsAndCubesInSofaOrder) {
@@ -364,4 +368,149 @@ TEST(UniformVelocityDampingForceField, DampsAndAddsTheDampingMatrixWhenImplicit)
   ff->build_damping(B);
   ASSERT_EQ(B.entries().size(), 3u);
   EXPECT_DOUBLE_EQ(B.entries()[0].value, -0.5);
+}
+
+TEST(InteractionEllipsoidForceField, PushesPointsOutOfTheRotatedEllipsoidWithExactTangent) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <Node name="R"><MechanicalObject name="frame" template="Rigid3" position="0.1 0.2 0.3  0 0 0.38268343236508978 0.92387953251128674"/></Node>
+    <Node name="P">
+      <MechanicalObject name="pts" position="0.5 0.3 0.2  1.5 0 0  0.2 -0.4 0.1"/>
+      <InteractionEllipsoidForceField name="ff" template="Vec3,Rigid3" object1="@pts" object2="@../R/frame"
+          stiffness="100" damping="0" center="0 0 0  5 5 5" vradius="1 0.8 0.6" object2_forces="false"/>
+    </Node>
+  </Node>)");
+  Node& P = *s.root->find_child_named("P");
+  auto* ff = get<InteractionEllipsoidForceField>(P, "ff");
+  ASSERT_NE(ff, nullptr);
+  ASSERT_EQ(ff->state(), ComponentState::valid);
+  MechanicalState& st = *P.mechanical_state;
+  const std::vector<double> x = st.vec(kPosition);
+  const auto f = force_at(*ff, st, x);
+  ASSERT_EQ(ff->contacts().size(), 2u);  // the point at (1.5, 0, 0) is outside
+  EXPECT_EQ(f[3], 0.0);
+  // The force pushes outward: it increases the distance to the frame centre.
+  const double out0 = f[0] * (x[0] - 0.1) + f[1] * (x[1] - 0.2) + f[2] * (x[2] - 0.3);
+  EXPECT_GT(out0, 0.0);
+  MatrixSink sink;
+  ff->build_stiffness(sink);
+  EXPECT_EQ(sink.entries().size(), 2u * 9u);  // one 3×3 block per contact (object2_forces off)
+}
+
+// SOFA's tangent keeps the first two terms of ∂f/∂x but writes the third one
+// as −k·v·g_i·g_j/(r_j²·|g|²) instead of +k·v·g_i·g_j/(r_j²·|g|³): the
+// finite difference of add_force differs from add_dforce by exactly that.
+TEST(InteractionEllipsoidForceField, TangentDiffersFromTheDerivativeByTheDocumentedTerm) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <Node name="R"><MechanicalObject name="frame" template="Rigid3" position="0.1 0.2 0.3  0 0 0 1"/></Node>
+    <Node name="P">
+      <MechanicalObject name="pts" position="0.5 0.3 0.2"/>
+      <InteractionEllipsoidForceField name="ff" template="Vec3,Rigid3" object1="@pts" object2="@../R/frame"
+          stiffness="100" damping="0" center="0 0 0" vradius="1 0.8 0.6" object2_forces="false"/>
+    </Node>
+  </Node>)");
+  Node& P = *s.root->find_child_named("P");
+  auto* ff = get<InteractionEllipsoidForceField>(P, "ff");
+  MechanicalState& st = *P.mechanical_state;
+  const std::vector<double> x = st.vec(kPosition);
+  force_at(*ff, st, x);
+  ASSERT_EQ(ff->contacts().size(), 1u);
+  const double p[3] = {0.4, 0.1, -0.1}, r[3] = {1, 0.8, 0.6}, k = 100;
+  double g[3], n2 = 0, G = 0;
+  for (int j = 0; j < 3; ++j) {
+    g[j] = p[j] / (r[j] * r[j]);
+    n2 += p[j] * p[j] / (r[j] * r[j]);
+    G += g[j] * g[j];
+  }
+  const double v = std::sqrt(n2) - 1;
+  for (int j = 0; j < 3; ++j) {
+    std::vector<double> e(3, 0.0);
+    e[j] = 1;
+    const auto fd = fd_force(*ff, st, x, e, 1e-7);
+    const auto df = dforce(*ff, st, e);
+    for (int i = 0; i < 3; ++i) {
+      const double missing = k * v * g[i] * g[j] / (r[j] * r[j]) * (1 / (G * std::sqrt(G)) + 1 / G);
+      EXPECT_NEAR(fd[i] - df[i], missing, 1e-5 * std::fabs(df[i]) + 1e-6) << "entry " << i << "," << j;
+    }
+  }
+}
+
+TEST(QuadularBendingSprings, TwoCrossingSpringsPerSharedEdgeWithExactTangent) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <MeshTopology name="topo" position="0 0 0  1 0 0  2 0 0  0 1 0  1 1 0  2 1 0" quads="0 1 4 3  1 2 5 4"/>
+    <MechanicalObject name="dofs"/>
+    <QuadularBendingSprings name="ff" stiffness="300" damping="0"/>
+  </Node>)");
+  auto* ff = get<QuadularBendingSprings>(*s.root, "ff");
+  ASSERT_NE(ff, nullptr);
+  ASSERT_EQ(ff->state(), ComponentState::valid);
+  ASSERT_EQ(ff->springs().size(), 2u);
+  // Shared edge (1,4), built by quad 0: springs (t1[i1], t2[i2+3]) and (t1[i1+3], t2[i2]).
+  EXPECT_EQ(ff->springs()[0].e0, 4u);
+  EXPECT_EQ(ff->springs()[0].e1, 0u);
+  EXPECT_EQ(ff->springs()[1].e0, 5u);
+  EXPECT_EQ(ff->springs()[1].e1, 1u);
+  EXPECT_NEAR(ff->springs()[0].rest_length, std::sqrt(2.0), 1e-15);
+  MechanicalState& st = *s.root->mechanical_state;
+  std::vector<double> x = st.vec(kRestPosition);
+  EXPECT_LT(sinew::test::max_abs(force_at(*ff, st, x)), 1e-12);
+  x[2] += 0.3;
+  x[17] -= 0.2;
+  force_at(*ff, st, x);
+  const auto dx = wiggle(x.size(), 61);
+  expect_near_rel(dforce(*ff, st, dx), fd_force(*ff, st, x, dx, 1e-6), 1e-6, "quadular tangent");
+  const auto K = dense_stiffness(*ff, st);
+  const std::size_t n = x.size();
+  std::vector<double> Kdx(n, 0.0);
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t c = 0; c < n; ++c) Kdx[r] += K[r * n + c] * dx[c];
+  expect_near_rel(Kdx, dforce(*ff, st, dx), 1e-12, "quadular matrix");
+}
+
+TEST(EdgePressureForceField, HalfOfPressureTimesRestLengthOnEachVertex) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <MeshTopology name="topo" position="0 0 0  2 0 0  2 1 0" edges="0 1  1 2"/>
+    <MechanicalObject name="dofs"/>
+    <EdgePressureForceField name="ff" edges="1 2" pressure="0 0 1"/>
+  </Node>)");
+  auto* ff = get<EdgePressureForceField>(*s.root, "ff");
+  ASSERT_NE(ff, nullptr);
+  ASSERT_EQ(ff->state(), ComponentState::valid);
+  MechanicalState& st = *s.root->mechanical_state;
+  const auto f = force_at(*ff, st, st.vec(kPosition));
+  EXPECT_DOUBLE_EQ(f[2], 0.0);
+  EXPECT_DOUBLE_EQ(f[5], 0.5);
+  EXPECT_DOUBLE_EQ(f[8], 0.5);
+}
+
+TEST(SpringForceField, StiffSpringForceFieldIsTheOldName) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <MechanicalObject name="dofs" position="0 0 0  1 0 0"/>
+    <StiffSpringForceField name="ff" spring="0 1 10 0 2"/>
+  </Node>)");
+  auto* ff = get<SpringForceField>(*s.root, "ff");
+  ASSERT_NE(ff, nullptr);
+  MechanicalState& st = *s.root->mechanical_state;
+  const auto f = force_at(*ff, st, st.vec(kPosition));
+  EXPECT_DOUBLE_EQ(f[0], -10.0);  // compressed by 1: pushes point 0 away from point 1
+  EXPECT_DOUBLE_EQ(f[3], 10.0);
+}
+
+TEST(TrianglePressureForceField, ConstantForceIsPressureTimesRestAreaOverThree) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <MeshTopology name="topo" position="0 0 0  2 0 0  0 3 0  5 5 5" triangles="0 1 2  1 3 2"/>
+    <MechanicalObject name="dofs"/>
+    <TrianglePressureForceField name="ff" triangleList="0" pressure="0.3 0 -6"/>
+  </Node>)");
+  auto* ff = get<TrianglePressureForceField>(*s.root, "ff");
+  ASSERT_NE(ff, nullptr);
+  ASSERT_EQ(ff->state(), ComponentState::valid);
+  MechanicalState& st = *s.root->mechanical_state;
+  std::vector<double> x = st.vec(kPosition);
+  x[0] += 1.0;  // the force uses the rest area (3), not the current one
+  const auto f = force_at(*ff, st, x);
+  for (int v = 0; v < 3; ++v) {
+    EXPECT_NEAR(f[3 * v], 0.3, 1e-15);
+    EXPECT_DOUBLE_EQ(f[3 * v + 2], -6.0);
+  }
+  EXPECT_DOUBLE_EQ(f[9], 0.0);
 }

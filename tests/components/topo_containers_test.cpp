@@ -1,6 +1,8 @@
 // Topology containers (spec/mechanics.md §5.1, §5.6): derived element lists
 // and neighbourhood queries on small meshes, checked against hand-derived lists.
+#include "topology/cube_topology.h"
 #include "topology/edge_set_topology_container.h"
+#include "topology/sparse_grid_topology.h"
 #include "topology/hexahedron_set_topology_container.h"
 #include "topology/mesh_topology.h"
 #include "topology/point_set_topology_container.h"
@@ -142,4 +144,88 @@ TEST(TopoDynamicContainers, ModifierFindsItsContainer) {
   auto* m = get<TriangleSetTopologyModifier>(*child, "m");
   ASSERT_NE(m, nullptr);
   EXPECT_EQ(m->container(), get<MeshContainer>(*s.root, "c"));
+}
+
+TEST(TopoCubeTopology, SurfaceLatticeWithoutInteriorPoints) {
+  auto s = load(R"(<Node><CubeTopology name="c" nx="3" ny="3" nz="3" min="0 0 0" max="2 2 2"/></Node>)");
+  auto& c = find<MeshTopology>(s, "c");
+  // 2 full layers of 9 points, then the ring of the middle layer.
+  ASSERT_EQ(c.nb_points(), 26u);
+  EXPECT_EQ(c.point(18), Vec3(0, 0, 1));
+  EXPECT_EQ(c.point(21), Vec3(0, 2, 1));
+  EXPECT_EQ(c.point(24), Vec3(0, 1, 1));
+  EXPECT_EQ(c.point(25), Vec3(2, 1, 1));
+  EXPECT_EQ(c.point(13), Vec3(1, 1, 2));
+  EXPECT_EQ(c.edges().size(), 48u);
+  EXPECT_EQ(c.edges()[0], (Edge{0, 1}));
+  ASSERT_EQ(c.quads().size(), 24u);
+  EXPECT_EQ(c.quads()[0], (Quad{0, 3, 4, 1}));    // z = 0 face, (x,y) → (x,y+1) → (x+1,y+1) → (x+1,y)
+  EXPECT_EQ(c.quads()[4], (Quad{9, 10, 13, 12}));  // z = nz-1 face, opposite winding
+  EXPECT_TRUE(c.triangles().empty());
+}
+
+TEST(TopoSparseGrid, ClosedCubeSurfaceKeepsTheInnerCell) {
+  // Surface of the cube [-1,1]³; 4³ grid points over its bounding box (+1 % margin each side).
+  auto s = load(R"(<Node><SparseGridTopology name="g" n="4 4 4"
+      position="-1 -1 -1  1 -1 -1  1 1 -1  -1 1 -1  -1 -1 1  1 -1 1  1 1 1  -1 1 1"
+      triangles="0 2 1  0 3 2  4 5 6  4 6 7  0 1 5  0 5 4  1 2 6  1 6 5  2 3 7  2 7 6  3 0 4  3 4 7"/></Node>)");
+  auto& g = find<SparseGridTopology>(s, "g");
+  const auto& h = g.hexahedra();
+  ASSERT_EQ(h.size(), 27u);
+  ASSERT_EQ(g.nb_points(), 64u);
+  for (std::size_t i = 0; i < 26; ++i) {
+    EXPECT_EQ(g.cell_type(i), SparseGridTopology::CellType::boundary) << i;
+    EXPECT_FLOAT_EQ(g.mass_coef(i), 0.5f);
+  }
+  EXPECT_EQ(g.cell_type(26), SparseGridTopology::CellType::inside);
+  EXPECT_FLOAT_EQ(g.stiffness_coef(26), 1.0f);
+  // Points are numbered in lexicographic (x, y, z) order: z varies fastest.
+  EXPECT_NEAR(g.point(0)[0], -1.02, 1e-12);
+  EXPECT_NEAR(g.point(1)[2], -1.02 + 2.04 / 3, 1e-12);
+  EXPECT_EQ(h[26][0], 16u + 4u + 1u);  // inner cell starts at grid point (1,1,1)
+  EXPECT_EQ(h[26][6], 32u + 8u + 2u);  // and ends at (2,2,2)
+  double fx = -1, fy = -1, fz = -1;
+  EXPECT_EQ(g.find_cube(Vec3(0, 0, 0), fx, fy, fz), 26u);
+  EXPECT_NEAR(fx, 0.5, 1e-12);
+  EXPECT_NEAR(fz, 0.5, 1e-12);
+  EXPECT_TRUE(g.edges().empty());
+  EXPECT_TRUE(g.quads().empty());
+}
+
+TEST(TopoMeshTopology, LoadsItsFilename) {
+  sinew::test::TempDir dir;
+  const std::string file = dir.write("m.obj",
+                                     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 2 0\n"
+                                     "f 1 2 3\nf 1 2 3 4\nf 1 2 3 5 4\nf 2 1\n");
+  auto s = load("<Node><MeshTopology name=\"t\" filename=\"" + file + "\"/></Node>");
+  auto& t = find<MeshTopology>(s, "t");
+  EXPECT_EQ(t.nb_points(), 5u);
+  EXPECT_EQ(t.point(4), Vec3(0.5, 2, 0));
+  // Triangles, the fan of the pentagon, the quad, and the 2-vertex face as a sorted edge.
+  EXPECT_EQ(t.triangles(), (std::vector<Triangle>{{0, 1, 2}, {0, 1, 2}, {0, 2, 4}, {0, 4, 3}}));
+  EXPECT_EQ(t.quads(), (std::vector<Quad>{{0, 1, 2, 3}}));
+  EXPECT_EQ(t.edges(), (std::vector<Edge>{{0, 1}}));
+}
+
+TEST(TopoMeshTopology, MissingFileIsAnError) {
+  auto s = test::build(R"(<Node><MeshTopology name="t" filename="/nonexistent/none.obj"/></Node>)");
+  ASSERT_TRUE(s.root);
+  init_root(*s.root);
+  bool reported = false;
+  for (const Message& m : s.root->diagnostics().messages())
+    reported = reported || (m.severity == Severity::error && Diagnostics::format(m).find("none.obj") != std::string::npos);
+  EXPECT_TRUE(reported);
+}
+
+TEST(TopoDynamicContainers, IndexBeyondThePointsIsReported) {
+  auto s = test::build(R"(<Node><TriangleSetTopologyContainer name="t" position="0 0 0  1 0 0  0 1 0"
+                                 triangles="0 1 2  0 2 5"/></Node>)");
+  ASSERT_TRUE(s.root);
+  init_root(*s.root);
+  EXPECT_TRUE(test::any_contains(test::messages(s.root->diagnostics(), Severity::warning),
+                                 "uses point 5 but the topology has 3 points"));
+  // The neighbourhood buffers stay usable.
+  auto& t = find<TriangleSetTopologyContainer>(s, "t");
+  EXPECT_EQ(t.triangles_around_vertex().size(), 6u);
+  EXPECT_EQ(t.triangles_around_vertex()[5], (std::vector<unsigned>{1}));
 }

@@ -183,3 +183,24 @@ TEST(TopoHexa2Tetra, IntoAMeshTopologyDerivesItsEdgesLazily) {
   EXPECT_EQ(m.edges().size(), 19u);
   EXPECT_EQ(m.edges()[0], (Edge{0, 5}));
 }
+
+TEST(TopoMesh2Point, PointsFromVerticesThenEdges) {
+  auto s = load(R"(<Node>
+      <EdgeSetTopologyContainer name="in" position="0 0 0  2 0 0  2 4 0" edges="0 1  1 2"/>
+      <Node name="p">
+        <PointSetTopologyContainer name="out"/>
+        <Mesh2PointTopologicalMapping input="@../in" output="@out" pointBaryCoords="0 0 1"
+                                      edgeBaryCoords="0.5 0 0  0.25 0 0" copyEdges="true"/>
+      </Node>
+    </Node>)");
+  auto& out = find<MeshContainer>(*s.root->find_child_named("p"), "out");
+  ASSERT_EQ(out.nb_points(), 7u);
+  // One point per vertex (offset by pointBaryCoords), then per edge one point per edgeBaryCoords entry.
+  EXPECT_EQ(out.point(0), Vec3(0, 0, 1));
+  EXPECT_EQ(out.point(2), Vec3(2, 4, 1));
+  EXPECT_EQ(out.point(3), Vec3(1, 0, 0));
+  EXPECT_EQ(out.point(4), Vec3(0.5, 0, 0));
+  EXPECT_EQ(out.point(5), Vec3(2, 2, 0));
+  EXPECT_EQ(out.point(6), Vec3(2, 1, 0));
+  EXPECT_EQ(out.edges(), (std::vector<Edge>{{0, 1}, {1, 2}}));
+}
