@@ -159,7 +159,7 @@ Mat3 frame_from_hexahedron(const std::array<Vec3, 8>& n) {
 }
 
 template <class E>
-bool element_stiffness(const std::array<Vec3, E::kNodes>& X, double lambda, double mu, double* K) {
+bool element_stiffness(const std::array<Vec3, E::kNodes>& X, double lambda, double mu, double* K, bool* inverted) {
   constexpr int N = E::kNodes;
   constexpr int D = 3 * N;
   double C[6][6];
@@ -174,7 +174,9 @@ bool element_stiffness(const std::array<Vec3, E::kNodes>& X, double lambda, doub
     double g[N][3];
     E::gradient(points[q], g);
     const fe::Mat3d J = fe::jacobian<N>(Xa, g);
-    const double detJ = std::abs(fe::determinant(J));
+    const double signed_det = fe::determinant(J);
+    if (inverted && signed_det < 0) *inverted = true;
+    const double detJ = std::abs(signed_det);
     fe::Mat3d Ji;
     if (!fe::invert(J, Ji)) return false;
     // ∇N_i = J⁻ᵀ·∇_ref N_i
@@ -210,14 +212,16 @@ bool element_stiffness(const std::array<Vec3, E::kNodes>& X, double lambda, doub
   return true;
 }
 
-template bool element_stiffness<fe::Tetra4>(const std::array<Vec3, 4>&, double, double, double*);
-template bool element_stiffness<fe::Hexa8>(const std::array<Vec3, 8>&, double, double, double*);
+template bool element_stiffness<fe::Tetra4>(const std::array<Vec3, 4>&, double, double, double*, bool*);
+template bool element_stiffness<fe::Hexa8>(const std::array<Vec3, 8>&, double, double, double*, bool*);
 
 template <class E>
 std::vector<ElementIssue> ElementFEM<E>::init(std::span<const Vec3> X0, std::span<const std::array<unsigned, N>> elems,
                                               std::span<const double> young, std::span<const double> poisson,
                                               RotationMethod method) {
   std::vector<ElementIssue> issues;
+  std::size_t n_inverted = 0;
+  int first_inverted = -1;
   rotation = method;
   const std::size_t ne = elems.size();
   elements.assign(elems.begin(), elems.end());
@@ -246,9 +250,14 @@ std::vector<ElementIssue> ElementFEM<E>::init(std::span<const Vec3> X0, std::spa
     if (!ok) continue;
     double lambda, mu;
     lame_parameters(young[e], poisson[e], lambda, mu);
-    if (!element_stiffness<E>(X, lambda, mu, K[e].data())) {
+    bool inv = false;
+    if (!element_stiffness<E>(X, lambda, mu, K[e].data(), &inv)) {
       issues.push_back({static_cast<int>(e), true, "degenerate element (zero Jacobian determinant at rest)"});
       continue;
+    }
+    if (inv) {
+      if (n_inverted == 0) first_inverted = static_cast<int>(e);
+      ++n_inverted;
     }
     // Rest frame: SOFA computes the rotation of the rest shape against the identity, then transposes it.
     Vec3 Xa[N];
@@ -261,6 +270,10 @@ std::vector<ElementIssue> ElementFEM<E>::init(std::span<const Vec3> X0, std::spa
       F0[e] = mult_transpose(frame_from_hexahedron(n), Mat3::Identity()).transpose();
     }
   }
+  if (n_inverted > 0)
+    issues.push_back({first_inverted, false,
+                      std::to_string(n_inverted) + " element(s) inverted at rest (negative Jacobian determinant; "
+                      "first one reported), integrated with |det J| as SOFA does"});
   return issues;
 }
 

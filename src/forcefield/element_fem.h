@@ -47,8 +47,11 @@ void lame_parameters(double young, double poisson, double& lambda, double& mu);
 // nodes, dof order (node0 x,y,z, node1 x,y,z, ...), row-major D×D with
 // D = 3·E::kNodes. Returns false when the Jacobian is singular at some
 // quadrature point (degenerate element); K is then left unspecified.
+// *inverted (if given) is set when det J < 0 at some quadrature point
+// (SOFA integrates with |det J| anyway).
 template <class E>
-bool element_stiffness(const std::array<Vec3, E::kNodes>& X, double lambda, double mu, double* K);
+bool element_stiffness(const std::array<Vec3, E::kNodes>& X, double lambda, double mu, double* K,
+                       bool* inverted = nullptr);
 
 // Frames (rows = axes, world → local) used by the triangle and hexahedron rotation methods.
 Mat3 frame_from_3_points(const Vec3& p0, const Vec3& p1, const Vec3& p2);

@@ -4,11 +4,12 @@
 #pragma once
 
 #include "core/roles.h"
+#include "core/rotation_finder.h"
 #include "forcefield/hexa_fem.h"
 
 namespace sinew {
 
-class HexahedronFEMForceField final : public ForceField {
+class HexahedronFEMForceField final : public ForceField, public RotationFinder {
  public:
   Field<std::vector<double>> young_modulus{this, "youngModulus", {5000.0},
                                            "Young's modulus (Pa), one value or one per element", "Material"};
@@ -30,6 +31,9 @@ class HexahedronFEMForceField final : public ForceField {
   bool build_stiffness(MatrixSink& K) override;
 
   const fem::HexaFEM& kernel() const { return fem_; }
+  // Per-point rotations for the Warp/PrecomputedWarp preconditioners (SOFA getRotations).
+  void node_rotations(std::span<Mat3> out) const override { fem_.node_rotations(out); }
+  MechanicalState* rotation_state() const override { return mstate.get(); }
 
  private:
   fem::HexaFEM fem_;

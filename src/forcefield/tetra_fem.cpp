@@ -637,14 +637,15 @@ void TetraFEM::von_mises(std::span<const Vec3> x, int mode, std::vector<double>&
   if (shape_inv.size() != ne) return;
   for (std::size_t e = 0; e < ne; ++e) {
     const auto& t = tetra[e];
-    const Eigen::Matrix4d& shf = shape_inv[e];
+    // TetrahedralCorotational only computes its shape functions for the large method (zero otherwise).
+    const Eigen::Matrix4d shf = mode == 3 && method != TetraMethod::large ? Eigen::Matrix4d::Zero() : shape_inv[e];
     double U[12];
     if (mode == 2) {
       for (int k = 0; k < 4; ++k)
         for (int c = 0; c < 3; ++c) U[3 * k + c] = x[t[k]][c] - X0[t[k]][c];
     } else {
       Mat3 R;
-      if (method == TetraMethod::large) {
+      if (method == TetraMethod::large || mode == 3) {
         R = tetra_frame_large(x[t[0]], x[t[1]], x[t[2]]);
         Vec3 p[4];
         for (int k = 0; k < 4; ++k) p[k] = mul(R, x[t[k]]);
@@ -668,7 +669,7 @@ void TetraFEM::von_mises(std::span<const Vec3> x, int mode, std::vector<double>&
           for (int c = 0; c < 3; ++c) U[3 * k + c] = q[k][c] - p[c];
         }
       }
-      if (method != TetraMethod::small) rot[e] = R.transpose();
+      if (method != TetraMethod::small && mode == 1) rot[e] = R.transpose();
     }
     Mat3 g;
     for (int k = 0; k < 3; ++k)
@@ -687,7 +688,8 @@ void TetraFEM::von_mises(std::span<const Vec3> x, int mode, std::vector<double>&
         for (int j = 0; j < 3; ++j) strain(i, j) = 0.5 * (g(i, j) + g(j, i));
     }
     const double vs[6] = {strain(0, 0), strain(1, 1), strain(2, 2), strain(1, 2), strain(0, 2), strain(0, 1)};
-    const double lambda = lame_lambda[e], mu = lame_mu[e];
+    // TetrahedralCorotational (mode 3) uses its material matrix entries, already divided by 36·V0.
+    const double lambda = mode == 3 ? K[e].o : lame_lambda[e], mu = mode == 3 ? K[e].s : lame_mu[e];
     double sg[6];
     double tr = 0.0;
     for (int k = 0; k < 3; ++k) {

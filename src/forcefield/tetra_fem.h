@@ -138,8 +138,10 @@ struct TetraFEM {
 
   // von Mises stress (output only, SOFA computeVonMisesStress): mode 1 from the
   // corotational small strain of Δ (large/polar/svd; updates rot like SOFA),
-  // mode 2 from the Green strain of x − X0. Per element, then averaged over
-  // the incident elements of each point. Needs prepare_von_mises() first.
+  // mode 2 from the Green strain of x − X0, mode 3 TetrahedralCorotational's
+  // variant (always the large frame and partial Δ, material entries divided by
+  // 36·V0, zero unless method large). Per element, then averaged over the
+  // incident elements of each point. Needs prepare_von_mises() first.
   void prepare_von_mises(std::span<const double> E, std::span<const double> nu);
   void von_mises(std::span<const Vec3> x, int mode, std::vector<double>& per_element,
                  std::vector<double>& per_node);

@@ -26,6 +26,7 @@ void TetrahedralCorotationalFEMForceField::init() {
   fem_.update_stiffness_matrix = update_stiffness_matrix.get();
   fem_.assembling = assembling.get();
   fem_.symmetric_update = true;
+  in.von_mises = compute_von_mises_stress.get();
   if (!setup_tetra_fem(*this, in, fem_)) {
     state_ = ComponentState::invalid;
     return;
@@ -40,6 +41,9 @@ void TetrahedralCorotationalFEMForceField::add_force(const MechParams& p) {
   const std::vector<double>& x = s.vec(p.x);
   std::vector<double>& f = s.vec(p.f);
   fem_.add_force(as_vec3(x), as_vec3(f));
+  // SOFA computes it after each addForce, from the state's current positions.
+  if (compute_von_mises_stress.value() && state() == ComponentState::valid)
+    fem_.von_mises(as_vec3(s.vec(kPosition)), 3, von_mises_per_element.edit(), von_mises_per_node.edit());
 }
 
 void TetrahedralCorotationalFEMForceField::add_dforce(const MechParams& p, double kfactor) {

@@ -5,11 +5,12 @@
 #pragma once
 
 #include "core/roles.h"
+#include "core/rotation_finder.h"
 #include "forcefield/tetra_fem.h"
 
 namespace sinew {
 
-class TetrahedronFEMForceField final : public ForceField {
+class TetrahedronFEMForceField final : public ForceField, public RotationFinder {
  public:
   Field<std::vector<double>> young_modulus{this, "youngModulus", {5000.0},
                                            "FEM Young's Modulus in Hooke's law (Pa), one value or one per element",
@@ -77,7 +78,8 @@ class TetrahedronFEMForceField final : public ForceField {
 
   const fem::TetraFEM& kernel() const { return fem_; }
   // Per-point rotations for the Warp/PrecomputedWarp preconditioners (SOFA getRotations).
-  void node_rotations(std::span<Mat3> out) const { fem_.node_rotations(out, !fem_.split_from_hexahedra); }
+  void node_rotations(std::span<Mat3> out) const override { fem_.node_rotations(out, !fem_.split_from_hexahedra); }
+  MechanicalState* rotation_state() const override { return mstate.get(); }
 
  private:
   void update_von_mises();

@@ -48,6 +48,27 @@ inline bool local_j(double bx, double cx, double cy, std::array<double, 18>& J) 
   J[4 * 3 + 2] = J[5 * 3 + 1] = bx * inv;
   return true;
 }
+// J from the x, y coordinates of B − A and C − A (SOFA's computeStrainDisplacementGlobal
+// with A at the origin); the determinant is |AB × AC|. False when ≈ 0.
+inline bool global_j(const Vec3& b, const Vec3& c, std::array<double, 18>& J) {
+  const double det = std::sqrt(dot(cross(b, c), cross(b, c)));
+  if (std::fabs(det) < std::numeric_limits<double>::epsilon()) return false;
+  const double inv = 1 / det;
+  const double x13 = (0 - c[0]) * inv, x21 = (b[0] - 0) * inv, x32 = (c[0] - b[0]) * inv;
+  const double y12 = (0 - b[1]) * inv, y23 = (b[1] - c[1]) * inv, y31 = (c[1] - 0) * inv;
+  J = {y23, 0, x32, 0, x32, y23, y31, 0, x13, 0, x13, y31, y12, 0, x21, 0, x21, y12};
+  return true;
+}
+// Full products (small method): strain = Jᵀ·D, stress = K·strain, F = J·stress.
+inline void kernel_full(const std::array<double, 18>& J, const std::array<double, 9>& K, const double* D, double* F) {
+  double e[3], s[3];
+  for (int j = 0; j < 3; ++j) {
+    e[j] = J[0 * 3 + j] * D[0];
+    for (int i = 1; i < 6; ++i) e[j] += J[i * 3 + j] * D[i];
+  }
+  for (int i = 0; i < 3; ++i) s[i] = K[i * 3] * e[0] + K[i * 3 + 1] * e[1] + K[i * 3 + 2] * e[2];
+  for (int i = 0; i < 6; ++i) F[i] = J[i * 3] * s[0] + J[i * 3 + 1] * s[1] + J[i * 3 + 2] * s[2];
+}
 // SOFA's sparse kernel: strain = Jᵀ·D, stress = K·strain, F = J·stress (zero pattern of J and K).
 inline void kernel(const std::array<double, 18>& J, const std::array<double, 9>& K, const double* D, double* F) {
   auto j = [&](int r, int c) { return J[r * 3 + c]; };
@@ -74,10 +95,12 @@ void TriangularFEMForceField::init() {
     state_ = ComponentState::invalid;
     return;
   }
-  if (method.value() != "large") {
-    msg_error("method \"" + method.value() + "\" is not supported (only \"large\")");
-    state_ = ComponentState::invalid;
-    return;
+  if (method.value() == "small") {
+    small_ = true;
+  } else {
+    if (method.value() != "large")
+      msg_warning("method \"" + method.value() + "\" is unknown (large or small): using large");
+    small_ = false;
   }
   if (rotated_initial_elements.is_set() || initial_transformation.is_set()) {
     msg_error("rotatedInitialElements/initialTransformation are not supported");
@@ -126,6 +149,24 @@ bool TriangularFEMForceField::rebuild() {
     e.b = t[1];
     e.c = t[2];
     const Vec3 pA = at(x0.data(), t[0]), pB = at(x0.data(), t[1]), pC = at(x0.data(), t[2]);
+    if (small_) {
+      // Rest shape kept in world axes, A at the origin; area = |AB × AC| / 2.
+      const Vec3 rb = minus(pB, pA), rc = minus(pC, pA);
+      e.rbx = rb[0];
+      e.rby = rb[1];
+      e.rcx = rc[0];
+      e.rcy = rc[1];
+      if (!global_j(rb, rc, e.J)) {
+        msg_error("triangle " + std::to_string(i) + " is degenerate in its rest shape (zero area)");
+        return false;
+      }
+      e.area = std::sqrt(dot(cross(rb, rc), cross(rb, rc))) * 0.5;
+      const double y = ey.size() > i ? ey[i] : ey[0];
+      const double p = pr.size() > i ? pr[i] : pr[0];
+      const double sc = (y / (1.0 - p * p)) * e.area;
+      e.D = {1 * sc, p * sc, 0 * sc, p * sc, 1 * sc, 0 * sc, 0 * sc, 0 * sc, ((1.0 - p) * 0.5) * sc};
+      continue;
+    }
     const Mat3 R01 = frame_large(pA, pB, pC);
     e.rotation = R01.transpose();
     const Vec3 rb = mul(R01, minus(pB, pA)), rc = mul(R01, minus(pC, pA));
@@ -153,6 +194,10 @@ void TriangularFEMForceField::add_force(const MechParams& p) {
   MechanicalState& s = *mstate;
   const double* x = s.vec(p.x).data();
   double* f = s.vec(p.f).data();
+  if (small_) {
+    add_force_small(x, f);
+    return;
+  }
   for (std::size_t i = 0; i < el_.size(); ++i) {
     Element& e = el_[i];
     const Vec3 pA = at(x, e.a), pB = at(x, e.b), pC = at(x, e.c);
@@ -182,6 +227,10 @@ void TriangularFEMForceField::add_dforce(const MechParams& p, double kfactor) {
   MechanicalState& s = *mstate;
   const double* dx = s.vec(p.dx).data();
   double* df = s.vec(p.df).data();
+  if (small_) {
+    add_dforce_small(dx, df, kfactor);
+    return;
+  }
   for (const Element& e : el_) {
     const Mat3& rot = e.rotation;  // local → world; its transpose maps world → local
     const unsigned v[3] = {e.a, e.b, e.c};
@@ -197,6 +246,50 @@ void TriangularFEMForceField::add_dforce(const MechParams& p, double kfactor) {
       const double l0 = -1.0 * F[2 * k], l1 = -1.0 * F[2 * k + 1];
       for (int c = 0; c < 3; ++c)
         df[3 * v[k] + c] += (rot(c, 0) * l0 + rot(c, 1) * l1 + rot(c, 2) * 0) * kfactor;
+    }
+  }
+}
+
+void TriangularFEMForceField::add_force_small(const double* x, double* f) {
+  for (std::size_t i = 0; i < el_.size(); ++i) {
+    Element& e = el_[i];
+    const Vec3 pA = at(x, e.a);
+    const Vec3 db = minus(at(x, e.b), pA), dc = minus(at(x, e.c), pA);
+    const double D[6] = {0, 0, e.rbx - db[0], e.rby - db[1], e.rcx - dc[0], e.rcy - dc[1]};
+    std::array<double, 18> J;
+    if (!global_j(db, dc, J)) {
+      msg_error("triangle " + std::to_string(i) + " is degenerate (zero area) at step " +
+                std::to_string(node()->step_index) + ": the force field stops");
+      state_ = ComponentState::invalid;
+      el_.clear();
+      return;
+    }
+    double F[6];
+    kernel_full(J, e.D, D, F);
+    const unsigned v[3] = {e.a, e.b, e.c};
+    for (int k = 0; k < 3; ++k) {
+      f[3 * v[k]] += F[2 * k];
+      f[3 * v[k] + 1] += F[2 * k + 1];
+      f[3 * v[k] + 2] += 0;
+    }
+    e.J = J;
+  }
+}
+
+void TriangularFEMForceField::add_dforce_small(const double* dx, double* df, double kfactor) const {
+  for (const Element& e : el_) {
+    const unsigned v[3] = {e.a, e.b, e.c};
+    double D[6];
+    for (int k = 0; k < 3; ++k) {
+      D[2 * k] = dx[3 * v[k]];
+      D[2 * k + 1] = dx[3 * v[k] + 1];
+    }
+    double F[6];
+    kernel_full(e.J, e.D, D, F);
+    for (int k = 0; k < 3; ++k) {
+      df[3 * v[k]] += (-1.0 * F[2 * k]) * kfactor;
+      df[3 * v[k] + 1] += (-1.0 * F[2 * k + 1]) * kfactor;
+      df[3 * v[k] + 2] += 0 * kfactor;
     }
   }
 }
@@ -233,7 +326,7 @@ void register_triangular_fem_force_field(Registry& r) {
   ComponentInfo info;
   info.name = "TriangularFEMForceField";
   info.category = "ForceField/FEM";
-  info.description = "corotational plane-stress triangles (J rebuilt from the current shape)";
+  info.description = "plane-stress triangles, corotational (large: J rebuilt from the current shape) or small";
   info.templates = {"Vec3d"};
   info.default_template = "Vec3d";
   info.requirement = Requirement::state;

@@ -1,7 +1,8 @@
-// TriangularFEMForceField (method "large"): corotational plane-stress
-// triangles whose strain-displacement matrix J is rebuilt from the current
-// local shape every step (spec/mechanics.md §2.7, trap 13). The frame of a
-// triangle has x along AB and z along AB×AC.
+// TriangularFEMForceField: plane-stress triangles. Method "large" (default):
+// corotational, the strain-displacement matrix J is rebuilt from the current
+// local shape every step (spec/mechanics.md §2.7, trap 13); the frame of a
+// triangle has x along AB and z along AB×AC. Method "small": J from the
+// current x, y coordinates (no rotation), forces in the xy plane (as SOFA).
 #pragma once
 
 #include <array>
@@ -39,6 +40,7 @@ class TriangularFEMForceField final : public ForceField {
   struct Element {
     unsigned a = 0, b = 0, c = 0;
     double rbx = 0, rcx = 0, rcy = 0;  // rest B, C in the rest frame (A at the origin)
+    double rby = 0;                    // small: rest B.y (A at the origin, world axes)
     double area = 0;
     std::array<double, 9> D{};         // material matrix × area (row-major 3×3)
     std::array<double, 18> J{};        // strain-displacement (6×3 row-major), from the last add_force
@@ -55,6 +57,9 @@ class TriangularFEMForceField final : public ForceField {
 
  private:
   bool rebuild();
+  void add_force_small(const double* x, double* f);
+  void add_dforce_small(const double* dx, double* df, double kfactor) const;
+  bool small_ = false;
   std::vector<Element> el_;
   std::size_t n_triangles_ = 0;
 };

@@ -1212,7 +1212,8 @@ bool base64_decode(std::string_view in, std::vector<unsigned char>& out) {
   return true;
 }
 
-bool xml_array(const XmlElem& da, const std::string& header_type, VtkArray& a, std::string& why) {
+bool xml_array(const XmlElem& da, const std::string& header_type, VtkArray& a, std::string& why,
+               bool ascii_as_double = false) {
   const std::string type = da.attr("type");
   bool is_signed = true;
   const int size = vtk_type_size(type, &a.is_float, &is_signed);
@@ -1221,7 +1222,7 @@ bool xml_array(const XmlElem& da, const std::string& header_type, VtkArray& a, s
   if (format == "ascii") {
     Cursor c{da.text};
     for (std::string_view t = c.next(); !t.empty(); t = c.next()) {
-      if (a.is_float && size == 4) {
+      if (a.is_float && size == 4 && !ascii_as_double) {
         float f;
         if (!to_number(t, f)) return (why = "bad number '" + std::string(t) + "'"), false;
         a.v.push_back(f);
@@ -1279,7 +1280,8 @@ std::optional<MeshData> read_vtk_xml(const std::string& path, const std::string&
   const XmlElem* pts = piece->child("Points");
   if (!pts || !pts->child("DataArray")) return err("no <Points> data");
   VtkArray points;
-  if (!xml_array(*pts->child("DataArray"), header_type, points, why)) return err("Points: " + why);
+  // SOFA stores XML point coordinates as Float64 (ASCII values are not rounded to float).
+  if (!xml_array(*pts->child("DataArray"), header_type, points, why, true)) return err("Points: " + why);
   set_points(m, points);
   VtkCells vc;
   auto read_cells = [&](const XmlElem& cells, int fixed_type) -> bool {
@@ -1303,32 +1305,14 @@ std::optional<MeshData> read_vtk_xml(const std::string& path, const std::string&
     if (cells && !read_cells(*cells, -1)) return err("Cells: " + why);
     if (!vtk_to_mesh(m, vc, path, error, opt.flip_normals)) return std::nullopt;
   } else {
-    // PolyData: Lines as polylines/edges, Polys as polygons.
-    for (const char* section : {"Lines", "Polys"}) {
-      const XmlElem* s = piece->child(section);
-      if (!s) continue;
-      vc = VtkCells{};
-      const bool polys = std::string(section) == "Polys";
-      if (!read_cells(*s, polys ? 7 : 4)) return err(std::string(section) + ": " + why);
-      if (polys) {
-        // Same rule as legacy POLYGONS: 4 vertices → quad, else fan triangles.
-        std::vector<double> packed;
-        for (std::size_t c = 0; c < vc.offsets.size(); ++c) {
-          const std::size_t b = c == 0 ? 0 : static_cast<std::size_t>(vc.offsets[c - 1]);
-          const std::size_t e = static_cast<std::size_t>(vc.offsets[c]);
-          if (e < b || e > vc.cells.size()) return err("Polys: bad offsets");
-          packed.push_back(static_cast<double>(e - b));
-          packed.insert(packed.end(), vc.cells.begin() + b, vc.cells.begin() + e);
-        }
-        VtkCells pc;
-        pc.polygons = std::move(packed);
-        pc.has_polygons = true;
-        if (!vtk_to_mesh(m, pc, path, error, opt.flip_normals)) return std::nullopt;
-      } else {
-        for (std::size_t c = 0; c < vc.offsets.size(); ++c)
-          if (c < vc.types.size()) vc.types[c] = (c == 0 ? vc.offsets[0] : vc.offsets[c] - vc.offsets[c - 1]) == 2 ? 3 : 4;
-        if (!vtk_to_mesh(m, vc, path, error, opt.flip_normals)) return std::nullopt;
+    // PolyData: only Polys are read (as SOFA): 2 vertices → line, 3 → triangle, 4 → quad, more → polyline.
+    if (const XmlElem* polys = piece->child("Polys")) {
+      if (!read_cells(*polys, 0)) return err("Polys: " + why);
+      for (std::size_t c = 0; c < vc.offsets.size(); ++c) {
+        const double n = c == 0 ? vc.offsets[0] : vc.offsets[c] - vc.offsets[c - 1];
+        vc.types[c] = n == 2 ? 3 : n == 3 ? 5 : n == 4 ? 9 : 4;
       }
+      if (!vtk_to_mesh(m, vc, path, error, opt.flip_normals)) return std::nullopt;
     }
   }
   for (const char* section : {"PointData", "CellData"}) {
@@ -1339,12 +1323,7 @@ std::optional<MeshData> read_vtk_xml(const std::string& path, const std::string&
       if (!xml_array(da, header_type, a, why)) return err(std::string(section) + ": " + why);
       long long comps = 1;
       to_int(da.attr("NumberOfComponents", "1"), comps);
-      const std::string name = da.attr("Name");
-      if (std::string(section) == "PointData" && (name == "Normals" || s->attr("Normals") == name) && comps == 3) {
-        m.normals.resize(a.v.size() / 3);
-        for (std::size_t i = 0; i < m.normals.size(); ++i) m.normals[i] = Vec3(a.v[3 * i], a.v[3 * i + 1], a.v[3 * i + 2]);
-        continue;
-      }
+      const std::string name = da.attr("Name");  // normals too stay point data (SOFA's XML reader)
       (std::string(section) == "PointData" ? m.point_data : m.cell_data)
           .push_back({name, static_cast<int>(comps), std::move(a.v)});
     }

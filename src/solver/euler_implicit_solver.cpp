@@ -32,7 +32,7 @@ void EulerImplicitSolver::solve(double dt, int x_result, int v_result) {
   // Right-hand side.
   ops.v_eq(b_, kForce);
   if (!first) {
-    ops.add_mbk_v(b_, -rM, 0.0, h * tr + rK, /*clear=*/false);
+    ops.add_mbk_v(b_, -rM, 0.0, h * tr + rK);  // clears b on mapped states first (SOFA default clear=true)
     ops.v_teq(b_, h);
   }
   ops.project_response(b_);

@@ -168,6 +168,18 @@ struct Lexicographic {
 
 // ---------------------------------------------------------------- grid
 
+void SparseGridTopology::Grid::set(const VecNi<3>& dims, const Vec3& lo, const Vec3& hi) {
+  // RegularGridTopology::setSize + setPos (every axis has at least 2 points here).
+  n = dims;
+  p0 = lo;
+  dx = Vec3((hi[0] - lo[0]) / (n[0] - 1), 0, 0);
+  dy = Vec3(0, (hi[1] - lo[1]) / (n[1] - 1), 0);
+  dz = Vec3(0, 0, (hi[2] - lo[2]) / (n[2] - 1));
+  inv_dx2 = 1 / dx.dot(dx);
+  inv_dy2 = 1 / dy.dot(dy);
+  inv_dz2 = 1 / dz.dot(dz);
+}
+
 int SparseGridTopology::Grid::find(const Vec3& pos, double& x, double& y, double& z) const {
   if (n[0] < 2 || n[1] < 2 || n[2] < 2) return -1;
   const Vec3 p = pos - p0;
@@ -204,8 +216,8 @@ void SparseGridTopology::generate() {
     if (dims[a] < 2) dims[a] = 2;
   n.set(dims);
 
-  if (nb_virtual_finer_levels.value() > 0) {
-    msg_error("nbVirtualFinerLevels > 0 is not supported yet");
+  if (nb_virtual_finer_levels.value() < 0) {
+    msg_error("nbVirtualFinerLevels must be >= 0 (got " + std::to_string(nb_virtual_finer_levels.value()) + ")");
     build_failed_ = true;
     return;
   }
@@ -270,23 +282,49 @@ void SparseGridTopology::generate() {
         build_failed_ = true;
         return;
       }
-  if (!build_from_surface(vertices, facets)) {
-    build_failed_ = true;
-    return;
+  Level level;
+  const int levels = nb_virtual_finer_levels.value();
+  if (levels == 0) {
+    if (!build_from_surface(level, dims, min.get(), max.get(), cell_width.value(), only_inside_cells.value(), vertices,
+                            facets)) {
+      build_failed_ = true;
+      return;
+    }
+  } else {
+    // Virtual finer levels: the finest grid has (n-1)·2^levels + 1 points per axis (same box),
+    // then it is coarsened `levels` times.
+    VecNi<3> fine = dims;
+    for (int i = 0; i < levels; ++i)
+      for (int a = 0; a < 3; ++a) fine[a] = (fine[a] - 1) * 2 + 1;
+    Level finest;
+    if (!build_from_surface(finest, fine, min.get(), max.get(), 0.0, false, vertices, facets)) {
+      build_failed_ = true;
+      return;
+    }
+    for (int i = 0; i < levels; ++i) {
+      Level coarser;
+      coarsen(i == 0 ? finest : level, coarser);
+      level = std::move(coarser);
+    }
   }
-  const std::size_t nh = hexahedra_f.value().size();
-  stiffness_coefs_.resize(nh);
-  mass_coefs_.resize(nh);
-  for (std::size_t i = 0; i < nh; ++i) {
-    const bool half = types_[i] == CellType::boundary && fill_weighted.value();
-    stiffness_coefs_[i] = mass_coefs_[i] = half ? 0.5f : 1.0f;
-  }
+  min.set(level.min);
+  max.set(level.max);
+  n.set(level.grid.n);
+  grid_ = level.grid;
+  types_ = std::move(level.types);
+  stiffness_coefs_ = std::move(level.stiffness);
+  mass_coefs_ = std::move(level.mass);
+  sparse_of_regular_ = std::move(level.sparse_of_regular);
+  position.set(std::move(level.points));
+  hexahedra_f.set(std::move(level.hexas));
+  set_nb_points(position.value().size());
 }
 
-bool SparseGridTopology::build_from_surface(const std::vector<Vec3>& vertices,
-                                            const std::vector<std::vector<unsigned>>& facets) {
+bool SparseGridTopology::build_from_surface(Level& L, VecNi<3> dims, Vec3 lo_in, Vec3 hi_in, double width, bool only_inside,
+                                            const std::vector<Vec3>& vertices,
+                                            const std::vector<std::vector<unsigned>>& facets) const {
   // 1. Bounding box with a 1 % margin when min and max are both zero.
-  if (min.get() == Vec3::Zero() && max.get() == Vec3::Zero()) {
+  if (lo_in == Vec3::Zero() && hi_in == Vec3::Zero()) {
     Vec3 lo = vertices[0], hi = vertices[0];
     for (std::size_t w = 1; w < vertices.size(); ++w)
       for (int a = 0; a < 3; ++a) {
@@ -295,26 +333,20 @@ bool SparseGridTopology::build_from_surface(const std::vector<Vec3>& vertices,
       }
     Vec3 diff = hi - lo;
     diff /= 100.0;
-    min.set(lo - diff);
-    max.set(hi + diff);
+    lo_in = lo - diff;
+    hi_in = hi + diff;
   }
-  if (cell_width.value() != 0) {
-    const double w = cell_width.value();
-    const Vec3 diff = max.get() - min.get();
-    n.set(VecNi<3>(static_cast<int>(std::ceil(diff[0] / w)) + 1, static_cast<int>(std::ceil(diff[1] / w)) + 1,
-                   static_cast<int>(std::ceil(diff[2] / w)) + 1));
+  if (width != 0) {
+    const Vec3 diff = hi_in - lo_in;
+    dims = VecNi<3>(static_cast<int>(std::ceil(diff[0] / width)) + 1, static_cast<int>(std::ceil(diff[1] / width)) + 1,
+                    static_cast<int>(std::ceil(diff[2] / width)) + 1);
   }
   // 2. The regular grid (SOFA's setSize + setPos).
-  Grid& g = grid_;
-  g.n = n.get();
-  const Vec3 lo = min.get(), hi = max.get();
-  g.p0 = lo;
-  g.dx = Vec3((hi[0] - lo[0]) / (g.n[0] - 1), 0, 0);
-  g.dy = Vec3(0, (hi[1] - lo[1]) / (g.n[1] - 1), 0);
-  g.dz = Vec3(0, 0, (hi[2] - lo[2]) / (g.n[2] - 1));
-  g.inv_dx2 = 1 / g.dx.dot(g.dx);
-  g.inv_dy2 = 1 / g.dy.dot(g.dy);
-  g.inv_dz2 = 1 / g.dz.dot(g.dz);
+  L.min = lo_in;
+  L.max = hi_in;
+  Grid& g = L.grid;
+  g.set(dims, lo_in, hi_in);
+  const Vec3 lo = lo_in, hi = hi_in;
   const int nc = g.nb_cells();
   std::vector<CellType> type(static_cast<std::size_t>(nc), CellType::inside);
   auto cell_coord = [&](int c, int& x, int& y, int& z) {
@@ -414,48 +446,111 @@ bool SparseGridTopology::build_from_surface(const std::vector<Vec3>& vertices,
 
   // 6. Sparse cells: boundary cells first, then inside cells, in regular-cell order; points
   // are the distinct corners numbered in lexicographic order of their coordinates.
-  sparse_of_regular_.assign(static_cast<std::size_t>(nc), -1);
+  L.sparse_of_regular.assign(static_cast<std::size_t>(nc), -1);
   std::vector<int> cells;
   for (int c = 0; c < nc; ++c)
-    if (type[static_cast<std::size_t>(c)] == CellType::boundary && !only_inside_cells.value()) {
-      sparse_of_regular_[static_cast<std::size_t>(c)] = static_cast<int>(cells.size());
+    if (type[static_cast<std::size_t>(c)] == CellType::boundary && !only_inside) {
+      L.sparse_of_regular[static_cast<std::size_t>(c)] = static_cast<int>(cells.size());
       cells.push_back(c);
-      types_.push_back(CellType::boundary);
+      L.types.push_back(CellType::boundary);
     }
   for (int c = 0; c < nc; ++c)
     if (type[static_cast<std::size_t>(c)] == CellType::inside) {
-      sparse_of_regular_[static_cast<std::size_t>(c)] = static_cast<int>(cells.size());
+      L.sparse_of_regular[static_cast<std::size_t>(c)] = static_cast<int>(cells.size());
       cells.push_back(c);
-      types_.push_back(CellType::inside);
+      L.types.push_back(CellType::inside);
     }
+  std::vector<std::array<int, 3>> coords(cells.size());
+  for (std::size_t h = 0; h < cells.size(); ++h) cell_coord(cells[h], coords[h][0], coords[h][1], coords[h][2]);
+  number_points(L, coords);
+  // 7. Boundary cells weigh half when fillWeighted.
+  for (CellType t : L.types) {
+    const float coef = t == CellType::boundary && fill_weighted.value() ? 0.5f : 1.0f;
+    L.stiffness.push_back(coef);
+    L.mass.push_back(coef);
+  }
+  return true;
+}
+
+void SparseGridTopology::number_points(Level& L, const std::vector<std::array<int, 3>>& cells) {
+  // Points are the distinct corners, numbered in lexicographic order of their coordinates.
   static constexpr int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                         {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   std::map<Vec3, unsigned, Lexicographic> index_of;
   std::vector<std::array<Vec3, 8>> corners(cells.size());
   for (std::size_t h = 0; h < cells.size(); ++h) {
-    int x, y, z;
-    cell_coord(cells[h], x, y, z);
+    const auto& c = cells[h];
     for (int k = 0; k < 8; ++k) {
-      corners[h][k] = g.point(x + kCorner[k][0], y + kCorner[k][1], z + kCorner[k][2]);
+      corners[h][k] = L.grid.point(c[0] + kCorner[k][0], c[1] + kCorner[k][1], c[2] + kCorner[k][2]);
       index_of[corners[h][k]] = 0;
     }
   }
-  auto& pts = position.edit();
-  pts.clear();
+  L.points.clear();
   unsigned counter = 0;
   for (auto& [p, idx] : index_of) {
     idx = counter++;
-    pts.push_back(p);
+    L.points.push_back(p);
   }
-  auto& hexas = hexahedra_f.edit();
-  hexas.clear();
+  L.hexas.clear();
   for (const auto& cs : corners) {
     Hexa hx;
     for (int k = 0; k < 8; ++k) hx[k] = index_of[cs[k]];
-    hexas.push_back(hx);
+    L.hexas.push_back(hx);
   }
-  set_nb_points(pts.size());
-  return true;
+}
+
+void SparseGridTopology::coarsen(const Level& fine, Level& coarse) {
+  // SOFA's buildFromFiner: each coarse cell groups 2×2×2 fine cells (x outer, then y, then z).
+  const VecNi<3> fn = fine.grid.n;
+  const VecNi<3> cn(fn[0] / 2 + 1, fn[1] / 2 + 1, fn[2] / 2 + 1);
+  coarse.min = fine.min;
+  Vec3 hi;
+  hi[0] = coarse.min[0] + (cn[0] - 1) * 2.0 * fine.grid.dx[0];
+  hi[1] = coarse.min[1] + (cn[1] - 1) * 2.0 * fine.grid.dy[1];
+  hi[2] = coarse.min[2] + (cn[2] - 1) * 2.0 * fine.grid.dz[2];
+  coarse.max = hi;
+  coarse.grid.set(cn, coarse.min, coarse.max);
+  coarse.sparse_of_regular.assign(static_cast<std::size_t>(coarse.grid.nb_cells()), -1);
+  coarse.types.clear();
+  coarse.stiffness.clear();
+  coarse.mass.clear();
+  std::vector<std::array<int, 3>> cells;
+  for (int i = 0; i < cn[0] - 1; ++i)
+    for (int j = 0; j < cn[1] - 1; ++j)
+      for (int k = 0; k < cn[2] - 1; ++k) {
+        int children[8];
+        for (int idx = 0; idx < 8; ++idx) {
+          const int x = 2 * i + (idx & 1), y = 2 * j + (idx & 2) / 2, z = 2 * k + (idx & 4) / 4;
+          children[idx] = x < fn[0] - 1 && y < fn[1] - 1 && z < fn[2] - 1
+                              ? fine.sparse_of_regular[static_cast<std::size_t>(fine.grid.cube(x, y, z))]
+                              : -1;
+        }
+        bool inside = true, outside = true;
+        for (int w = 0; w < 8 && (inside || outside); ++w) {
+          if (children[w] < 0) {
+            inside = false;
+          } else if (fine.types[static_cast<std::size_t>(children[w])] == CellType::boundary) {
+            inside = outside = false;
+          } else if (fine.types[static_cast<std::size_t>(children[w])] == CellType::inside) {
+            outside = false;
+          }
+        }
+        if (outside) continue;
+        coarse.types.push_back(inside ? CellType::inside : CellType::boundary);
+        coarse.sparse_of_regular[static_cast<std::size_t>(coarse.grid.cube(i, j, k))] = static_cast<int>(cells.size());
+        cells.push_back({i, j, k});
+        float stiffness = 0, mass = 0;
+        for (int w = 0; w < 8; ++w)
+          if (children[w] >= 0) {
+            stiffness += fine.stiffness[static_cast<std::size_t>(children[w])];
+            mass += fine.mass[static_cast<std::size_t>(children[w])];
+          }
+        stiffness /= 8.0;
+        mass /= 8.0;
+        coarse.stiffness.push_back(stiffness);
+        coarse.mass.push_back(mass);
+      }
+  number_points(coarse, cells);
 }
 
 // ---------------------------------------------------------------- look-ups

@@ -2,8 +2,8 @@
 // inside a closed surface mesh, as hexahedra (spec/mechanics.md §5.4).
 // Built from `fileTopology` (a surface mesh: .obj, .msh, .vtk, .stl) or from
 // `position` + `triangles`/`quads`. Only hexahedra and points are produced
-// (no edges, quads or triangles). Voxel files (.raw, .voxel) and virtual
-// finer levels are not supported (an error says so).
+// (no edges, quads or triangles). Voxel files (.raw, .voxel) are not
+// supported (an error says so).
 #pragma once
 
 #include "topology/mesh_topology.h"
@@ -62,8 +62,25 @@ class SparseGridTopology final : public MeshTopology {
     Vec3 point(int i, int j, int k) const { return p0 + dx * i + dy * j + dz * k; }
     // Cell containing p, -1 if outside; (x,y,z) receive the continuous grid coordinates.
     int find(const Vec3& p, double& x, double& y, double& z) const;
+    void set(const VecNi<3>& dims, const Vec3& lo, const Vec3& hi);
   };
-  bool build_from_surface(const std::vector<Vec3>& vertices, const std::vector<std::vector<unsigned>>& facets);
+  // One level of the grid hierarchy (the component itself, or a virtual finer level).
+  struct Level {
+    Grid grid;
+    Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+    std::vector<CellType> types;
+    std::vector<float> stiffness, mass;
+    std::vector<int> sparse_of_regular;
+    std::vector<Vec3> points;
+    std::vector<Hexa> hexas;
+  };
+  // Finest level from a surface mesh (SOFA's buildFromTriangleMesh); false after an error.
+  bool build_from_surface(Level& out, VecNi<3> dims, Vec3 min, Vec3 max, double cell_width, bool only_inside,
+                          const std::vector<Vec3>& vertices, const std::vector<std::vector<unsigned>>& facets) const;
+  // Next coarser level (SOFA's buildFromFiner).
+  static void coarsen(const Level& fine, Level& coarse);
+  // Points = distinct corners of `cells` (grid coordinates) in lexicographic order; hexahedra.
+  static void number_points(Level& level, const std::vector<std::array<int, 3>>& cells);
 
   Grid grid_;
   std::vector<CellType> types_;

@@ -405,6 +405,28 @@ TEST(IoVtk, XmlAsciiAndBase64) {
   EXPECT_EQ(m->tetrahedra, (std::vector<Tetra>{{0, 1, 2, 3}}));
 }
 
+// PolyData: Polys by size (3 → triangle, 4 → quad, more → polyline); ASCII points are kept as doubles.
+TEST(IoVtk, XmlPolyData) {
+  TempDir t;
+  std::string err;
+  auto m = io::read_vtk(t.write("p.vtp", R"(<VTKFile type="PolyData" version="0.1">
+  <PolyData><Piece NumberOfPoints="5" NumberOfPolys="3">
+    <Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 1 1 0 0 1 0 0.1 0.5 0</DataArray></Points>
+    <Polys>
+      <DataArray type="Int32" Name="connectivity" format="ascii">0 1 2  0 1 2 3  0 1 2 3 4</DataArray>
+      <DataArray type="Int32" Name="offsets" format="ascii">3 7 12</DataArray>
+    </Polys>
+  </Piece></PolyData>
+</VTKFile>)"),
+                        &err);
+  ASSERT_TRUE(m) << err;
+  EXPECT_EQ(m->positions[4][0], 0.1);
+  EXPECT_EQ(m->triangles, (Tris{{0, 1, 2}}));
+  EXPECT_EQ(m->quads, (std::vector<Quad>{{0, 1, 2, 3}}));
+  ASSERT_EQ(m->polylines.size(), 1u);
+  EXPECT_EQ(m->polylines[0].size(), 5u);
+}
+
 TEST(IoVtk, BadCellIndexIsAnError) {
   TempDir t;
   std::string err;

@@ -229,3 +229,18 @@ TEST(TopoDynamicContainers, IndexBeyondThePointsIsReported) {
   EXPECT_EQ(t.triangles_around_vertex().size(), 6u);
   EXPECT_EQ(t.triangles_around_vertex()[5], (std::vector<unsigned>{1}));
 }
+
+TEST(TopoSparseGrid, VirtualFinerLevelIsCoarsened) {
+  // Finest level: 3³ points (2×2×2 boundary cells), coarsened once into one boundary cell
+  // whose coefficients average its 8 children (0.5 each).
+  auto s = load(R"(<Node><SparseGridTopology name="g" n="2 2 2" nbVirtualFinerLevels="1"
+      position="-1 -1 -1  1 -1 -1  1 1 -1  -1 1 -1  -1 -1 1  1 -1 1  1 1 1  -1 1 1"
+      triangles="0 2 1  0 3 2  4 5 6  4 6 7  0 1 5  0 5 4  1 2 6  1 6 5  2 3 7  2 7 6  3 0 4  3 4 7"/></Node>)");
+  auto& g = find<SparseGridTopology>(s, "g");
+  ASSERT_EQ(g.hexahedra().size(), 1u);
+  EXPECT_EQ(g.nb_points(), 8u);
+  EXPECT_EQ(g.cell_type(0), SparseGridTopology::CellType::boundary);
+  EXPECT_FLOAT_EQ(g.mass_coef(0), 0.5f);
+  EXPECT_EQ(g.hexahedra()[0], (Hexa{0, 4, 6, 2, 1, 5, 7, 3}));  // lexicographic numbering of the corners
+  EXPECT_NEAR(g.point(7)[0], 1.02, 1e-12);
+}

@@ -177,6 +177,14 @@ TEST(NfemElementStiffness, DegenerateElementIsReported) {
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].element, 0);
   EXPECT_TRUE(issues[0].fatal);
+  // Inverted (negatively oriented) element: computed anyway, reported as a warning.
+  const std::vector<Vec3> Y{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+  const std::vector<std::array<unsigned, 4>> inv{{0, 1, 2, 3}, {0, 2, 1, 3}};
+  const std::vector<double> E2{1000, 1000}, nu2{0.3, 0.3};
+  const auto issues3 = fem.init(Y, inv, E2, nu2, RotationMethod::triangle);
+  ASSERT_EQ(issues3.size(), 1u);
+  EXPECT_EQ(issues3[0].element, 1);
+  EXPECT_FALSE(issues3[0].fatal);
   const std::vector<std::array<unsigned, 4>> bad{{0, 1, 2, 7}};
   const auto issues2 = fem.init(X, bad, E, nu, RotationMethod::none);
   ASSERT_EQ(issues2.size(), 1u);

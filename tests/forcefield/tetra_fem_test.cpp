@@ -407,6 +407,10 @@ TEST(TetraFEMKernel, VonMisesOfAUniformStretch) {
     if (method != TetraMethod::small) {
       fem.von_mises(x, 1, vme, vmn);
       EXPECT_NEAR(vme[0], 2 * mu * eps, 1e-6 * 2 * mu * eps);
+      // TetrahedralCorotational's variant: material entries already divided by 36·V0; zero unless large.
+      fem.von_mises(x, 3, vme, vmn);
+      const double expect = method == TetraMethod::large ? 2 * mu * eps / (36.0 / 6.0) : 0.0;
+      EXPECT_NEAR(vme[0], expect, 1e-6 * 2 * mu * eps);
     }
   }
 }
