@@ -37,6 +37,8 @@ class ElementFEMForceFieldBase : public ForceField {
   explicit ElementFEMForceFieldBase(FemElementKind kind) : kind_(kind) {}
 
   void init() override;
+  // Material or rest shape changed: recompute the element stiffnesses (SOFA's update callback).
+  void reinit() override { init(); }
   void add_force(const MechParams& p) override;
   void add_dforce(const MechParams& p, double kfactor) override;
   bool build_stiffness(MatrixSink& K) override;

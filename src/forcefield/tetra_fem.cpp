@@ -1,5 +1,10 @@
 #include "forcefield/tetra_fem.h"
 
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
+
 #include <cmath>
 #include <limits>
 #include <string>
@@ -373,6 +378,7 @@ std::vector<TetraIssue> TetraFEM::init(std::span<const Vec3> X, std::span<const 
       }
     }
   }
+  build_incidence(X.size());
   return issues;
 }
 
@@ -386,16 +392,14 @@ bool TetraFEM::forces_supported() const {
   return true;
 }
 
-void TetraFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
-  const std::size_t ne = tetra.size();
+template <class Sink>
+void TetraFEM::force_range(std::size_t e_begin, std::size_t e_end, std::span<const Vec3> x, Sink& sink) {
   const bool plastic_on = plasticity.max_threshold > 0;
   // SOFA: svd with computeGlobalMatrix returns before anything; small with
   // plasticity and computeGlobalMatrix adds nothing.
-  if (assembling && method == TetraMethod::svd) return;
-  if (assembling && plastic_on && method == TetraMethod::small) return;
   double D[12], F[12];
   Mat12 jkjt, S, SR;
-  for (std::size_t e = 0; e < ne; ++e) {
+  for (std::size_t e = e_begin; e < e_end; ++e) {
     const auto& t = tetra[e];
     const int a = t[0], b = t[1], c = t[2], d = t[3];
     switch (method) {
@@ -416,12 +420,7 @@ void TetraFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
             F[i] = r;
           }
         }
-        for (int k = 0; k < 4; ++k) {
-          Vec3& fk = f[t[k]];
-          fk[0] += F[3 * k];
-          fk[1] += F[3 * k + 1];
-          fk[2] += F[3 * k + 2];
-        }
+        for (int k = 0; k < 4; ++k) sink.add(e, k, t[k], F[3 * k], F[3 * k + 1], F[3 * k + 2]);
         continue;
       }
       case TetraMethod::large: {
@@ -471,10 +470,7 @@ void TetraFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
           const Mat3& r = rot[e];
           for (int k = 0; k < 4; ++k) {
             const Vec3 fk = mul(r, Vec3(F[3 * k], F[3 * k + 1], F[3 * k + 2]));
-            Vec3& out = f[t[k]];
-            out[0] += fk[0];
-            out[1] += fk[1];
-            out[2] += fk[2];
+            sink.add(e, k, t[k], fk[0], fk[1], fk[2]);
           }
         } else if (!plastic_on) {
           J[e](6, 0) = 0;
@@ -487,12 +483,7 @@ void TetraFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
             for (int j = 0; j < 12; ++j) r += S(i, j) * D[j];
             F[i] = r;
           }
-          for (int k = 0; k < 4; ++k) {
-            Vec3& out = f[t[k]];
-            out[0] += F[3 * k];
-            out[1] += F[3 * k + 1];
-            out[2] += F[3 * k + 2];
-          }
+          for (int k = 0; k < 4; ++k) sink.add(e, k, t[k], F[3 * k], F[3 * k + 1], F[3 * k + 2]);
         }
         continue;
       }
@@ -524,10 +515,7 @@ void TetraFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
         const Mat3& r = rot[e];
         for (int k = 0; k < 4; ++k) {
           const Vec3 fk = mul(r, Vec3(F[3 * k], F[3 * k + 1], F[3 * k + 2]));
-          Vec3& out = f[t[k]];
-          out[0] += fk[0];
-          out[1] += fk[1];
-          out[2] += fk[2];
+          sink.add(e, k, t[k], fk[0], fk[1], fk[2]);
         }
         continue;
       }
@@ -535,25 +523,22 @@ void TetraFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
   }
 }
 
-void TetraFEM::add_dforce(std::span<const Vec3> dx, std::span<Vec3> df, double kfactor) const {
-  const std::size_t ne = tetra.size();
+template <class Sink>
+void TetraFEM::dforce_range(std::size_t e_begin, std::size_t e_end, std::span<const Vec3> dx, double kfactor,
+                            Sink& sink) const {
   double X[12], F[12];
   if (method == TetraMethod::small) {
-    for (std::size_t e = 0; e < ne; ++e) {
+    for (std::size_t e = e_begin; e < e_end; ++e) {
       const auto& t = tetra[e];
       for (int k = 0; k < 4; ++k)
         for (int i = 0; i < 3; ++i) X[3 * k + i] = dx[t[k]][i];
       tetra_force_scaled(J[e], K[e], X, kfactor, F);
-      for (int k = 0; k < 4; ++k) {
-        Vec3& out = df[t[k]];
-        out[0] += -F[3 * k];
-        out[1] += -F[3 * k + 1];
-        out[2] += -F[3 * k + 2];
-      }
+      // x + (−F) and x − F are the same IEEE operation.
+      for (int k = 0; k < 4; ++k) sink.sub(e, k, t[k], F[3 * k], F[3 * k + 1], F[3 * k + 2]);
     }
     return;
   }
-  for (std::size_t e = 0; e < ne; ++e) {
+  for (std::size_t e = e_begin; e < e_end; ++e) {
     const auto& t = tetra[e];
     const Mat3& r = rot[e];
     for (int k = 0; k < 4; ++k) {
@@ -564,13 +549,100 @@ void TetraFEM::add_dforce(std::span<const Vec3> dx, std::span<Vec3> df, double k
     }
     tetra_force_scaled(J[e], K[e], X, kfactor, F);
     for (int k = 0; k < 4; ++k) {
-      Vec3& out = df[t[k]];
       const double* Fk = F + 3 * k;
-      out[0] -= r(0, 0) * Fk[0] + r(0, 1) * Fk[1] + r(0, 2) * Fk[2];
-      out[1] -= r(1, 0) * Fk[0] + r(1, 1) * Fk[1] + r(1, 2) * Fk[2];
-      out[2] -= r(2, 0) * Fk[0] + r(2, 1) * Fk[1] + r(2, 2) * Fk[2];
+      sink.sub(e, k, t[k], r(0, 0) * Fk[0] + r(0, 1) * Fk[1] + r(0, 2) * Fk[2],
+               r(1, 0) * Fk[0] + r(1, 1) * Fk[1] + r(1, 2) * Fk[2], r(2, 0) * Fk[0] + r(2, 1) * Fk[1] + r(2, 2) * Fk[2]);
     }
   }
+}
+
+namespace {
+// Writes element contributions straight into the output (sequential order).
+struct DirectSink {
+  std::span<Vec3> out;
+  void add(std::size_t, int, int node, double a, double b, double c) {
+    Vec3& o = out[node];
+    o[0] += a, o[1] += b, o[2] += c;
+  }
+  void sub(std::size_t, int, int node, double a, double b, double c) {
+    Vec3& o = out[node];
+    o[0] -= a, o[1] -= b, o[2] -= c;
+  }
+};
+// Stores them per (element, corner); gather_slots adds them per point in element order.
+struct SlotSink {
+  std::vector<std::array<Vec3, 4>>& slots;
+  void add(std::size_t e, int k, int, double a, double b, double c) { slots[e][k] = Vec3(a, b, c); }
+  void sub(std::size_t e, int k, int, double a, double b, double c) { slots[e][k] = Vec3(a, b, c); }
+};
+constexpr std::size_t kGrain = 512;
+}  // namespace
+
+bool TetraFEM::parallel() const {
+  return tetra.size() >= kParallelMinElements &&
+         tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) > 1 &&
+         tbb::this_task_arena::max_concurrency() > 1;
+}
+
+void TetraFEM::build_incidence(std::size_t n_points) {
+  // Point → (element·4 + corner) slots in element order: gathering them in this
+  // order adds contributions exactly as the sequential loop does.
+  node_start.assign(n_points + 1, 0);
+  for (const auto& t : tetra)
+    for (int k = 0; k < 4; ++k) ++node_start[t[k] + 1];
+  for (std::size_t p = 0; p < n_points; ++p) node_start[p + 1] += node_start[p];
+  node_slot.assign(node_start[n_points], 0);
+  std::vector<std::uint32_t> fill(node_start.begin(), node_start.end() - 1);
+  for (std::size_t e = 0; e < tetra.size(); ++e)
+    for (int k = 0; k < 4; ++k) node_slot[fill[tetra[e][k]]++] = static_cast<std::uint32_t>(e * 4 + k);
+  slots.assign(tetra.size(), {});
+}
+
+void TetraFEM::gather_slots(std::span<Vec3> out, bool subtract) const {
+  const std::size_t n = std::min(out.size(), node_start.empty() ? 0 : node_start.size() - 1);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](const auto& range) {
+    for (std::size_t p = range.begin(); p != range.end(); ++p) {
+      Vec3& o = out[p];
+      for (std::uint32_t s = node_start[p]; s < node_start[p + 1]; ++s) {
+        const Vec3& c = slots[node_slot[s] / 4][node_slot[s] % 4];
+        if (subtract) o[0] -= c[0], o[1] -= c[1], o[2] -= c[2];
+        else o[0] += c[0], o[1] += c[1], o[2] += c[2];
+      }
+    }
+  });
+}
+
+void TetraFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
+  const bool plastic_on = plasticity.max_threshold > 0;
+  // SOFA: svd with computeGlobalMatrix returns before anything; small with
+  // plasticity and computeGlobalMatrix adds nothing.
+  if (assembling && method == TetraMethod::svd) return;
+  if (assembling && plastic_on && method == TetraMethod::small) return;
+  // Elements that add nothing leave their slots untouched: clear them first.
+  if (!parallel() || assembling) {
+    DirectSink sink{f};
+    force_range(0, tetra.size(), x, sink);
+    return;
+  }
+  for (auto& s : slots) s.fill(Vec3::Zero());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tetra.size(), kGrain), [&](const auto& range) {
+    SlotSink sink{slots};
+    force_range(range.begin(), range.end(), x, sink);
+  });
+  gather_slots(f, false);
+}
+
+void TetraFEM::add_dforce(std::span<const Vec3> dx, std::span<Vec3> df, double kfactor) const {
+  if (!parallel()) {
+    DirectSink sink{df};
+    dforce_range(0, tetra.size(), dx, kfactor, sink);
+    return;
+  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tetra.size(), kGrain), [&](const auto& range) {
+    SlotSink sink{slots};
+    dforce_range(range.begin(), range.end(), dx, kfactor, sink);
+  });
+  gather_slots(df, true);
 }
 
 void TetraFEM::node_rotations(std::span<Mat3> out, bool average) const {

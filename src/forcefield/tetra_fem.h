@@ -150,6 +150,21 @@ struct TetraFEM {
   // (n1, n2) of each element, n1 outer); blocks of shared nodes must be summed.
   template <class Sink>
   void add_stiffness_blocks(Sink&& sink) const;
+
+  // ---- parallel evaluation (bit-identical to the sequential loops)
+  static constexpr std::size_t kParallelMinElements = 4096;
+  std::vector<std::uint32_t> node_start, node_slot;   // point → (element·4 + corner) slots, CSR
+  mutable std::vector<std::array<Vec3, 4>> slots;     // per-element nodal contributions
+  void build_incidence(std::size_t n_points);
+  bool parallel() const;
+
+ private:
+  template <class Sink>
+  void force_range(std::size_t e_begin, std::size_t e_end, std::span<const Vec3> x, Sink& sink);
+  template <class Sink>
+  void dforce_range(std::size_t e_begin, std::size_t e_end, std::span<const Vec3> dx, double kfactor,
+                    Sink& sink) const;
+  void gather_slots(std::span<Vec3> out, bool subtract) const;
 };
 
 template <class Sink>

@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 #include <strings.h>
+#include <unordered_map>
 
 #include "io/sofa_quat.h"
 
@@ -508,17 +509,16 @@ std::optional<MeshData> read_gmsh(const std::string& path, std::string* error, c
     };
     long long npoints = 0;
     if (!to_int(ts.next(), npoints) || npoints < 0) return err("bad node count");
-    std::vector<int> pmap;
-    m.positions.reserve(static_cast<std::size_t>(npoints));
+    std::unordered_map<long long, int> pmap;  // node id → ordinal (ids may have holes)
+    m.positions.reserve(std::min(static_cast<std::size_t>(npoints), text.size()));
     for (long long i = 0; i < npoints; ++i) {
       long long index = 0;
       Vec3 p;
-      if (!to_int(ts.next(), index) || index < 0 || index > 100000000) return err("bad node line");
+      if (!to_int(ts.next(), index)) return err("bad node line");
       for (int k = 0; k < 3; ++k)
         if (!to_number(ts.next(), p[k])) return err("bad node coordinate");
       m.positions.push_back(p);
-      if (static_cast<long long>(pmap.size()) <= index) pmap.resize(static_cast<std::size_t>(index) + 1, 0);
-      pmap[static_cast<std::size_t>(index)] = static_cast<int>(i);
+      pmap[index] = static_cast<int>(i);
     }
     std::string_view cmd = ts.next();
     if (!starts_with(cmd, "$ENDNOD") && !starts_with(cmd, "$EndNodes"))
@@ -549,8 +549,9 @@ std::optional<MeshData> read_gmsh(const std::string& path, std::string* error, c
       for (auto& n : nodes) {
         long long t = 0;
         if (!to_int(ts.next(), t)) return err("bad element node");
-        if (t < 0 || static_cast<std::size_t>(t) >= pmap.size()) return err("element uses unknown node " + std::to_string(t));
-        n = static_cast<unsigned>(pmap[static_cast<std::size_t>(t)]);
+        const auto it = pmap.find(t);
+        if (it == pmap.end()) return err("element uses unknown node " + std::to_string(t));
+        n = static_cast<unsigned>(it->second);
       }
       if (version == 1 && gmsh_node_count(static_cast<int>(type)) != nnodes && type != 15)
         return err("element of type " + std::to_string(type) + " with " + std::to_string(nnodes) + " nodes");
@@ -576,7 +577,7 @@ std::optional<MeshData> read_gmsh(const std::string& path, std::string* error, c
       nb_nodes = static_cast<unsigned long long>(n);
     }
     ++l;
-    m.positions.reserve(nb_nodes);
+    m.positions.reserve(std::min<std::size_t>(nb_nodes, text.size()));
     for (unsigned long long b = 0; b < blocks; ++b) {
       Cursor c{line_at(l)};
       long long dim = 0, etag = 0, param = 0, n = 0;
@@ -744,6 +745,8 @@ VtkArray legacy_read(LegacyIn& in, std::size_t n, const std::string& type, int b
   bool is_signed = true;
   const int size = vtk_type_size(type, &a.is_float, &is_signed);
   if (size == 0) return a;
+  // Each value takes at least one byte (binary) or two characters (text): larger counts cannot be satisfied.
+  if (n > in.s.size()) return a;
   a.v.resize(n);
   if (binary) {
     const std::size_t bytes = n * static_cast<std::size_t>(size);
@@ -802,6 +805,7 @@ bool vtk_to_mesh(MeshData& m, const VtkCells& vc, const std::string& path, std::
     std::size_t i = 0;
     int poly = 0;
     while (i < p.size()) {
+      if (p[i] < 0) return fail(error, path + ": polygon " + std::to_string(poly) + " has a negative size");
       const auto nv = static_cast<std::size_t>(p[i]);
       ++i;
       if (i + nv > p.size()) return fail(error, path + ": polygon " + std::to_string(poly) + " is truncated");
@@ -835,11 +839,15 @@ bool vtk_to_mesh(MeshData& m, const VtkCells& vc, const std::string& path, std::
     const int t = static_cast<int>(vc.types[cell]);
     std::size_t nv = 0;
     if (!vc.offsets.empty()) {
-      i = cell == 0 ? 0 : static_cast<std::size_t>(vc.offsets[cell - 1]);
-      const std::size_t end = static_cast<std::size_t>(vc.offsets[cell]);
+      const double b0 = cell == 0 ? 0.0 : vc.offsets[cell - 1], e0 = vc.offsets[cell];
+      if (b0 < 0 || e0 < 0 || e0 > static_cast<double>(c.size()))
+        return fail(error, path + ": cell " + std::to_string(cell) + " has invalid offsets");
+      i = static_cast<std::size_t>(b0);
+      const std::size_t end = static_cast<std::size_t>(e0);
       nv = end >= i ? end - i : 0;
     } else {
       if (i >= c.size()) return fail(error, path + ": cell " + std::to_string(cell) + " is missing");
+      if (c[i] < 0) return fail(error, path + ": cell " + std::to_string(cell) + " has a negative size");
       nv = static_cast<std::size_t>(c[i]);
       ++i;
     }
@@ -1463,7 +1471,7 @@ std::optional<MeshData> read_sph(const std::string& path, std::string* error) {
         if (error) *error = where(path, line) + "bad sphere count after 'nums'";
         return std::nullopt;
       }
-      m.positions.reserve(static_cast<std::size_t>(std::min<long long>(n, 10000000)));
+      m.positions.reserve(std::min(static_cast<std::size_t>(n), text.size()));
     } else if (cmd == "sphe") {
       long long index = 0;
       double v[4] = {0, 0, 0, 1};

@@ -1,6 +1,8 @@
 // IdentityMapping: out_i = in_i (spec/mechanics.md §6.1). The output is
 // resized to the input size at init; J is the identity, Jᵀ adds the output
-// forces to the input. Visual models (OglModel) are accepted as outputs.
+// forces to the input. Between different types the first min(N_in, N_out)
+// scalars of each element are copied (Rigid3d → Vec3d: the centre and the
+// linear velocity). Visual models (OglModel) are accepted as outputs.
 #pragma once
 
 #include "mapping/mapping_base.h"
@@ -20,7 +22,7 @@ class IdentityMapping final : public MappingBase {
   bool init_mapping() override;
 
  private:
-  int cw_ = 3, dw_ = 3;  // scalars per coordinate / derivative (same on both sides)
+  int cwi_ = 3, cwo_ = 3, dwi_ = 3, dwo_ = 3;  // scalars per coordinate / derivative, input and output
 };
 
 }  // namespace sinew

@@ -24,6 +24,7 @@ class FEMMass final : public Mass {
   explicit FEMMass(ElementKind kind) : kind_(kind) {}
 
   void init() override;
+  void reinit() override { init(); }
   void add_force(const MechParams& p) override;
   void add_mdx(const MechParams& p, int res, int dx, double factor) override;
   void acc_from_f(const MechParams& p, int a, int f) override;

@@ -24,6 +24,7 @@ bool BlockCsrMatrix::in_structure(std::size_t r, std::size_t c) const {
     case Structure::general: return true;
     case Structure::diagonal: return r == c;
     case Structure::block_diagonal: return r / bs_ == c / bs_;
+    case Structure::block_tridiagonal: return r / bs_ <= c / bs_ + 1 && c / bs_ <= r / bs_ + 1;
   }
   return true;
 }

@@ -18,7 +18,7 @@ namespace sinew {
 class BlockCsrMatrix {
  public:
   // Which entries are stored (DiagonalMatrix / BlockDiagonalMatrix drop the others).
-  enum class Structure { general, diagonal, block_diagonal };
+  enum class Structure { general, diagonal, block_diagonal, block_tridiagonal };
 
   // Sets size, block size and structure; clears the pattern.
   void reset(std::size_t n, int bs, Structure s = Structure::general);

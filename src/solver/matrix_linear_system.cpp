@@ -10,7 +10,7 @@ const std::vector<std::string>& MatrixLinearSystem::matrix_templates() {
       "CompressedRowSparseMatrixd",        "CompressedRowSparseMatrixMat2x2d", "CompressedRowSparseMatrixMat3x3d",
       "CompressedRowSparseMatrixMat4x4d",  "CompressedRowSparseMatrixMat6x6d", "CompressedRowSparseMatrixMat8x8d",
       "FullMatrix",                        "SparseMatrix",                     "DiagonalMatrix",
-      "BlockDiagonalMatrixMat3x3d"};
+      "BlockDiagonalMatrixMat3x3d",        "BTDMatrix6d"};
   return t;
 }
 
@@ -18,12 +18,14 @@ int MatrixLinearSystem::block_size_of(const std::string& tmpl) {
   static const std::string prefix = "CompressedRowSparseMatrixMat";
   if (tmpl.rfind(prefix, 0) == 0 && tmpl.size() > prefix.size()) return tmpl[prefix.size()] - '0';
   if (tmpl == "BlockDiagonalMatrixMat3x3d") return 3;
+  if (tmpl == "BTDMatrix6d") return 6;
   return 1;
 }
 
 BlockCsrMatrix::Structure MatrixLinearSystem::structure_of(const std::string& tmpl) {
   if (tmpl == "DiagonalMatrix") return BlockCsrMatrix::Structure::diagonal;
   if (tmpl == "BlockDiagonalMatrixMat3x3d") return BlockCsrMatrix::Structure::block_diagonal;
+  if (tmpl == "BTDMatrix6d") return BlockCsrMatrix::Structure::block_tridiagonal;
   return BlockCsrMatrix::Structure::general;
 }
 

@@ -2,7 +2,8 @@
 // solver (spec/solvers.md §2.1, §2.4). The template names the global matrix
 // type: CompressedRowSparseMatrixd (default, scalar entries),
 // CompressedRowSparseMatrixMat{2x2,3x3,4x4,6x6,8x8}d (blocks), FullMatrix,
-// SparseMatrix, DiagonalMatrix, BlockDiagonalMatrixMat3x3d. Storage is a
+// SparseMatrix, DiagonalMatrix, BlockDiagonalMatrixMat3x3d, BTDMatrix6d
+// (blocks (i,i−1), (i,i), (i,i+1) of 6×6 only). Storage is a
 // BlockCsrMatrix whose pattern is built on the first assembly and refilled
 // in place afterwards; Diagonal types keep only their structure.
 //

@@ -190,6 +190,25 @@ TEST(MapIdentity, RigidTemplateDeducedFromStates) {
   expect_adjoint(m);
 }
 
+// Rigid3d → Vec3d copies the centres (collision points of rigid bodies).
+TEST(MapIdentity, RigidToVec3CopiesCentres) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <MechanicalObject name="in" template="Rigid3d" position="1 2 3 0 0 0.6 0.8" velocity="0.1 0.2 0.3 1 2 3"/>
+    <Node name="child">
+      <MechanicalObject name="out"/>
+      <IdentityMapping name="map"/>
+    </Node>
+  </Node>)");
+  auto& m = mapping_of(s);
+  EXPECT_EQ(m.template_name(), "Rigid3d,Vec3d");
+  EXPECT_EQ(pos(s, "out"), (std::vector<double>{1, 2, 3}));
+  EXPECT_EQ(find_named<MechanicalState>(*s.root, "out").vec(kVelocity), (std::vector<double>{0.1, 0.2, 0.3}));
+  expect_adjoint(m);
+  expect_j_is_derivative(m);
+  const auto jt = apply_jt_of(m, {4, 5, 6});
+  EXPECT_EQ(jt[0], (std::vector<double>{4, 5, 6, 0, 0, 0}));
+}
+
 // ---------------------------------------------------------------- SubsetMapping
 
 TEST(MapSubset, IndicesAndNearestPointSearch) {

@@ -1,0 +1,62 @@
+// PCGLinearSolver: preconditioned conjugate gradient, matrix-free
+// (template GraphScattered only; spec/solvers.md §3.2). Old name
+// ShewchukPCGLinearSolver (renamed table in core/registry.cpp).
+//
+// Always warm-started from the incoming x (the ODE's previous solution).
+// Stops when rᵀz ≤ tolerance·bᵀb (squared, preconditioned) or after
+// `iterations`. z = P⁻¹r is computed by the linked preconditioner (a matrix
+// linear solver) on its own linear system, which the PCG's
+// PreconditionedMatrixFreeSystem assembles every assemblingRate steps.
+#pragma once
+
+#include <vector>
+
+#include "core/roles.h"
+#include "solver/matrix_linear_solver.h"
+#include "solver/preconditioned_matrix_free_system.h"
+
+namespace sinew {
+
+class PCGLinearSolver final : public LinearSolver {
+ public:
+  Field<unsigned> iterations{this, "iterations", 25u,
+                             "Maximum number of iterations after which the iterative descent of the Conjugate "
+                             "Gradient must stop",
+                             "Solver"};
+  Field<double> tolerance{this, "tolerance", 1e-5,
+                          "Desired accuracy of the Conjugate Gradient solution evaluating: |r|²/|b|² (ratio of "
+                          "current residual norm over initial residual norm)",
+                          "Solver"};
+  Field<bool> use_precond{this, "use_precond", true, "Use a preconditioner", "Solver"};
+  Field<unsigned> update_step{this, "update_step", 1u,
+                              "deprecated: use the assemblingRate of the PreconditionedMatrixFreeSystem", "Solver"};
+  Field<bool> build_precond{this, "build_precond", true, "deprecated: has no effect", "Solver"};
+  Field<bool> parallel_inverse_product{this, "parallelInverseProduct", false, "no effect for PCG", "Solver"};
+  Link<LinearSolver> preconditioner{this, "preconditioner",
+                                    "Link towards the linear solver used to precondition the conjugate gradient"};
+  Link<Component> linear_system{this, "linearSystem", "The linear system to solve (a PreconditionedMatrixFreeSystem)"};
+
+  void init() override;
+  void bwd_init() override;
+  void handle_event(Event& e) override;
+  bool wants_events() const override { return true; }
+  void build_system(MechanicalOps& ops, double m, double b, double k) override;
+  void solve_system(MechanicalOps& ops, int x, int rhs) override;
+
+  PreconditionedMatrixFreeSystem* system() const { return system_; }
+  // Iterations of the last solve (loop passes) and its rᵀz/bᵀb history.
+  int last_iterations() const { return last_iterations_; }
+  const std::vector<double>& last_errors() const { return errors_; }
+
+ private:
+  void apply_preconditioner(MechanicalOps& ops, int z, int r);
+
+  PreconditionedMatrixFreeSystem* system_ = nullptr;
+  MatrixLinearSolver* precond_ = nullptr;
+  int r_ = -1, w_ = -1, s_ = -1;
+  int newton_iter_ = 0;
+  int last_iterations_ = 0;
+  std::vector<double> errors_;
+};
+
+}  // namespace sinew

@@ -1,0 +1,86 @@
+// Helpers of the bad-input audit (badinput_*_test.cpp): run a scene given as
+// an XML string through the same path as `sinew run` (runner::Session: load,
+// refuse on errors, init, step) and collect what happened.
+#pragma once
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/roles.h"
+#include "runner/session.h"
+#include "test_scene.h"
+
+namespace sinew::test {
+
+struct Outcome {
+  bool loaded = false;
+  bool init_ok = false;   // loading and init reported no error
+  long steps = 0;         // steps done without error
+  bool finite = true;     // every state vector (x, v) finite at the end
+  std::vector<std::string> errors, warnings;
+  std::string all() const {
+    std::string s;
+    for (const auto& e : errors) s += "  " + e + "\n";
+    for (const auto& w : warnings) s += "  " + w + "\n";
+    return s;
+  }
+  // Every error and warning.
+  std::vector<std::string> problems() const {
+    std::vector<std::string> v = errors;
+    v.insert(v.end(), warnings.begin(), warnings.end());
+    return v;
+  }
+};
+
+// Whether some message contains every needle.
+inline bool any_contains_all(const std::vector<std::string>& v, std::initializer_list<std::string_view> needles) {
+  for (const auto& s : v) {
+    bool all = true;
+    for (auto n : needles) all = all && s.find(n) != std::string::npos;
+    if (all) return true;
+  }
+  return false;
+}
+
+inline bool all_finite(Node& root) {
+  std::vector<MechanicalState*> states;
+  root.collect_down(states);
+  for (MechanicalState* s : states)
+    for (int id : {kPosition, kVelocity})
+      for (double x : s->vec(id))
+        if (!std::isfinite(x)) return false;
+  return true;
+}
+
+// Writes `xml` as scene.scn in `dir` and runs it for up to `steps` steps.
+inline Outcome run_scene_file(const std::string& path, long steps) {
+  Outcome o;
+  runner::SessionOptions opts;
+  runner::Session session(path, opts);
+  o.loaded = session.loaded();
+  o.init_ok = session.ok();
+  if (o.init_ok) {
+    for (long i = 0; i < steps; ++i)
+      if (!session.step()) break;
+    o.steps = session.steps_done();
+    o.finite = all_finite(session.root());
+  }
+  o.errors = messages(session.diagnostics(), Severity::error);
+  o.warnings = messages(session.diagnostics(), Severity::warning);
+  return o;
+}
+
+inline Outcome run_xml(const TempDir& dir, const std::string& xml, long steps = 5,
+                       const std::string& name = "scene.scn") {
+  return run_scene_file(dir.write(name, xml), steps);
+}
+
+// The product rule for a scene given bad input: either it is refused / stops
+// with an error, or it runs with finite states; never NaNs without an error.
+inline void expect_no_silent_garbage(const Outcome& o) {
+  EXPECT_TRUE(o.loaded);
+  if (o.errors.empty()) EXPECT_TRUE(o.finite) << "non-finite states without any error:\n" << o.all();
+}
+
+}  // namespace sinew::test
