@@ -16,6 +16,7 @@
 #include "components/register_all.h"
 #include "core/node.h"
 #include "core/registry.h"
+#include "core/timer.h"
 #include "io/vtk_writer.h"
 #include "regression/gzip_text.h"
 #include "runner/probes.h"
@@ -148,6 +149,7 @@ int run(const RunArgs& a) {
     }
   }
 
+  if (a.timing) timing::set_enabled(true);
   std::printf("Computing %ld iterations.\n", a.steps);
   ProgressBar bar(a.steps, a.progress);
   const auto t0 = std::chrono::steady_clock::now();
@@ -163,6 +165,11 @@ int run(const RunArgs& a) {
   const long done = session.steps_done();
   std::printf("%ld iterations done in %g s ( %g FPS).\n", done, secs, secs > 0 ? done / secs : 0.0);
   if (done > 0) std::printf("%.3f ms/step\n", 1000.0 * secs / done);
+  if (a.timing && done > 0) {
+    std::printf("%-40s %12s %10s %8s\n", "stage", "total (ms)", "ms/step", "calls");
+    for (const auto& e : timing::report())
+      std::printf("%-40s %12.2f %10.3f %8ld\n", e.name.c_str(), 1000.0 * e.seconds, 1000.0 * e.seconds / done, e.count);
+  }
   for (const auto& [file, text] : dumps) {
     std::string err;
     if (!regression::write_text_file(file, *text, false, &err)) {

@@ -16,6 +16,7 @@ struct RunArgs {
   std::string vtk;  // write the final state of the first simulated body as legacy VTK
   bool progress = true;
   int threads = 0;
+  bool timing = false;  // print where the steps spent their time
 };
 int run(const RunArgs& a);
 

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--vtk", run_args.vtk,
                       "write the final state of the first simulated body to this legacy VTK file (ParaView)");
   run_cmd->add_option("--threads", run_args.threads, "worker threads (default: all cores)");
+  run_cmd->add_flag("--timing", run_args.timing, "print the time spent in each stage of the steps");
   bool hide_progress = false;
   run_cmd->add_flag("--hideProgressBar", hide_progress, "no progress bar");
 

@@ -5,6 +5,7 @@
 #include "core/node.h"
 #include "core/registry.h"
 #include "core/simulation.h"
+#include "core/timer.h"
 
 namespace sinew {
 
@@ -13,9 +14,15 @@ void DefaultAnimationLoop::step(double dt) {
   const double t0 = root.time.value();
   const double t1 = t0 + dt;
 
-  Event begin{Event::Kind::animate_begin, dt};
-  propagate_event(root, begin);
+  SINEW_TIMED("step");
+  {
+    SINEW_TIMED("step/begin events");
+    Event begin{Event::Kind::animate_begin, dt};
+    propagate_event(root, begin);
+  }
 
+  {
+  SINEW_TIMED("step/solve");
   if (parallel_ode_solving.value()) {
     solver_nodes_.clear();
     collect_solver_nodes(root);
@@ -24,7 +31,11 @@ void DefaultAnimationLoop::step(double dt) {
   } else {
     solve(root, dt);
   }
-  project_and_propagate(root, t1);
+  }
+  {
+    SINEW_TIMED("step/project and propagate");
+    project_and_propagate(root, t1);
+  }
   end_integration(root);
   advance_time(root, dt);
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -22,6 +23,11 @@ namespace {
 // ------------------------------------------------------------------ helpers
 
 bool read_file(const std::string& path, std::string& out, std::string* error) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    if (error) *error = "'" + path + "' is a directory, not a mesh file";
+    return false;
+  }
   std::ifstream f(path, std::ios::binary);
   if (!f) {
     if (error) *error = "cannot open file '" + path + "'";
@@ -59,6 +65,7 @@ struct Cursor {
 };
 
 // Like `istream >> double`: the longest valid prefix; false when no number.
+// A whole token as a number ("1e+", "0,5" or "0.x" are errors, as they make SOFA's stream reads fail).
 template <class T>
 bool to_number(std::string_view t, T& v) {
   if (t.empty()) return false;
@@ -66,9 +73,9 @@ bool to_number(std::string_view t, T& v) {
   const char* e = t.data() + t.size();
   if (*b == '+') ++b;
   auto r = std::from_chars(b, e, v);
-  return r.ec == std::errc();
+  return r.ec == std::errc() && r.ptr == e;
 }
-bool to_int(std::string_view t, long long& v) {
+bool to_int_prefix(std::string_view t, long long& v) {
   if (t.empty()) return false;
   const char* b = t.data();
   const char* e = t.data() + t.size();
@@ -225,6 +232,12 @@ std::optional<MeshData> read_obj(const std::string& path, std::string* error, co
         nodes.push_back(vtn[0]);
         tex.push_back(vtn[1]);
         nor.push_back(vtn[2]);
+      }
+      if (nodes.size() < (tok == "f" ? 3u : 2u)) {
+        if (error)
+          *error = where(path, ln + 1) + "'" + std::string(tok) + "' with " + std::to_string(nodes.size()) +
+                   " vertices (at least " + (tok == "f" ? "3" : "2") + " expected; truncated file?)";
+        return std::nullopt;
       }
       m.face_positions.push_back(nodes);
       m.face_texcoords.push_back(tex);
@@ -467,7 +480,7 @@ std::optional<MeshData> read_gmsh(const std::string& path, std::string* error, c
     long long v = 0;
     std::string_view vs = trim(lines[1]);
     vs = vs.substr(0, vs.find(' '));
-    if (!to_int(vs, v) || v < 0) {
+    if (!to_int_prefix(vs, v) || v < 0) {
       if (error) *error = where(path, 2) + "invalid mesh format version '" + std::string(trim(lines[1])) + "'";
       return std::nullopt;
     }
@@ -508,13 +521,13 @@ std::optional<MeshData> read_gmsh(const std::string& path, std::string* error, c
       return std::nullopt;
     };
     long long npoints = 0;
-    if (!to_int(ts.next(), npoints) || npoints < 0) return err("bad node count");
+    if (!to_int_strict(ts.next(), npoints) || npoints < 0) return err("bad node count");
     std::unordered_map<long long, int> pmap;  // node id → ordinal (ids may have holes)
     m.positions.reserve(std::min(static_cast<std::size_t>(npoints), text.size()));
     for (long long i = 0; i < npoints; ++i) {
       long long index = 0;
       Vec3 p;
-      if (!to_int(ts.next(), index)) return err("bad node line");
+      if (!to_int_strict(ts.next(), index)) return err("bad node line");
       for (int k = 0; k < 3; ++k)
         if (!to_number(ts.next(), p[k])) return err("bad node coordinate");
       m.positions.push_back(p);
@@ -527,28 +540,28 @@ std::optional<MeshData> read_gmsh(const std::string& path, std::string* error, c
     if (!starts_with(cmd, "$ELM") && !starts_with(cmd, "$Elements"))
       return err("'$ELM' or '$Elements' expected, found '" + std::string(cmd) + "'");
     long long nelems = 0;
-    if (!to_int(ts.next(), nelems) || nelems < 0) return err("bad element count");
+    if (!to_int_strict(ts.next(), nelems) || nelems < 0) return err("bad element count");
     std::set<Edge> edge_set_dummy;
     for (long long e = 0; e < nelems; ++e) {
       long long index = 0, type = 0, nnodes = 0, tag = -1;
-      if (!to_int(ts.next(), index) || !to_int(ts.next(), type)) return err("bad element line");
+      if (!to_int_strict(ts.next(), index) || !to_int_strict(ts.next(), type)) return err("bad element line");
       if (version == 1) {
         long long phys = 0, elem = 0;
-        if (!to_int(ts.next(), phys) || !to_int(ts.next(), elem) || !to_int(ts.next(), nnodes) || nnodes < 0 ||
+        if (!to_int_strict(ts.next(), phys) || !to_int_strict(ts.next(), elem) || !to_int_strict(ts.next(), nnodes) || nnodes < 0 ||
             nnodes > 64)
           return err("bad element line");
       } else {
         long long ntags = 0;
-        if (!to_int(ts.next(), ntags) || ntags < 0 || ntags > 64) return err("bad element line");
+        if (!to_int_strict(ts.next(), ntags) || ntags < 0 || ntags > 64) return err("bad element line");
         for (long long t = 0; t < ntags; ++t)
-          if (!to_int(ts.next(), tag)) return err("bad element tag");
+          if (!to_int_strict(ts.next(), tag)) return err("bad element tag");
         nnodes = gmsh_node_count(static_cast<int>(type));
         if (nnodes < 0) return err("unsupported element type " + std::to_string(type));
       }
       std::vector<unsigned> nodes(static_cast<std::size_t>(nnodes));
       for (auto& n : nodes) {
         long long t = 0;
-        if (!to_int(ts.next(), t)) return err("bad element node");
+        if (!to_int_strict(ts.next(), t)) return err("bad element node");
         const auto it = pmap.find(t);
         if (it == pmap.end()) return err("element uses unknown node " + std::to_string(t));
         n = static_cast<unsigned>(it->second);
@@ -572,7 +585,7 @@ std::optional<MeshData> read_gmsh(const std::string& path, std::string* error, c
     {
       Cursor c{line_at(l)};
       long long b = 0, n = 0;
-      if (!to_int(c.next(), b) || !to_int(c.next(), n) || b < 0 || n < 0) return err(l, "bad $Nodes header");
+      if (!to_int_strict(c.next(), b) || !to_int_strict(c.next(), n) || b < 0 || n < 0) return err(l, "bad $Nodes header");
       blocks = static_cast<unsigned long long>(b);
       nb_nodes = static_cast<unsigned long long>(n);
     }
@@ -581,7 +594,7 @@ std::optional<MeshData> read_gmsh(const std::string& path, std::string* error, c
     for (unsigned long long b = 0; b < blocks; ++b) {
       Cursor c{line_at(l)};
       long long dim = 0, etag = 0, param = 0, n = 0;
-      if (!to_int(c.next(), dim) || !to_int(c.next(), etag) || !to_int(c.next(), param) || !to_int(c.next(), n) ||
+      if (!to_int_strict(c.next(), dim) || !to_int_strict(c.next(), etag) || !to_int_strict(c.next(), param) || !to_int_strict(c.next(), n) ||
           n < 0)
         return err(l, "bad node entity block header");
       ++l;
@@ -602,7 +615,7 @@ std::optional<MeshData> read_gmsh(const std::string& path, std::string* error, c
     {
       Cursor c{line_at(l)};
       long long b = 0;
-      if (!to_int(c.next(), b) || b < 0) return err(l, "bad $Elements header");
+      if (!to_int_strict(c.next(), b) || b < 0) return err(l, "bad $Elements header");
       blocks = static_cast<unsigned long long>(b);
     }
     ++l;
@@ -610,7 +623,7 @@ std::optional<MeshData> read_gmsh(const std::string& path, std::string* error, c
     for (unsigned long long b = 0; b < blocks; ++b) {
       Cursor c{line_at(l)};
       long long dim = 0, etag = 0, type = 0, n = 0;
-      if (!to_int(c.next(), dim) || !to_int(c.next(), etag) || !to_int(c.next(), type) || !to_int(c.next(), n) ||
+      if (!to_int_strict(c.next(), dim) || !to_int_strict(c.next(), etag) || !to_int_strict(c.next(), type) || !to_int_strict(c.next(), n) ||
           n < 0)
         return err(l, "bad element entity block header");
       const int nnodes = gmsh_node_count(static_cast<int>(type));
@@ -620,11 +633,11 @@ std::optional<MeshData> read_gmsh(const std::string& path, std::string* error, c
         if (l >= lines.size()) return err(l, "truncated element block");
         Cursor cc{lines[l]};
         long long tag = 0;
-        if (!to_int(cc.next(), tag)) return err(l, "bad element line");
+        if (!to_int_strict(cc.next(), tag)) return err(l, "bad element line");
         std::vector<unsigned> nodes(static_cast<std::size_t>(nnodes));
         for (auto& nd : nodes) {
           long long id = 0;
-          if (!to_int(cc.next(), id) || id < 1 || static_cast<unsigned long long>(id) > m.positions.size())
+          if (!to_int_strict(cc.next(), id) || id < 1 || static_cast<unsigned long long>(id) > m.positions.size())
             return err(l, "element uses unknown node");
           nd = static_cast<unsigned>(id - 1);
         }
@@ -652,6 +665,7 @@ struct VtkArray {
   std::vector<double> v;
   bool is_float = false;
   bool ok = false;
+  std::size_t bad_line = 0;  // text arrays: line of the token that could not be read (0: ran out of data)
   // Legacy binary arrays: the raw bytes, to decode again if the data turn out byte-swapped.
   std::string raw;
   int size = 0;
@@ -765,18 +779,20 @@ VtkArray legacy_read(LegacyIn& in, std::size_t n, const std::string& type, int b
     while (i < n && !in.eof()) {
       Cursor c{in.getline()};
       for (std::string_view t = c.next(); i < n && !t.empty(); t = c.next()) {
+        bool ok = false;
         if (a.is_float && size == 4) {
           float f;
-          if (!to_number(t, f)) break;
-          a.v[i++] = f;
+          if ((ok = to_number(t, f))) a.v[i++] = f;
         } else if (a.is_float) {
           double d;
-          if (!to_number(t, d)) break;
-          a.v[i++] = d;
+          if ((ok = to_number(t, d))) a.v[i++] = d;
         } else {
           long long k;
-          if (!to_int(t, k)) break;
-          a.v[i++] = static_cast<double>(k);
+          if ((ok = to_int_strict(t, k))) a.v[i++] = static_cast<double>(k);
+        }
+        if (!ok) {
+          a.bad_line = in.line - 1;  // the line just read
+          return a;
         }
       }
     }
@@ -957,6 +973,14 @@ std::optional<MeshData> read_vtk_legacy(const std::string& path, const std::stri
     if (error) *error = where(path, in.line) + what;
     return std::nullopt;
   };
+  // A text array that could not be read: the line of the bad value, else "end of data".
+  auto arr_err = [&](const VtkArray& a, const std::string& what) {
+    if (error)
+      *error = a.bad_line ? where(path, a.bad_line) + "bad value while reading " + what
+                          : where(path, std::min(in.line, static_cast<std::size_t>(std::count(in.s.begin(), in.s.end(), '\n') + 1))) +
+                                "unexpected end of data while reading " + what;
+    return std::nullopt;
+  };
   std::string_view line = in.getline();
   if (line.substr(0, 23) != "# vtk DataFile Version ") return err("unrecognized VTK header");
   in.getline();  // title
@@ -982,25 +1006,25 @@ std::optional<MeshData> read_vtk_legacy(const std::string& path, const std::stri
     if (kw.empty()) break;
     if (kw == "POINTS") {
       long long n = 0;
-      if (!to_int(c.next(), n) || n < 0) return err("bad POINTS line");
+      if (!to_int_strict(c.next(), n) || n < 0) return err("bad POINTS line");
       const std::string type(c.next());
       bool f = false, s = true;
       const int size = vtk_type_size(type, &f, &s);
       if (size == 0 || !f) return err("type of coordinates '" + type + "' not supported (float or double)");
       points = legacy_read(in, static_cast<std::size_t>(3 * n), type, binary);
-      if (!points.ok) return err("cannot read " + std::to_string(n) + " points");
+      if (!points.ok) return arr_err(points, std::to_string(n) + " points");
       has_points = true;
     } else if (kw == "POLYGONS") {
       long long n = 0, ni = 0;
-      if (!to_int(c.next(), n) || !to_int(c.next(), ni) || ni < 0) return err("bad POLYGONS line");
+      if (!to_int_strict(c.next(), n) || !to_int_strict(c.next(), ni) || ni < 0) return err("bad POLYGONS line");
       polygons = legacy_read(in, static_cast<std::size_t>(ni), "int", binary);
-      if (!polygons.ok) return err("cannot read polygons");
+      if (!polygons.ok) return arr_err(polygons, "polygons");
       vc.has_polygons = true;
     } else if (kw == "CELLS" || kw == "LINES") {
       long long n = 0, ni = 0;
-      if (!to_int(c.next(), n) || !to_int(c.next(), ni) || ni < 0 || n < 0) return err("bad " + kw + " line");
+      if (!to_int_strict(c.next(), n) || !to_int_strict(c.next(), ni) || ni < 0 || n < 0) return err("bad " + kw + " line");
       cells = legacy_read(in, static_cast<std::size_t>(ni), "int", binary);
-      if (!cells.ok) return err("cannot read cells");
+      if (!cells.ok) return arr_err(cells, "cells");
       vc.has_cells = true;
       vc.number_of_cells = static_cast<std::size_t>(n);
       if (kw == "LINES") {
@@ -1011,14 +1035,14 @@ std::optional<MeshData> read_vtk_legacy(const std::string& path, const std::stri
       }
     } else if (kw == "CELL_TYPES") {
       long long n = 0;
-      if (!to_int(c.next(), n) || n < 0) return err("bad CELL_TYPES line");
+      if (!to_int_strict(c.next(), n) || n < 0) return err("bad CELL_TYPES line");
       types = legacy_read(in, static_cast<std::size_t>(n), "int", binary);
-      if (!types.ok) return err("cannot read cell types");
+      if (!types.ok) return arr_err(types, "cell types");
       vc.has_types = true;
     } else if (kw == "CELL_DATA" || kw == "POINT_DATA") {
       const bool cell = kw == "CELL_DATA";
       long long nb = 0;
-      to_int(c.next(), nb);
+      to_int_strict(c.next(), nb);
       auto& out = cell ? m.cell_data : m.point_data;
       while (!in.eof()) {
         const std::size_t save_pos = in.pos, save_line = in.line;
@@ -1029,7 +1053,7 @@ std::optional<MeshData> read_vtk_legacy(const std::string& path, const std::stri
         if (ds == "SCALARS") {
           const std::string name(d.next()), type(d.next());
           long long comps = 1;
-          if (!to_int(d.next(), comps) || comps < 1) comps = 1;
+          if (!to_int_strict(d.next(), comps) || comps < 1) comps = 1;
           const std::size_t p2 = in.pos, l2 = in.line;
           Cursor lk{in.getline()};
           if (lk.next() != "LOOKUP_TABLE") in.pos = p2, in.line = l2;
@@ -1038,28 +1062,28 @@ std::optional<MeshData> read_vtk_legacy(const std::string& path, const std::stri
         } else if (ds == "NORMALS" || ds == "VECTORS") {
           const std::string name(d.next()), type(d.next());
           auto a = legacy_read(in, static_cast<std::size_t>(3 * nb), type, binary);
-          if (!a.ok) return err("cannot read " + ds + " '" + name + "'");
+          if (!a.ok) return arr_err(a, ds + " '" + name + "'");
           if (ds == "NORMALS") normals = std::move(a);
           else out.push_back({name, 3, std::move(a.v)});
         } else if (ds == "FIELD") {
           std::string fname(d.next());
           long long arrays = 0;
-          to_int(d.next(), arrays);
+          to_int_strict(d.next(), arrays);
           for (long long k = 0; k < arrays; ++k) {
             Cursor fl{in.next_nonempty()};
             const std::string name(fl.next());
             long long comps = 1, count = 0;
-            to_int(fl.next(), comps);
-            to_int(fl.next(), count);
+            to_int_strict(fl.next(), comps);
+            to_int_strict(fl.next(), count);
             const std::string type(fl.next());
             auto a = legacy_read(in, static_cast<std::size_t>(comps * count), type, binary);
-            if (!a.ok) return err("cannot read field array '" + name + "'");
+            if (!a.ok) return arr_err(a, "field array '" + name + "'");
             out.push_back({name, static_cast<int>(comps), std::move(a.v)});
           }
         } else if (ds == "LOOKUP_TABLE") {
           std::string tname(d.next());
           long long n = 0;
-          to_int(d.next(), n);
+          to_int_strict(d.next(), n);
           legacy_read(in, static_cast<std::size_t>(4 * n), binary ? "UInt8" : "Float32", binary);
         } else {
           in.pos = save_pos;
@@ -1240,7 +1264,7 @@ bool xml_array(const XmlElem& da, const std::string& header_type, VtkArray& a, s
         a.v.push_back(d);
       } else {
         long long k;
-        if (!to_int(t, k)) return (why = "bad integer '" + std::string(t) + "'"), false;
+        if (!to_int_strict(t, k)) return (why = "bad integer '" + std::string(t) + "'"), false;
         a.v.push_back(static_cast<double>(k));
       }
     }
@@ -1330,7 +1354,7 @@ std::optional<MeshData> read_vtk_xml(const std::string& path, const std::string&
       VtkArray a;
       if (!xml_array(da, header_type, a, why)) return err(std::string(section) + ": " + why);
       long long comps = 1;
-      to_int(da.attr("NumberOfComponents", "1"), comps);
+      to_int_strict(da.attr("NumberOfComponents", "1"), comps);
       const std::string name = da.attr("Name");  // normals too stay point data (SOFA's XML reader)
       (std::string(section) == "PointData" ? m.point_data : m.cell_data)
           .push_back({name, static_cast<int>(comps), std::move(a.v)});
@@ -1467,7 +1491,7 @@ std::optional<MeshData> read_sph(const std::string& path, std::string* error) {
     };
     if (cmd == "nums") {
       long long n = 0;
-      if (!to_int(ts.next(), n) || n < 0) {
+      if (!to_int_strict(ts.next(), n) || n < 0) {
         if (error) *error = where(path, line) + "bad sphere count after 'nums'";
         return std::nullopt;
       }
@@ -1475,7 +1499,7 @@ std::optional<MeshData> read_sph(const std::string& path, std::string* error) {
     } else if (cmd == "sphe") {
       long long index = 0;
       double v[4] = {0, 0, 0, 1};
-      bool ok = to_int(ts.next(), index);
+      bool ok = to_int_strict(ts.next(), index);
       for (double& x : v) ok = ok && to_number(ts.next(), x);
       if (!ok) {
         if (error) *error = where(path, line) + "bad 'sphe' line (sphe index x y z radius expected)";

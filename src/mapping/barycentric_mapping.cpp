@@ -6,6 +6,7 @@
 #include "core/node.h"
 #include "core/registry.h"
 #include "topology/regular_grid_topology.h"
+#include "topology/sparse_grid_topology.h"
 
 namespace sinew {
 
@@ -116,8 +117,10 @@ bool BarycentricMapping::init_mapping() {
   bool ok = false;
   if (dynamic_cast<RegularGridTopology*>(&topo)) {
     ok = init_regular_grid(out);
-  } else if (topo.class_name() == "SparseGridTopology" || topo.class_name() == "SparseGridRamificationTopology") {
-    msg_error("input topology " + topo.describe() + ": sparse-grid mappers are not supported yet");
+  } else if (dynamic_cast<SparseGridTopology*>(&topo)) {
+    ok = init_sparse_grid(out);
+  } else if (topo.class_name() == "SparseGridRamificationTopology") {
+    msg_error("input topology " + topo.describe() + ": the SparseGridRamificationTopology mapper is not supported yet");
     return false;
   } else {
     ok = init_mesh(out, in, is_set_container(topo));
@@ -166,6 +169,37 @@ bool BarycentricMapping::init_regular_grid(const std::vector<double>& out) {
                {pt(ix + 1, iy, iz + 1), (fx) * (1 - fy) * (fz)},
                {pt(ix, iy + 1, iz + 1), (1 - fx) * (fy) * (fz)},
                {pt(ix + 1, iy + 1, iz + 1), (fx) * (fy) * (fz)}});
+  }
+  return true;
+}
+
+bool BarycentricMapping::init_sparse_grid(const std::vector<double>& out) {
+  auto& grid = static_cast<SparseGridTopology&>(*input_topology);
+  const std::vector<Hexa>& hexas = grid.hexahedra();
+  if (hexas.empty()) {
+    msg_error("input topology " + grid.describe() + " has no volume: no barycentric mapper can be created");
+    return false;
+  }
+  mapper_ = "SparseGrid";
+  const std::size_t n_out = out.size() / 3;
+  for (std::size_t i = 0; i < n_out; ++i) {
+    const Vec3 p(out[i * 3], out[i * 3 + 1], out[i * 3 + 2]);
+    double fx = 0, fy = 0, fz = 0;
+    unsigned cube = grid.find_cube(p, fx, fy, fz);
+    if (cube == ~0u) cube = grid.find_nearest_cube(p, fx, fy, fz);
+    if (cube >= hexas.size()) {
+      msg_error("output point " + std::to_string(i) + " could not be located in " + grid.describe());
+      return false;
+    }
+    const Hexa& c = hexas[cube];
+    add_point({{c[0], (1 - fx) * (1 - fy) * (1 - fz)},
+               {c[1], (fx) * (1 - fy) * (1 - fz)},
+               {c[3], (1 - fx) * (fy) * (1 - fz)},
+               {c[2], (fx) * (fy) * (1 - fz)},
+               {c[4], (1 - fx) * (1 - fy) * (fz)},
+               {c[5], (fx) * (1 - fy) * (fz)},
+               {c[7], (1 - fx) * (fy) * (fz)},
+               {c[6], (fx) * (fy) * (fz)}});
   }
   return true;
 }

@@ -6,6 +6,8 @@
 //  - RegularGridTopology: the grid cell containing the point (computed from
 //    the grid's own origin and spacing), else the nearest cell with
 //    extrapolated coordinates; trilinear weights. No mapper without volume.
+//  - SparseGridTopology: the same with the sparse grid's findCube /
+//    findNearestCube (nearest boundary cell).
 //  - *SetTopologyContainer: hexahedra, else tetrahedra, quads, triangles;
 //    nearest element by SOFA's distance criterion; weights summed in
 //    element-node order.
@@ -46,6 +48,7 @@ class BarycentricMapping final : public MappingBase {
 
  private:
   bool init_regular_grid(const std::vector<double>& out);
+  bool init_sparse_grid(const std::vector<double>& out);
   bool init_mesh(const std::vector<double>& out, const std::vector<double>& in, bool set_container);
   void add_point(std::initializer_list<std::pair<unsigned, double>> terms);
 

@@ -4,6 +4,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "core/timer.h"
 
 namespace sinew {
 
@@ -27,7 +28,10 @@ void EulerImplicitSolver::solve(double dt, int x_result, int v_result) {
   const bool first = first_order.value();
 
   // Force at the start of the step.
-  ops.compute_force(kForce);
+  {
+    SINEW_TIMED("solve/forces");
+    ops.compute_force(kForce);
+  }
 
   // Right-hand side.
   ops.v_eq(b_, kForce);
@@ -48,8 +52,14 @@ void EulerImplicitSolver::solve(double dt, int x_result, int v_result) {
     b_fact = -tr * h;
     k_fact = -tr * h * (tr * h + rK);
   }
-  linear_solver->build_system(ops, m_fact, b_fact, k_fact);
-  linear_solver->solve_system(ops, x_, b_);
+  {
+    SINEW_TIMED("solve/build system");
+    linear_solver->build_system(ops, m_fact, b_fact, k_fact);
+  }
+  {
+    SINEW_TIMED("solve/linear solve");
+    linear_solver->solve_system(ops, x_, b_);
+  }
 
   // v_new = v + Δv (or Δv), x_new = x + h·v_new, in one loop per DOF.
   if (first) {

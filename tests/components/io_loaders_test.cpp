@@ -443,7 +443,7 @@ TEST(IoRobustness, HugeCountsAreRejected) {
   EXPECT_FALSE(io::read_vtk(t.write("h.vtk", "# vtk DataFile Version 2.0\nt\nASCII\nDATASET POLYDATA\n"
                                              "POINTS 1000000000000 float\n0 0 0\n"),
                             &err));
-  EXPECT_NE(err.find("cannot read"), std::string::npos) << err;
+  EXPECT_NE(err.find("unexpected end of data"), std::string::npos) << err;
   EXPECT_FALSE(io::read_gmsh(t.write("h.msh", "$NOD\n999999999999\n1 0 0 0\n"), &err));
   EXPECT_FALSE(io::read_gmsh(t.write("h4.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 99999999999 1 2\n"
                                               "2 1 0 99999999999\n1\n"),
