@@ -1,6 +1,7 @@
 #include "forcefield/element_fem.h"
 
 #include <cmath>
+#include <limits>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -320,6 +320,7 @@ std::vector<TetraIssue> TetraFEM::init(std::span<const Vec3> X, std::span<const 
   T0.assign(m == TetraMethod::svd ? ne : 0, Mat3::Identity());
   rest_volume = 0;
   const std::size_t np = X.size();
+  bool index_out_of_range = false;
   for (std::size_t e = 0; e < ne; ++e) {
     const auto& t = tets[e];
     bool bad = false;
@@ -328,6 +329,7 @@ std::vector<TetraIssue> TetraFEM::init(std::span<const Vec3> X, std::span<const 
     if (bad) {
       issues.push_back({static_cast<int>(e), true,
                         "node index out of range (the state has " + std::to_string(np) + " points)"});
+      index_out_of_range = true;
       continue;
     }
     const Vec3 &a = X[t[0]], &b = X[t[1]], &c = X[t[2]], &d = X[t[3]];
@@ -378,6 +380,9 @@ std::vector<TetraIssue> TetraFEM::init(std::span<const Vec3> X, std::span<const 
       }
     }
   }
+  // Elements with indices beyond the state are refused: nothing may index the
+  // state with them (the incidence lists would be written out of bounds).
+  if (index_out_of_range) tetra.clear();
   build_incidence(X.size());
   return issues;
 }

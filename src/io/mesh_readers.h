@@ -95,7 +95,9 @@ std::optional<MeshData> read_vtk(const std::string& path, std::string* error, co
 std::optional<MeshData> read_stl(const std::string& path, std::string* error, const ReadOptions& opt = {});
 // Sphere files (.sph): positions = centres, radii.
 std::optional<MeshData> read_sph(const std::string& path, std::string* error);
-// Picks the reader from the extension (.obj .msh .vtk .vtu .vtp .stl .sph, case-insensitive).
+// Object File Format (.off): "OFF", counts, vertices, faces "n i0 … in-1" (3 → triangle, 4 → quad, others skipped).
+std::optional<MeshData> read_off(const std::string& path, std::string* error, const ReadOptions& opt = {});
+// Picks the reader from the extension (.obj .msh .vtk .vtu .vtp .stl .sph .off, case-insensitive).
 std::optional<MeshData> read_mesh(const std::string& path, std::string* error, const ReadOptions& opt = {});
 
 // MeshLoader post-processing (spec/mechanics.md §7.1), in SOFA's order.

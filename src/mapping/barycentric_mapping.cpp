@@ -35,7 +35,7 @@ struct Base3 {
 };
 
 // Base from three edge vectors e0, e1, e2 (the rows of m; SOFA inverts mᵀ).
-Base3 make_base(const double* e0, const double* e1, const double* e2) {
+Base3 make_base(const double* e0, const double* e1, const double* e2, bool* ok = nullptr) {
   Base3 out;
   double mt[3][3];
   for (int i = 0; i < 3; ++i) {
@@ -43,8 +43,25 @@ Base3 make_base(const double* e0, const double* e1, const double* e2) {
     mt[i][1] = e1[i];
     mt[i][2] = e2[i];
   }
-  invert3(mt, out.b);
+  const bool inv = invert3(mt, out.b);
+  if (ok) *ok = inv;
   return out;
+}
+
+// Points farther out of their element than this (in element coordinates) are reported;
+// surface points, outside by round-off only, are not.
+constexpr double kOutsideTolerance = 1e-2;
+inline bool outside_cell(double fx, double fy, double fz) {
+  auto out = [](double f) { return f < -kOutsideTolerance || f > 1 + kOutsideTolerance; };
+  return out(fx) || out(fy) || out(fz);
+}
+
+// "a, b, c" of the first few indices, "... (n in all)" beyond.
+std::string index_list(const std::vector<std::size_t>& v) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size() && i < 8; ++i) s += (i ? ", " : "") + std::to_string(v[i]);
+  if (v.size() > 8) s += ", ... (" + std::to_string(v.size()) + " in all)";
+  return s;
 }
 
 inline void sub3(const double* a, const double* b, double* r) {
@@ -93,6 +110,20 @@ void BarycentricMapping::add_point(std::initializer_list<std::pair<unsigned, dou
     w_.push_back(w);
   }
   start_.push_back(static_cast<std::uint32_t>(idx_.size()));
+}
+
+void BarycentricMapping::report_outside(const std::vector<std::size_t>& outside) {
+  if (outside.empty()) return;
+  msg_warning(std::to_string(outside.size()) + " output point(s) outside every element of " +
+              input_topology->describe() + ", mapped by extrapolation from the nearest element: " +
+              index_list(outside));
+}
+
+void BarycentricMapping::report_degenerate(const char* what, const std::vector<std::size_t>& bad, std::size_t total) {
+  if (bad.empty()) return;
+  msg_warning(std::to_string(bad.size()) + " of " + std::to_string(total) + " " + what + "(s) of " +
+              input_topology->describe() + " are degenerate (zero volume or area) and cannot locate points: " +
+              index_list(bad));
 }
 
 bool BarycentricMapping::init_mapping() {
@@ -151,6 +182,7 @@ bool BarycentricMapping::init_regular_grid(const std::vector<double>& out) {
     return s;
   };
   const std::size_t n_out = out.size() / 3;
+  std::vector<std::size_t> outside;
   for (std::size_t i = 0; i < n_out; ++i) {
     const double p[3] = {out[i * 3] - p0[0], out[i * 3 + 1] - p0[1], out[i * 3 + 2] - p0[2]};
     const double x = dot(p, dx) * inv_dx2, y = dot(p, dy) * inv_dy2, z = dot(p, dz) * inv_dz2;
@@ -160,6 +192,7 @@ bool BarycentricMapping::init_regular_grid(const std::vector<double>& out) {
     iy = std::clamp(iy, 0, n[1] - 2);
     iz = std::clamp(iz, 0, n[2] - 2);
     const double fx = x - ix, fy = y - iy, fz = z - iz;
+    if (outside_cell(fx, fy, fz)) outside.push_back(i);
     auto pt = [&](int a, int b, int c) { return static_cast<unsigned>(grid.point_index(a, b, c)); };
     add_point({{pt(ix, iy, iz), (1 - fx) * (1 - fy) * (1 - fz)},
                {pt(ix + 1, iy, iz), (fx) * (1 - fy) * (1 - fz)},
@@ -170,6 +203,7 @@ bool BarycentricMapping::init_regular_grid(const std::vector<double>& out) {
                {pt(ix, iy + 1, iz + 1), (1 - fx) * (fy) * (fz)},
                {pt(ix + 1, iy + 1, iz + 1), (fx) * (fy) * (fz)}});
   }
+  report_outside(outside);
   return true;
 }
 
@@ -182,11 +216,15 @@ bool BarycentricMapping::init_sparse_grid(const std::vector<double>& out) {
   }
   mapper_ = "SparseGrid";
   const std::size_t n_out = out.size() / 3;
+  std::vector<std::size_t> outside;
   for (std::size_t i = 0; i < n_out; ++i) {
     const Vec3 p(out[i * 3], out[i * 3 + 1], out[i * 3 + 2]);
     double fx = 0, fy = 0, fz = 0;
     unsigned cube = grid.find_cube(p, fx, fy, fz);
-    if (cube == ~0u) cube = grid.find_nearest_cube(p, fx, fy, fz);
+    if (cube == ~0u) {
+      cube = grid.find_nearest_cube(p, fx, fy, fz);
+      if (outside_cell(fx, fy, fz)) outside.push_back(i);
+    }
     if (cube >= hexas.size()) {
       msg_error("output point " + std::to_string(i) + " could not be located in " + grid.describe());
       return false;
@@ -201,6 +239,7 @@ bool BarycentricMapping::init_sparse_grid(const std::vector<double>& out) {
                {c[7], (1 - fx) * (fy) * (fz)},
                {c[6], (fx) * (fy) * (fz)}});
   }
+  report_outside(outside);
   return true;
 }
 
@@ -232,12 +271,15 @@ bool BarycentricMapping::init_mesh(const std::vector<double>& out, const std::ve
     if (!check(T, "tetrahedron") || !check(H, "hexahedron")) return false;
     mapper_ = set_container ? (H.empty() ? "TetrahedronSet" : "HexahedronSet") : "Mesh";
     std::vector<Base3> bases(T.size() + H.size());
+    std::vector<std::size_t> degenerate, outside;
     for (std::size_t t = 0; t < T.size(); ++t) {
       double e0[3], e1[3], e2[3];
       sub3(X + T[t][1] * 3, X + T[t][0] * 3, e0);
       sub3(X + T[t][2] * 3, X + T[t][0] * 3, e1);
       sub3(X + T[t][3] * 3, X + T[t][0] * 3, e2);
-      bases[t] = make_base(e0, e1, e2);
+      bool ok = true;
+      bases[t] = make_base(e0, e1, e2, &ok);
+      if (!ok) degenerate.push_back(t);
       centre(in, T[t], bases[t].c);
     }
     for (std::size_t h = 0; h < H.size(); ++h) {
@@ -245,22 +287,28 @@ bool BarycentricMapping::init_mesh(const std::vector<double>& out, const std::ve
       sub3(X + H[h][1] * 3, X + H[h][0] * 3, e0);
       sub3(X + H[h][3] * 3, X + H[h][0] * 3, e1);
       sub3(X + H[h][4] * 3, X + H[h][0] * 3, e2);
-      bases[T.size() + h] = make_base(e0, e1, e2);
+      bool ok = true;
+      bases[T.size() + h] = make_base(e0, e1, e2, &ok);
+      if (!ok) degenerate.push_back(T.size() + h);
       centre(in, H[h], bases[T.size() + h].c);
     }
+    report_degenerate("element", degenerate, T.size() + H.size());
     for (std::size_t i = 0; i < n_out; ++i) {
       const double* p = &out[i * 3];
       double best = set_container ? std::numeric_limits<double>::max() : 1e10;
       std::size_t index = std::numeric_limits<std::size_t>::max();
+      double best_raw = 0;
       double coefs[3] = {0, 0, 0};
       for (std::size_t t = 0; t < T.size(); ++t) {
         double r[3], v[3];
         sub3(p, X + T[t][0] * 3, r);
         mul3(bases[t].b, r, v);
         double d = std::max(std::max(-v[0], -v[1]), std::max(-v[2], v[0] + v[1] + v[2] - 1));
+        const double raw = d;
         if (d > 0) d = dist2(p, bases[t].c);
         if (d < best) {
           best = d;
+          best_raw = raw;
           index = t;
           coefs[0] = v[0], coefs[1] = v[1], coefs[2] = v[2];
         }
@@ -270,9 +318,11 @@ bool BarycentricMapping::init_mesh(const std::vector<double>& out, const std::ve
         sub3(p, X + H[h][0] * 3, r);
         mul3(bases[T.size() + h].b, r, v);
         double d = std::max(std::max(-v[0], -v[1]), std::max(std::max(-v[2], v[0] - 1), std::max(v[1] - 1, v[2] - 1)));
+        const double raw = d;
         if (d > 0) d = dist2(p, bases[T.size() + h].c);
         if (d < best) {
           best = d;
+          best_raw = raw;
           index = T.size() + h;
           coefs[0] = v[0], coefs[1] = v[1], coefs[2] = v[2];
         }
@@ -281,6 +331,7 @@ bool BarycentricMapping::init_mesh(const std::vector<double>& out, const std::ve
         msg_error("output point " + std::to_string(i) + " could not be located in " + topo.describe());
         return false;
       }
+      if (best_raw > kOutsideTolerance) outside.push_back(i);
       const double fx = coefs[0], fy = coefs[1], fz = coefs[2];
       if (index < T.size()) {
         const Tetra& t = T[index];
@@ -307,6 +358,7 @@ bool BarycentricMapping::init_mesh(const std::vector<double>& out, const std::ve
                      {c[6], (fx) * (fy) * (fz)}});
       }
     }
+    report_outside(outside);
     return true;
   }
 
@@ -320,12 +372,15 @@ bool BarycentricMapping::init_mesh(const std::vector<double>& out, const std::ve
     if (!check(T, "triangle") || !check(Q, "quad")) return false;
     mapper_ = set_container ? (Q.empty() ? "TriangleSet" : "QuadSet") : "Mesh";
     std::vector<Base3> bases(T.size() + Q.size());
+    std::vector<std::size_t> degenerate, outside;
     for (std::size_t t = 0; t < T.size(); ++t) {
       double e0[3], e1[3], e2[3];
       sub3(X + T[t][1] * 3, X + T[t][0] * 3, e0);
       sub3(X + T[t][2] * 3, X + T[t][0] * 3, e1);
       cross3(e0, e1, e2);
-      bases[t] = make_base(e0, e1, e2);
+      bool ok = true;
+      bases[t] = make_base(e0, e1, e2, &ok);
+      if (!ok) degenerate.push_back(t);
       centre(in, T[t], bases[t].c);
     }
     for (std::size_t q = 0; q < Q.size(); ++q) {
@@ -333,22 +388,28 @@ bool BarycentricMapping::init_mesh(const std::vector<double>& out, const std::ve
       sub3(X + Q[q][1] * 3, X + Q[q][0] * 3, e0);
       sub3(X + Q[q][3] * 3, X + Q[q][0] * 3, e1);
       cross3(e0, e1, e2);
-      bases[T.size() + q] = make_base(e0, e1, e2);
+      bool ok = true;
+      bases[T.size() + q] = make_base(e0, e1, e2, &ok);
+      if (!ok) degenerate.push_back(T.size() + q);
       centre(in, Q[q], bases[T.size() + q].c);
     }
+    report_degenerate("surface element", degenerate, T.size() + Q.size());
     for (std::size_t i = 0; i < n_out; ++i) {
       const double* p = &out[i * 3];
       double best = set_container ? std::numeric_limits<double>::max() : 1e10;
       std::size_t index = std::numeric_limits<std::size_t>::max();
+      double best_raw = 0;
       double coefs[3] = {0, 0, 0};
       for (std::size_t t = 0; t < T.size(); ++t) {
         double r[3], v[3];
         sub3(p, X + T[t][0] * 3, r);
         mul3(bases[t].b, r, v);
         double d = std::max(std::max(-v[0], -v[1]), std::max((v[2] < 0 ? -v[2] : v[2]) - 0.01, v[0] + v[1] - 1));
+        const double raw = d;
         if (d > 0) d = dist2(p, bases[t].c);
         if (d < best) {
           best = d;
+          best_raw = raw;
           index = t;
           coefs[0] = v[0], coefs[1] = v[1], coefs[2] = v[2];
         }
@@ -359,9 +420,11 @@ bool BarycentricMapping::init_mesh(const std::vector<double>& out, const std::ve
         mul3(bases[T.size() + q].b, r, v);
         double d = std::max(std::max(-v[0], -v[1]),
                             std::max(std::max(v[1] - 1, v[0] - 1), std::max(v[2] - 0.01, -v[2] - 0.01)));
+        const double raw = d;
         if (d > 0) d = dist2(p, bases[T.size() + q].c);
         if (d < best) {
           best = d;
+          best_raw = raw;
           index = T.size() + q;
           coefs[0] = v[0], coefs[1] = v[1], coefs[2] = v[2];
         }
@@ -370,6 +433,7 @@ bool BarycentricMapping::init_mesh(const std::vector<double>& out, const std::ve
         msg_error("output point " + std::to_string(i) + " could not be located in " + topo.describe());
         return false;
       }
+      if (best_raw > kOutsideTolerance) outside.push_back(i);
       const double fx = coefs[0], fy = coefs[1];
       if (index < T.size()) {
         const Triangle& t = T[index];
@@ -382,6 +446,7 @@ bool BarycentricMapping::init_mesh(const std::vector<double>& out, const std::ve
           add_point({{q[0], (1 - fx) * (1 - fy)}, {q[1], (fx) * (1 - fy)}, {q[3], (1 - fx) * (fy)}, {q[2], (fx) * (fy)}});
       }
     }
+    report_outside(outside);
     return true;
   }
 

@@ -51,6 +51,8 @@ class BarycentricMapping final : public MappingBase {
   bool init_sparse_grid(const std::vector<double>& out);
   bool init_mesh(const std::vector<double>& out, const std::vector<double>& in, bool set_container);
   void add_point(std::initializer_list<std::pair<unsigned, double>> terms);
+  void report_outside(const std::vector<std::size_t>& outside);
+  void report_degenerate(const char* what, const std::vector<std::size_t>& bad, std::size_t total);
 
   // Output point i = Σ_{k in [start_i, start_{i+1})} w_k · in[idx_k], summed in this order.
   std::vector<std::uint32_t> start_{0};

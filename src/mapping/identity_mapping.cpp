@@ -11,6 +11,10 @@ bool IdentityMapping::init_mapping() {
   dwi_ = state_type_info(in_type()).deriv_width;
   cwo_ = state_type_info(out_type()).coord_width;
   dwo_ = state_type_info(out_type()).deriv_width;
+  // A default-sized output (one point) is silently resized, as in SOFA; points given explicitly are replaced.
+  if (out_size() > 1 && out_size() != in_size())
+    msg_warning("the output has " + std::to_string(out_size()) + " points and is resized to the " +
+                std::to_string(in_size()) + " points of the input (its given positions are replaced)");
   resize_output(in_size());
   return true;
 }

@@ -42,6 +42,8 @@ class RigidMapping final : public MappingBase {
   void apply_jt(int f, int role) override;
   void apply_djt(int df, int dx, double k) override;
   bool jacobian(std::vector<JacobianEntry>& out) override;
+  // The Exact geometric stiffness is not symmetric: not available as assembled entries.
+  bool build_geometric_stiffness(MatrixSink&) override { return gs_ == 0; }
 
  protected:
   bool init_mapping() override;

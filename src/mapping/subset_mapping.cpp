@@ -27,7 +27,6 @@ bool SubsetMapping::init_mapping() {
     const std::vector<double>& in = in_coord(kPosition);
     const std::vector<double>& out = initial_output_positions();
     const int ow = out_ ? out_->info().coord_width : 3;
-    const int dim = std::min(3, state_type_info(in_type()).spatial_dim);
     const std::size_t n_out = out.size() / ow;
     ids.assign(n_out, kInvalid);
     for (std::size_t i = 0; i < n_out; ++i) {
@@ -46,7 +45,6 @@ bool SubsetMapping::init_mapping() {
           rmax = r;
         }
       }
-      (void)dim;
       if (!found && !ignore_not_found.value())
         msg_error("point " + std::to_string(i) + " not found in the input model within a radius of " +
                   std::to_string(rmax));

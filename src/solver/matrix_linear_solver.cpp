@@ -64,6 +64,27 @@ void MatrixLinearSolver::solve_global(Eigen::VectorXd& x, const Eigen::VectorXd&
   solve(sys.matrix(), x, b);
 }
 
+void MatrixLinearSolver::add_jminvjt(Eigen::MatrixXd& result,
+                                     const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& J, double fact) {
+  if (!linear_system) return;
+  const Eigen::Index n = J.cols(), m = J.rows();
+  if (result.rows() < m || result.cols() < m) result.conservativeResize(m, m);
+  Eigen::VectorXd rhs(n), y(n);
+  for (Eigen::Index row = 0; row < m; ++row) {
+    if (J.outerIndexPtr()[row] == J.outerIndexPtr()[row + 1]) continue;
+    rhs.setZero();
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator it(J, row); it; ++it) rhs[it.col()] = it.value();
+    y.setZero();
+    solve_global(y, rhs);
+    for (Eigen::Index r2 = 0; r2 < m; ++r2) {
+      double acc = 0;
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator it(J, r2); it; ++it)
+        acc += it.value() * y[it.col()];
+      result(r2, row) += fact * acc;
+    }
+  }
+}
+
 void MatrixLinearSolver::solve_system(MechanicalOps& ops, int x, int rhs) {
   if (!linear_system || !linear_system->assembled()) {
     msg_error("System matrix is not setup properly");

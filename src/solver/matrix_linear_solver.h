@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "core/roles.h"
 #include "solver/matrix_linear_system.h"
@@ -35,6 +36,11 @@ class MatrixLinearSolver : public LinearSolver {
   // factorizes if the system changed, then solves A·x = b.
   void solve_global(Eigen::VectorXd& x, const Eigen::VectorXd& b);
   MatrixLinearSystem* system() const { return linear_system.get(); }
+  // Constraint corrections (§3.0): result += fact·J·A⁻¹·Jᵀ, J with system-size
+  // columns; one solve A·y = J_rowᵀ per non-empty row of J, then
+  // result(r2, row) += fact·J_r2·y for every row r2.
+  virtual void add_jminvjt(Eigen::MatrixXd& result, const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& J,
+                           double fact);
 
  protected:
   // Factorizes / prepares A (called once per assembly).

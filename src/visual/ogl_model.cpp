@@ -172,7 +172,6 @@ void OglModel::init() {
   }
   std::vector<double>& x = position.edit().data;
   std::vector<double>* rest = init_rest_positions.value() ? &rest_position.edit().data : nullptr;
-  const std::size_t n = x.size() / 3;
   // Scale, then rotation (Euler angles in degrees, Rz·Ry·Rx), then translation.
   const Vec3 s = scale3d.get(), r = rotation.get(), t = translation.get();
   const double to_rad = M_PI / 180.0;
@@ -189,7 +188,6 @@ void OglModel::init() {
       (*v)[i * 3] = p[0], (*v)[i * 3 + 1] = p[1], (*v)[i * 3 + 2] = p[2];
     }
   }
-  (void)n;
   translation.set(Vec3::Zero());
   rotation.set(Vec3::Zero());
   scale3d.set(Vec3::Ones());

@@ -31,6 +31,7 @@ void register_viewer_only(Registry& r) {
       {"DirectionalLight", "viewer light"},
       {"PositionalLight", "viewer light"},
       {"SpotLight", "viewer light"},
+      {"GlobalSystemMatrixImage", "image of a linear system's matrix (SofaMatrix plugin)"},
   };
   for (const auto& e : list) {
     ComponentInfo info;

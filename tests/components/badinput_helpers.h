@@ -80,7 +80,9 @@ inline Outcome run_xml(const TempDir& dir, const std::string& xml, long steps = 
 // with an error, or it runs with finite states; never NaNs without an error.
 inline void expect_no_silent_garbage(const Outcome& o) {
   EXPECT_TRUE(o.loaded);
-  if (o.errors.empty()) EXPECT_TRUE(o.finite) << "non-finite states without any error:\n" << o.all();
+  if (o.errors.empty()) {
+    EXPECT_TRUE(o.finite) << "non-finite states without any error:\n" << o.all();
+  }
 }
 
 }  // namespace sinew::test

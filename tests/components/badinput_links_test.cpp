@@ -13,7 +13,7 @@ namespace {
 
 // Six points, two good tetrahedra, a mass and an implicit solver; `extra` goes
 // in the same node, `child` in a child node.
-std::string scene(const std::string& extra, const std::string& child = "",
+std::string base_scene(const std::string& extra, const std::string& child = "",
                   const std::string& mo_extra = "", const std::string& mass = R"(<UniformMass totalMass="1"/>)") {
   return R"(<Node name="root" gravity="0 -9.81 0" dt="0.01">
   <DefaultAnimationLoop/>
@@ -36,7 +36,7 @@ class BadInputLinks : public ::testing::Test {
 }  // namespace
 
 TEST_F(BadInputLinks, ReferenceSceneRuns) {
-  const Outcome o = run_xml(dir, scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)"), 5);
+  const Outcome o = run_xml(dir, base_scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)"), 5);
   EXPECT_TRUE(o.init_ok) << o.all();
   EXPECT_EQ(o.steps, 5);
   EXPECT_TRUE(o.finite);
@@ -44,7 +44,7 @@ TEST_F(BadInputLinks, ReferenceSceneRuns) {
 
 TEST_F(BadInputLinks, BarycentricMappingPointOutsideEveryElementIsReported) {
   const Outcome o = run_xml(dir,
-                            scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)",
+                            base_scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)",
                                   R"(<MechanicalObject name="mapped" position="0.1 0.1 0.1  10 20 30"/>
     <BarycentricMapping name="map" input="@.." output="@mapped"/>)"),
                             5);
@@ -71,14 +71,14 @@ TEST_F(BadInputLinks, BarycentricMappingOntoFlatTetrahedronIsNotSilent) {
 }
 
 TEST_F(BadInputLinks, FixedConstraintIndexBeyondTheState) {
-  const Outcome o = run_xml(dir, scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 99"/>)"), 5);
+  const Outcome o = run_xml(dir, base_scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 99"/>)"), 5);
   EXPECT_TRUE(any_contains_all(o.problems(), {"component 'fix' (FixedProjectiveConstraint)", "99"})) << o.all();
   expect_no_silent_garbage(o);
 }
 
 TEST_F(BadInputLinks, PartialFixedConstraintIndexBeyondTheState) {
   const Outcome o = run_xml(
-      dir, scene(R"(<PartialFixedProjectiveConstraint name="fix" indices="0 99" fixedDirections="1 1 1"/>)"), 5);
+      dir, base_scene(R"(<PartialFixedProjectiveConstraint name="fix" indices="0 99" fixedDirections="1 1 1"/>)"), 5);
   EXPECT_TRUE(any_contains_all(o.problems(), {"component 'fix' (PartialFixedProjectiveConstraint)", "99"}))
       << o.all();
   expect_no_silent_garbage(o);
@@ -87,7 +87,7 @@ TEST_F(BadInputLinks, PartialFixedConstraintIndexBeyondTheState) {
 TEST_F(BadInputLinks, LinearVelocityConstraintIndexBeyondTheState) {
   const Outcome o = run_xml(
       dir,
-      scene(R"(<LinearVelocityProjectiveConstraint name="lv" indices="0 99" keyTimes="0 1" velocities="0 0 0  1 0 0"/>)"),
+      base_scene(R"(<LinearVelocityProjectiveConstraint name="lv" indices="0 99" keyTimes="0 1" velocities="0 0 0  1 0 0"/>)"),
       5);
   EXPECT_TRUE(any_contains_all(o.problems(), {"component 'lv' (LinearVelocityProjectiveConstraint)", "99"}))
       << o.all();
@@ -95,41 +95,41 @@ TEST_F(BadInputLinks, LinearVelocityConstraintIndexBeyondTheState) {
 }
 
 TEST_F(BadInputLinks, UniformMassIndexBeyondTheState) {
-  const Outcome o = run_xml(dir, scene("", "", "", R"(<UniformMass name="mass" totalMass="1" indices="0 1 99"/>)"), 5);
+  const Outcome o = run_xml(dir, base_scene("", "", "", R"(<UniformMass name="mass" totalMass="1" indices="0 1 99"/>)"), 5);
   EXPECT_TRUE(any_contains_all(o.problems(), {"component 'mass' (UniformMass)", "99"})) << o.all();
   expect_no_silent_garbage(o);
 }
 
 TEST_F(BadInputLinks, DiagonalMassVertexMassOfAnotherSize) {
   const Outcome o =
-      run_xml(dir, scene("", "", "", R"(<DiagonalMass name="mass" vertexMass="1 1 1"/>)"), 5);
+      run_xml(dir, base_scene("", "", "", R"(<DiagonalMass name="mass" vertexMass="1 1 1"/>)"), 5);
   EXPECT_TRUE(any_contains_all(o.problems(), {"component 'mass' (DiagonalMass)", "vertexMass"})) << o.all();
   expect_no_silent_garbage(o);
 }
 
 TEST_F(BadInputLinks, NegativeMassIsReported) {
-  const Outcome o = run_xml(dir, scene("", "", "", R"(<UniformMass name="mass" totalMass="-1"/>)"), 5);
+  const Outcome o = run_xml(dir, base_scene("", "", "", R"(<UniformMass name="mass" totalMass="-1"/>)"), 5);
   EXPECT_TRUE(any_contains_all(o.problems(), {"component 'mass' (UniformMass)", "negative"})) << o.all();
   expect_no_silent_garbage(o);
 }
 
 TEST_F(BadInputLinks, SpringIndexBeyondTheState) {
   const Outcome o =
-      run_xml(dir, scene(R"(<SpringForceField name="springs" spring="0 1 100 1 1  2 99 100 1 1"/>)"), 5);
+      run_xml(dir, base_scene(R"(<SpringForceField name="springs" spring="0 1 100 1 1  2 99 100 1 1"/>)"), 5);
   EXPECT_TRUE(any_contains_all(o.errors, {"component 'springs' (SpringForceField)", "99"})) << o.all();
   EXPECT_TRUE(any_contains_all(o.errors, {"component 'springs' (SpringForceField)", "spring 1"})) << o.all();
   EXPECT_FALSE(o.init_ok);
 }
 
 TEST_F(BadInputLinks, SpringWithNegativeIndexOrGarbage) {
-  const Outcome o = run_xml(dir, scene(R"(<SpringForceField name="springs" spring="0 -1 100 1 1"/>)"), 5);
+  const Outcome o = run_xml(dir, base_scene(R"(<SpringForceField name="springs" spring="0 -1 100 1 1"/>)"), 5);
   EXPECT_TRUE(any_contains_all(o.problems(), {"springs", "spring"})) << o.all();
   EXPECT_FALSE(o.init_ok);
 }
 
 TEST_F(BadInputLinks, RestShapeSpringIndexBeyondTheState) {
   const Outcome o =
-      run_xml(dir, scene(R"(<RestShapeSpringsForceField name="rss" points="0 99" stiffness="100"/>)"), 5);
+      run_xml(dir, base_scene(R"(<RestShapeSpringsForceField name="rss" points="0 99" stiffness="100"/>)"), 5);
   EXPECT_TRUE(any_contains_all(o.errors, {"component 'rss' (RestShapeSpringsForceField)", "99"})) << o.all();
   EXPECT_FALSE(o.init_ok);
 }
@@ -149,7 +149,7 @@ TEST_F(BadInputLinks, MeshSpringTopologyBeyondTheState) {
 
 TEST_F(BadInputLinks, VelocityOfAnotherSizeThanPosition) {
   const Outcome o = run_xml(dir,
-                            scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)", "",
+                            base_scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)", "",
                                   R"(velocity="1 0 0  1 0 0")"),
                             5);
   EXPECT_TRUE(any_contains_all(o.problems(), {"component 'dofs' (MechanicalObject)", "velocity"})) << o.all();
@@ -158,7 +158,7 @@ TEST_F(BadInputLinks, VelocityOfAnotherSizeThanPosition) {
 
 TEST_F(BadInputLinks, RestPositionOfAnotherSizeThanPosition) {
   const Outcome o = run_xml(dir,
-                            scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)", "",
+                            base_scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)", "",
                                   R"(rest_position="0 0 0  1 0 0")"),
                             5);
   EXPECT_TRUE(any_contains_all(o.problems(), {"component 'dofs' (MechanicalObject)", "rest_position"})) << o.all();
@@ -197,7 +197,7 @@ TEST_F(BadInputLinks, TetraFEMOnALoaderWithFewerPointsThanItsTetrahedra) {
 
 TEST_F(BadInputLinks, SubsetMappingIndexBeyondTheInput) {
   const Outcome o = run_xml(dir,
-                            scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)",
+                            base_scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)",
                                   R"(<MechanicalObject name="sub"/>
     <SubsetMapping name="map" input="@.." output="@sub" indices="0 1 42"/>)"),
                             3);
@@ -207,7 +207,7 @@ TEST_F(BadInputLinks, SubsetMappingIndexBeyondTheInput) {
 
 TEST_F(BadInputLinks, IdentityMappingBetweenStatesOfDifferentSizes) {
   const Outcome o = run_xml(dir,
-                            scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)",
+                            base_scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)",
                                   R"(<MechanicalObject name="copy" position="0 0 0  1 1 1"/>
     <IdentityMapping name="map" input="@.." output="@copy"/>)"),
                             3);
@@ -231,7 +231,7 @@ TEST_F(BadInputLinks, RigidMappingIndexBeyondTheRigidState) {
 }
 
 TEST_F(BadInputLinks, LinkToAMissingObjectIsReported) {
-  const Outcome o = run_xml(dir, scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)",
+  const Outcome o = run_xml(dir, base_scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)",
                                        R"(<MechanicalObject name="mapped" position="0.1 0.1 0.1"/>
     <BarycentricMapping name="map" input="@../nothere" output="@mapped"/>)"),
                             3);

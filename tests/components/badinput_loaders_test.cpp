@@ -133,7 +133,9 @@ TEST_P(BadInputLoader, EmptyFileIsNotSilent) {
   const Outcome o = run_xml(dir, loader_scene(c, file("empty")), 2);
   // An empty file has no points: either the loader says so or the scene runs empty; never a crash.
   EXPECT_TRUE(o.loaded);
-  if (o.init_ok) EXPECT_TRUE(o.finite);
+  if (o.init_ok) {
+    EXPECT_TRUE(o.finite);
+  }
 }
 
 TEST_P(BadInputLoader, DirectoryInsteadOfAFileIsAnError) {

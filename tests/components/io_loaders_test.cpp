@@ -8,6 +8,7 @@
 #include <regex>
 #include <set>
 
+#include "io/grid_mesh_creator.h"
 #include "io/mesh_gmsh_loader.h"
 #include "io/mesh_obj_loader.h"
 #include "io/mesh_readers.h"
@@ -505,6 +506,38 @@ endsolid x
   EXPECT_EQ(bin->normals.size(), 2u);
   EXPECT_FALSE(io::read_stl(t.write("c.stl", std::string(90, 'x')), &err));
   EXPECT_NE(err.find("not a binary STL"), std::string::npos) << err;
+}
+
+// ---------------------------------------------------------------- OFF
+
+// 3 → triangle, 4 → quad, other sizes skipped without counting; '#' lines skipped.
+TEST(IoOff, TrianglesQuadsAndSkippedPolygons) {
+  TempDir t;
+  std::string err;
+  auto m = io::read_off(t.write("a.off", "OFF\n# c\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 2 0\n"
+                                         "3 0 1 2\n5 0 1 2 3 4\n4 0 1 2 3\n3 1 4 2\n"),
+                        &err);
+  ASSERT_TRUE(m) << err;
+  EXPECT_EQ(m->positions.size(), 5u);
+  EXPECT_EQ(m->triangles, (Tris{{0, 1, 2}, {1, 4, 2}}));
+  EXPECT_EQ(m->quads, (std::vector<Quad>{{0, 1, 2, 3}}));
+  EXPECT_FALSE(io::read_off(t.write("b.off", "OFF\n2 1 0\n0 0 0\n1 0 0\n3 0 1 7\n"), &err));
+  EXPECT_NE(err.find("b.off:5:"), std::string::npos) << err;
+  EXPECT_FALSE(io::read_off(t.write("c.off", "FOO\n"), &err));
+}
+
+// GridMeshCreator: x = i·1/(n−1); pattern 2 (default) gives two triangles per cell, edges sorted and unique.
+TEST(IoLoader, GridMeshCreator) {
+  auto s = load("<Node><GridMeshCreator name='g' resolution='3 2'/><GridMeshCreator name='q' trianglePattern='0'/></Node>");
+  auto* g = get<GridMeshCreator>(*s.root, "g");
+  ASSERT_TRUE(g);
+  ASSERT_EQ(g->position.get().size(), 6u);
+  EXPECT_EQ(g->position.get()[4], Vec3(0.5, 1, 0));
+  EXPECT_EQ(g->triangles.get(), (Tris{{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}}));
+  EXPECT_EQ(g->edges.get(), (Edges{{0, 1}, {1, 2}, {1, 4}, {2, 5}, {3, 0}, {4, 0}, {4, 3}, {5, 1}, {5, 4}}));
+  auto* q = get<GridMeshCreator>(*s.root, "q");
+  EXPECT_EQ(q->quads.get(), (std::vector<Quad>{{0, 1, 3, 2}}));
+  EXPECT_EQ(q->edges.get().size(), 4u);
 }
 
 // ---------------------------------------------------------------- SphereLoader

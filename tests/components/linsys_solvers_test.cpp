@@ -320,3 +320,24 @@ TEST(LinsysBlockCsr, BlockTridiagonalStructureKeepsThreeBlockDiagonals) {
   EXPECT_GE(M.slot(6, 12), 0);
   EXPECT_EQ(M.slot(0, 12), -1);
 }
+
+// ---------------------------------------------------------------- constraint-correction product (§3.0)
+
+TEST(LinsysCompliance, JMinvJtMatchesDenseProduct) {
+  const Eigen::MatrixXd A = random_spd(18, 77u);
+  Eigen::MatrixXd Jd = Eigen::MatrixXd::Zero(4, 18);
+  Jd(0, 1) = 1.0;
+  Jd(0, 7) = -0.5;
+  Jd(2, 3) = 2.0;  // row 1 and 3 empty
+  Jd(2, 17) = 0.25;
+  const Eigen::SparseMatrix<double, Eigen::RowMajor, int> J = Jd.sparseView();
+  for (const char* name : {"SparseLDLSolver", "EigenSparseLU"}) {
+    Standalone s(make_solver(name), make_ordering("AMD"));
+    fill(s.system->matrix(), A, 3);
+    s.system->factorization_invalidation.set(true);
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(4, 4);
+    s.solver->add_jminvjt(W, J, 0.5);
+    const Eigen::MatrixXd ref = 0.5 * Jd * A.inverse() * Jd.transpose();
+    EXPECT_LT((W - ref).norm(), 1e-12 * ref.norm()) << name;
+  }
+}

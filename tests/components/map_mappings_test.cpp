@@ -91,6 +91,13 @@ void expect_adjoint(Mapping& m, unsigned seed = 1) {
   const double lhs = dot(ju, w);
   EXPECT_NEAR(lhs, rhs, 1e-12 * (1 + std::abs(lhs))) << m.class_name();
   EXPECT_GT(std::abs(lhs), 1e-6) << "degenerate test vectors";
+  // The assembled Jacobian (when the mapping provides it) gives the same product.
+  std::vector<JacobianEntry> entries;
+  if (m.jacobian(entries)) {
+    std::vector<double> ju2(ju.size(), 0.0);
+    for (const JacobianEntry& e : entries) ju2.at(e.row) += e.value * u.at(e.input).at(e.col);
+    for (std::size_t i = 0; i < ju.size(); ++i) EXPECT_NEAR(ju2[i], ju[i], 1e-12) << m.class_name() << " row " << i;
+  }
 }
 
 // x_k ← x0_k + h·u_k on every input (Rigid: exponential map), then apply.
@@ -386,6 +393,39 @@ TEST(MapRigid, Rigid2dIndexFromEndAndPerPointRigids) {
   expect_adjoint(mapping_of(s));
   expect_adjoint(mapping_of(s, "map2"));
   expect_j_is_derivative(mapping_of(s, "map2"));
+}
+
+// ---------------------------------------------------------------- BeamLinearMapping
+
+TEST(MapBeamLinear, SmoothInterpolationBetweenFrames) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <MechanicalObject name="frames" template="Rigid3d" position="0 0 0 0 0 0 1  2 0 0 0 0 0 1"/>
+    <Node name="straight">
+      <MechanicalObject name="pts" position="0.5 0.1 0  0 0 0.2  1.25 0 0"/>
+      <BeamLinearMapping name="map"/>
+    </Node>
+  </Node>)");
+  // t = 0.5 → h = 0.5; both frames give (1, 0.2, 0).
+  const auto p = pos(s, "pts");
+  EXPECT_NEAR(p[0], 1, 1e-15);
+  EXPECT_NEAR(p[1], 0.2, 1e-15);
+  EXPECT_NEAR(p[5], 0.4, 1e-15);
+  EXPECT_NEAR(p[6], 2.5, 1e-15);  // extrapolated past the last frame along the last beam
+  expect_adjoint(mapping_of(s));
+}
+
+TEST(MapBeamLinear, DerivativesOnRotatedFrames) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <MechanicalObject name="frames" template="Rigid3d"
+        position="0 0 0 0 0 0.6 0.8  1 1 0 0.28 0 0 0.96  2 1.5 0.5 0 0.6 0 0.8"/>
+    <Node name="pts">
+      <MechanicalObject name="pts" position="0.3 0.1 -0.2  1.6 -0.1 0.05  1.0 0.2 0.2"/>
+      <BeamLinearMapping name="map"/>
+    </Node>
+  </Node>)");
+  auto& m = mapping_of(s);
+  expect_adjoint(m);
+  expect_j_is_derivative(m);
 }
 
 // ---------------------------------------------------------------- distance mappings
