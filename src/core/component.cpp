@@ -1,6 +1,7 @@
 #include "core/component.h"
 
 #include "core/node.h"
+#include "core/parse.h"
 
 namespace sinew {
 
@@ -42,8 +43,16 @@ void Component::parse(AttributeMap& attrs, Diagnostics& diag) {
         f->mark_set();
         return;
       }
-      if (!f->read(e.value) && !e.value.empty())
+      if (!f->read(e.value) && !e.value.empty()) {
         diag.warning(where, describe() + ": could not read value for field '" + key + "': \"" + e.value + "\"");
+      } else if (const std::string t = f->type_name();
+                 t == "double" || t == "float" || t == "vector<double>" || t == "state vector" ||
+                 (t.rfind("Vec", 0) == 0 && t.back() == 'd') || t.rfind("vector<Vec", 0) == 0) {
+        // Real numbers are read like std::istream (a valid prefix is kept): say so.
+        if (const std::string_view bad = parse::first_partial_number(e.value); !bad.empty())
+          diag.warning(where, describe() + ": field '" + key + "': \"" + std::string(bad) +
+                                  "\" is not a number (only its numeric prefix is used)");
+      }
       return;
     }
     if (BaseLink* l = find_link(key)) {

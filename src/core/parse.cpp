@@ -88,6 +88,14 @@ bool read_double(std::string_view token, double& out) {
   return ec == std::errc();
 }
 
+std::string_view first_partial_number(std::string_view text) {
+  for (std::string_view t : tokens(text)) {
+    const std::size_t n = number_prefix(t, true);
+    if (n > 0 && n < t.size()) return t;
+  }
+  return {};
+}
+
 bool read_int(std::string_view token, long long& out) {
   const std::size_t n = number_prefix(token, false);
   if (n == 0) {

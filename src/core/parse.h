@@ -20,6 +20,9 @@ namespace sinew::parse {
 // a valid prefix is accepted ("1.5abc" → 1.5); no digits → value 0, false.
 bool read_double(std::string_view token, double& out);
 bool read_int(std::string_view token, long long& out);
+// The first token of `text` that is a number followed by other characters
+// ("1e3x", "0,5"): read_double accepts its prefix, the caller may warn. Empty if none.
+std::string_view first_partial_number(std::string_view text);
 
 // Splits on ASCII whitespace.
 std::vector<std::string_view> tokens(std::string_view text);

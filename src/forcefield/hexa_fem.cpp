@@ -6,8 +6,10 @@
 #include <oneapi/tbb/task_arena.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
+#include <unordered_map>
 
 #include "math/decompose.h"
 
@@ -255,6 +257,7 @@ Mat3 element_frame(HexaMethod m, const std::array<Vec3, 8>& n) {
 std::vector<HexaIssue> HexaFEM::init(std::span<const Vec3> X0, std::span<const std::array<int, 8>> elems,
                                      std::span<const double> E, std::span<const double> nu, HexaMethod m,
                                      std::span<const double> stiffness_coef) {
+  touch_stiffness();
   std::vector<HexaIssue> issues;
   method = m;
   potential_energy = 0;
@@ -370,7 +373,7 @@ void HexaFEM::element_dforce(std::size_t e, std::span<const Vec3> dx, double kfa
     X[3 * k + 1] = v[1];
     X[3 * k + 2] = v[2];
   }
-  mul24(K[e], X, F);
+  mul24(dforce_stiffness(e), X, F);
   for (int k = 0; k < 8; ++k) {
     const Vec3 t = rotate ? mul_t(Re, F[3 * k], F[3 * k + 1], F[3 * k + 2]) : Vec3(F[3 * k], F[3 * k + 1], F[3 * k + 2]);
     out[k] = Vec3(t[0] * kfactor, t[1] * kfactor, t[2] * kfactor);
@@ -401,6 +404,7 @@ void HexaFEM::build_incidence(std::size_t n_points) {
 }
 
 void HexaFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
+  if (update_stiffness) touch_stiffness();
   double energy = 0;
   if (!parallel()) {
     Vec3 out[8];
@@ -430,7 +434,42 @@ void HexaFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
   potential_energy = energy / -2.0;
 }
 
+void HexaFEM::refresh_shared_stiffness() const {
+  if (shared_gen == k_gen && (k_index.empty() || k_index.size() == K.size())) return;
+  shared_gen = k_gen;
+  k_index.clear();
+  k_shared.clear();
+  if (update_stiffness || K.empty()) return;
+  // Group bitwise-equal matrices (hash of the bytes, then memcmp).
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> groups;
+  std::vector<std::uint32_t> index(K.size());
+  for (std::size_t e = 0; e < K.size(); ++e) {
+    const auto* b = reinterpret_cast<const unsigned char*>(K[e].data());
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::size_t i = 0; i < sizeof(double) * 24 * 24; ++i) h = (h ^ b[i]) * 1099511628211ull;
+    auto& g = groups[h];
+    std::uint32_t found = UINT32_MAX;
+    for (std::uint32_t u : g)
+      if (std::memcmp(k_shared[u].data(), K[e].data(), sizeof(double) * 24 * 24) == 0) {
+        found = u;
+        break;
+      }
+    if (found == UINT32_MAX) {
+      if (k_shared.size() * 4 >= K.size() + 64) {  // hardly shared: keep K
+        k_shared.clear();
+        return;
+      }
+      found = static_cast<std::uint32_t>(k_shared.size());
+      k_shared.push_back(K[e]);
+      g.push_back(found);
+    }
+    index[e] = found;
+  }
+  k_index = std::move(index);
+}
+
 void HexaFEM::add_dforce(std::span<const Vec3> dx, std::span<Vec3> df, double kfactor) const {
+  refresh_shared_stiffness();
   if (!parallel()) {
     Vec3 out[8];
     for (std::size_t e = 0; e < hexa.size(); ++e) {

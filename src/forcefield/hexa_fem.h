@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -91,6 +92,21 @@ struct HexaFEM {
   std::vector<unsigned char> active;         // 0 for elements with out-of-range node indices
   std::vector<int> node_hexa_count;          // incident elements per point (with multiplicity)
   double potential_energy = 0;               // ½ Σ ΔᵀKΔ of the last add_force (J), as SOFA reports it
+
+  // Stiffnesses shared by bitwise-equal elements (regular grids: a handful of
+  // distinct K instead of one 4.6 kB matrix per element), read by add_dforce
+  // so the K·x products stream far less memory. Same values, so the same
+  // results bit for bit. Rebuilt when k_gen changed (init, add_force with
+  // update_stiffness); call touch_stiffness() after writing K directly.
+  void touch_stiffness() { ++k_gen; }
+ private:
+  std::uint64_t k_gen = 1;
+  mutable std::uint64_t shared_gen = 0;
+  mutable std::vector<std::uint32_t> k_index;  // element → k_shared (empty: use K)
+  mutable std::vector<Mat24> k_shared;
+  void refresh_shared_stiffness() const;
+  const Mat24& dforce_stiffness(std::size_t e) const { return k_index.empty() ? K[e] : k_shared[k_index[e]]; }
+ public:
 
   // Precompute frames, rotated rest nodes and stiffnesses from rest positions
   // X0 (n points) and per-element E (Pa), ν (already broadcast: element i

@@ -1,15 +1,20 @@
 // HexahedronFEMForceField: linear elasticity on hexahedra, corotational
-// (method large or polar) or linear (small) (spec/mechanics.md §2.3).
-// The numerical kernel lives in forcefield/hexa_fem.h.
+// (method large or polar) or linear (small) (spec/mechanics.md §2.3), and
+// HexahedronFEMForceFieldAndMass, the same force field acting as the mass
+// of its object (§2.4). The numerical kernel lives in forcefield/hexa_fem.h.
 #pragma once
 
 #include "core/roles.h"
 #include "core/rotation_finder.h"
 #include "forcefield/hexa_fem.h"
 
+#include <vector>
+
 namespace sinew {
 
-class HexahedronFEMForceField final : public ForceField, public RotationFinder {
+// The force field on top of either role: ForceField, or Mass for the "AndMass" variant.
+template <class Role>
+class HexahedronFEMBase : public Role, public RotationFinder {
  public:
   Field<std::vector<double>> young_modulus{this, "youngModulus", {5000.0},
                                            "Young's modulus (Pa), one value or one per element", "Material"};
@@ -33,10 +38,36 @@ class HexahedronFEMForceField final : public ForceField, public RotationFinder {
   const fem::HexaFEM& kernel() const { return fem_; }
   // Per-point rotations for the Warp/PrecomputedWarp preconditioners (SOFA getRotations).
   void node_rotations(std::span<Mat3> out) const override { fem_.node_rotations(out); }
-  MechanicalState* rotation_state() const override { return mstate.get(); }
+  MechanicalState* rotation_state() const override { return this->mstate.get(); }
+
+ protected:
+  fem::HexaFEM fem_;
+  std::vector<Vec3> rest_;  // initial points (rest positions at init)
+};
+
+class HexahedronFEMForceField final : public HexahedronFEMBase<ForceField> {};
+
+// Element mass matrices (SOFA's closed form: every node pair gets
+// (8/27)·ρ·vol on its 3×3 identity block, vol from the rotated rest element)
+// and gravity on the physical lumped masses ρ·vol/8 per element corner.
+class HexahedronFEMForceFieldAndMass final : public HexahedronFEMBase<Mass> {
+ public:
+  Field<double> density{this, "density", 1.0, "volumetric mass (kg/m³)", "Mass"};
+  Field<bool> lumped_mass{this, "lumpedMass", false, "use row-summed (lumped) element masses", "Mass"};
+
+  void init() override;
+  void add_force(const MechParams& p) override;
+  void add_mdx(const MechParams& p, int res, int dx, double factor) override;
+  void acc_from_f(const MechParams& p, int a, int f) override;
+  void add_gravity_to_v(int v, double dt) override;
+  bool build_mass(MatrixSink& M) override;
+  double total() const override;
+  bool is_diagonal() const override { return false; }
 
  private:
-  fem::HexaFEM fem_;
+  std::vector<double> element_mass_;   // the single value of every block entry, per element
+  std::vector<double> particle_mass_;  // lumped physical mass per point (gravity)
+  std::vector<Vec3> lumped_;           // row sums per point and component (lumpedMass)
 };
 
 }  // namespace sinew

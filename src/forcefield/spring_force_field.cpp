@@ -1,6 +1,7 @@
 #include "forcefield/spring_force_field.h"
 
 #include "core/node.h"
+#include "core/parse.h"
 #include "core/registry.h"
 
 namespace sinew {
@@ -112,6 +113,12 @@ void SpringForceField::init() {
       return;
     }
   }
+  for (std::size_t i = 0; i < springs_.size(); ++i)
+    if (springs_[i].ks < 0) {
+      msg_warning("spring " + std::to_string(i) + " has a negative stiffness (" +
+                  parse::format_double(springs_[i].ks) + "): the motion may be unstable and the system indefinite");
+      break;
+    }
   for (const auto& s : grid_springs_)
     if (s.m1 >= n1 || s.m2 >= n2) {
       msg_error("a generated spring refers to a point out of range (" + std::to_string(s.m1) + ", " +

@@ -6,6 +6,7 @@
 #include <oneapi/tbb/task_arena.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -302,6 +303,7 @@ void tetra_rotated_stiffness(const Mat12& JKJt, const Mat3& rot, Mat12& S, Mat12
 std::vector<TetraIssue> TetraFEM::init(std::span<const Vec3> X, std::span<const std::array<int, 4>> tets,
                                        std::span<const double> E, std::span<const double> nu, TetraMethod m) {
   std::vector<TetraIssue> issues;
+  touch(true);
   method = m;
   const std::size_t ne = tets.size();
   tetra.assign(tets.begin(), tets.end());
@@ -321,6 +323,8 @@ std::vector<TetraIssue> TetraFEM::init(std::span<const Vec3> X, std::span<const 
   rest_volume = 0;
   const std::size_t np = X.size();
   bool index_out_of_range = false;
+  int first_inverted = -1;
+  std::size_t n_inverted = 0;
   for (std::size_t e = 0; e < ne; ++e) {
     const auto& t = tets[e];
     bool bad = false;
@@ -333,12 +337,14 @@ std::vector<TetraIssue> TetraFEM::init(std::span<const Vec3> X, std::span<const 
       continue;
     }
     const Vec3 &a = X[t[0]], &b = X[t[1]], &c = X[t[2]], &d = X[t[3]];
-    const double vol = tetra_volume(a, b, c, d);
+    const double signed_vol = tetra_signed_volume(a, b, c, d);
+    const double vol = signed_vol < 0 ? -signed_vol : signed_vol;
     rest_volume += vol;
     if (!(vol > 0) || !std::isfinite(vol)) {
       issues.push_back({static_cast<int>(e), true, "degenerate element (zero rest volume)"});
       continue;
     }
+    if (signed_vol < 0 && n_inverted++ == 0) first_inverted = static_cast<int>(e);
     K[e] = tetra_material(E[e], nu[e], vol);
     switch (m) {
       case TetraMethod::small:
@@ -380,6 +386,12 @@ std::vector<TetraIssue> TetraFEM::init(std::span<const Vec3> X, std::span<const 
       }
     }
   }
+  // Inverted rest elements work (SOFA uses |volume|) but usually mean a badly ordered mesh: say so once.
+  if (n_inverted > 0)
+    issues.push_back({first_inverted, false,
+                      "inverted element (negative rest volume: vertices in the wrong order)" +
+                          (n_inverted > 1 ? "; " + std::to_string(n_inverted) + " inverted elements in all"
+                                          : std::string())});
   // Elements with indices beyond the state are refused: nothing may index the
   // state with them (the incidence lists would be written out of bounds).
   if (index_out_of_range) tetra.clear();
@@ -583,6 +595,156 @@ struct SlotSink {
 constexpr std::size_t kGrain = 512;
 }  // namespace
 
+namespace {
+// kLanes doubles; GCC lowers the operations to SSE2 pairs (baseline) or AVX
+// (avx2 clone). Each lane is an independent element: plain IEEE mul/add per
+// lane, no contraction (-ffp-contract=off), so every lane is bit-identical to
+// the scalar code.
+typedef double v4d __attribute__((vector_size(32), aligned(32)));
+static_assert(TetraFEM::kLanes == 4);
+#define ld(p) (*reinterpret_cast<const v4d*>(p))
+inline bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+// One block: X = Rᵀ-rotated dx (kRot), strain, stress, ·fact, nodal, rotate back.
+template <bool kRot>
+__attribute__((target_clones("avx2", "default"))) void tetra_dforce_block(const TetraFEM::HotBlock& B,
+                                                                          const double (*in)[4], double fact,
+                                                                          double (*out)[4]) {
+  // Everything is loaded straight from the block (local arrays of vectors
+  // make GCC copy them around with rep movs).
+#define SINEW_R(i) ld(B.r[i])
+#define SINEW_J(i) ld(B.j[i])
+  v4d X[12];
+  for (int k = 0; k < 4; ++k) {
+    const v4d v0 = ld(in[3 * k]), v1 = ld(in[3 * k + 1]), v2 = ld(in[3 * k + 2]);
+    if constexpr (kRot) {
+      X[3 * k + 0] = SINEW_R(0) * v0 + SINEW_R(3) * v1 + SINEW_R(6) * v2;
+      X[3 * k + 1] = SINEW_R(1) * v0 + SINEW_R(4) * v1 + SINEW_R(7) * v2;
+      X[3 * k + 2] = SINEW_R(2) * v0 + SINEW_R(5) * v1 + SINEW_R(8) * v2;
+    } else {
+      X[3 * k + 0] = v0;
+      X[3 * k + 1] = v1;
+      X[3 * k + 2] = v2;
+    }
+  }
+  // strain (J(r, c) mapped to b_k = j[3k], c_k = j[3k+1], d_k = j[3k+2] as in
+  // tetra_strain_displacement)
+  const v4d e0 = SINEW_J(0) * X[0] + SINEW_J(3) * X[3] + SINEW_J(6) * X[6] + SINEW_J(9) * X[9];
+  const v4d e1 = SINEW_J(1) * X[1] + SINEW_J(4) * X[4] + SINEW_J(7) * X[7] + SINEW_J(10) * X[10];
+  const v4d e2 = SINEW_J(2) * X[2] + SINEW_J(5) * X[5] + SINEW_J(8) * X[8] + SINEW_J(11) * X[11];
+  const v4d e3 = SINEW_J(1) * X[0] + SINEW_J(0) * X[1] + SINEW_J(4) * X[3] + SINEW_J(3) * X[4] +
+                 SINEW_J(7) * X[6] + SINEW_J(6) * X[7] + SINEW_J(10) * X[9] + SINEW_J(9) * X[10];
+  const v4d e4 = SINEW_J(2) * X[1] + SINEW_J(1) * X[2] + SINEW_J(5) * X[4] + SINEW_J(4) * X[5] +
+                 SINEW_J(8) * X[7] + SINEW_J(7) * X[8] + SINEW_J(11) * X[10] + SINEW_J(10) * X[11];
+  const v4d e5 = SINEW_J(2) * X[0] + SINEW_J(0) * X[2] + SINEW_J(5) * X[3] + SINEW_J(3) * X[5] +
+                 SINEW_J(8) * X[6] + SINEW_J(6) * X[8] + SINEW_J(11) * X[9] + SINEW_J(9) * X[11];
+  // stress, then scaled
+  const v4d Kd = ld(B.k[0]), Ko = ld(B.k[1]), Ks = ld(B.k[2]);
+  const v4d f = {fact, fact, fact, fact};
+  const v4d s0 = (Kd * e0 + Ko * e1 + Ko * e2) * f;
+  const v4d s1 = (Ko * e0 + Kd * e1 + Ko * e2) * f;
+  const v4d s2 = (Ko * e0 + Ko * e1 + Kd * e2) * f;
+  const v4d s3 = (Ks * e3) * f;
+  const v4d s4 = (Ks * e4) * f;
+  const v4d s5 = (Ks * e5) * f;
+  // nodal, rotated back
+  for (int k = 0; k < 4; ++k) {
+    const v4d bk = SINEW_J(3 * k), ck = SINEW_J(3 * k + 1), dk = SINEW_J(3 * k + 2);
+    const v4d f0 = bk * s0 + ck * s3 + dk * s5;
+    const v4d f1 = ck * s1 + bk * s3 + dk * s4;
+    const v4d f2 = dk * s2 + ck * s4 + bk * s5;
+    if constexpr (kRot) {
+      *reinterpret_cast<v4d*>(out[3 * k + 0]) = SINEW_R(0) * f0 + SINEW_R(1) * f1 + SINEW_R(2) * f2;
+      *reinterpret_cast<v4d*>(out[3 * k + 1]) = SINEW_R(3) * f0 + SINEW_R(4) * f1 + SINEW_R(5) * f2;
+      *reinterpret_cast<v4d*>(out[3 * k + 2]) = SINEW_R(6) * f0 + SINEW_R(7) * f1 + SINEW_R(8) * f2;
+    } else {
+      *reinterpret_cast<v4d*>(out[3 * k + 0]) = f0;
+      *reinterpret_cast<v4d*>(out[3 * k + 1]) = f1;
+      *reinterpret_cast<v4d*>(out[3 * k + 2]) = f2;
+    }
+  }
+#undef SINEW_R
+#undef SINEW_J
+}
+#undef ld
+}  // namespace
+
+bool TetraFEM::refresh_hot() const {
+  const std::size_t ne = tetra.size();
+  if (ne == 0 || J.size() != ne || K.size() != ne || rot.size() != ne) return false;
+  const std::size_t nb = (ne + kLanes - 1) / kLanes;
+  const bool j_stale = hot_j_gen != j_gen || hot.size() != nb;
+  if (j_stale) {
+    hot_ok = true;
+    for (std::size_t e = 0; e < ne && hot_ok; ++e) {
+      const TetraJ& Je = J[e];
+      for (int k = 0; k < 4 && hot_ok; ++k) {
+        const int r = 3 * k;
+        // structural zeros must be zeros, copies must be bitwise copies
+        hot_ok = same_bits(Je(r, 0), Je(r + 1, 3)) && same_bits(Je(r, 0), Je(r + 2, 5)) &&
+                 same_bits(Je(r + 1, 1), Je(r, 3)) && same_bits(Je(r + 1, 1), Je(r + 2, 4)) &&
+                 same_bits(Je(r + 2, 2), Je(r + 1, 4)) && same_bits(Je(r + 2, 2), Je(r, 5));
+      }
+    }
+    hot_j_gen = j_gen;
+    if (!hot_ok) {
+      hot.clear();
+      hot.shrink_to_fit();
+      return false;
+    }
+    hot.assign(nb, HotBlock{});
+    for (std::size_t e = 0; e < ne; ++e) {
+      HotBlock& B = hot[e / kLanes];
+      const int l = static_cast<int>(e % kLanes);
+      for (int k = 0; k < 4; ++k) {
+        B.j[3 * k + 0][l] = J[e](3 * k, 0);
+        B.j[3 * k + 1][l] = J[e](3 * k + 1, 1);
+        B.j[3 * k + 2][l] = J[e](3 * k + 2, 2);
+        B.n[k][l] = tetra[e][k];
+      }
+      B.k[0][l] = K[e].d;
+      B.k[1][l] = K[e].o;
+      B.k[2][l] = K[e].s;
+    }
+    hot_r_gen = 0;
+  }
+  if (!hot_ok) return false;
+  if (hot_r_gen != r_gen) {
+    for (std::size_t e = 0; e < ne; ++e) {
+      HotBlock& B = hot[e / kLanes];
+      const int l = static_cast<int>(e % kLanes);
+      const Mat3& r = rot[e];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) B.r[3 * i + j][l] = r(i, j);
+    }
+    hot_r_gen = r_gen;
+  }
+  return true;
+}
+
+template <bool kRot, class Sink>
+void TetraFEM::dforce_blocks(std::size_t b_begin, std::size_t b_end, std::span<const Vec3> dx, double kfactor,
+                             Sink& sink) const {
+  const std::size_t ne = tetra.size();
+  alignas(32) double in[12][4];
+  alignas(32) double out[12][4];
+  for (std::size_t b = b_begin; b < b_end; ++b) {
+    const HotBlock& B = hot[b];
+    for (int k = 0; k < 4; ++k)
+      for (int l = 0; l < kLanes; ++l) {
+        const Vec3& v = dx[B.n[k][l]];
+        in[3 * k + 0][l] = v[0];
+        in[3 * k + 1][l] = v[1];
+        in[3 * k + 2][l] = v[2];
+      }
+    tetra_dforce_block<kRot>(B, in, kfactor, out);
+    const std::size_t e0 = b * kLanes;
+    const int nl = static_cast<int>(std::min<std::size_t>(kLanes, ne - e0));
+    for (int l = 0; l < nl; ++l)
+      for (int k = 0; k < 4; ++k) sink.sub(e0 + l, k, B.n[k][l], out[3 * k][l], out[3 * k + 1][l], out[3 * k + 2][l]);
+  }
+}
+
 bool TetraFEM::parallel() const {
   return tetra.size() >= kParallelMinElements &&
          tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) > 1 &&
@@ -618,6 +780,7 @@ void TetraFEM::gather_slots(std::span<Vec3> out, bool subtract) const {
 }
 
 void TetraFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
+  touch(update_stiffness_matrix);
   const bool plastic_on = plasticity.max_threshold > 0;
   // SOFA: svd with computeGlobalMatrix returns before anything; small with
   // plasticity and computeGlobalMatrix adds nothing.
@@ -638,14 +801,29 @@ void TetraFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
 }
 
 void TetraFEM::add_dforce(std::span<const Vec3> dx, std::span<Vec3> df, double kfactor) const {
+  const bool fast = refresh_hot();
+  const bool rotated = method != TetraMethod::small;
+  auto run = [&](std::size_t e_begin, std::size_t e_end, auto& sink) {
+    if (!fast) {
+      dforce_range(e_begin, e_end, dx, kfactor, sink);
+      return;
+    }
+    // e_begin is a multiple of kLanes (kGrain is); e_end is one or the end.
+    const std::size_t b0 = e_begin / kLanes, b1 = (e_end + kLanes - 1) / kLanes;
+    if (rotated) dforce_blocks<true>(b0, b1, dx, kfactor, sink);
+    else dforce_blocks<false>(b0, b1, dx, kfactor, sink);
+  };
   if (!parallel()) {
     DirectSink sink{df};
-    dforce_range(0, tetra.size(), dx, kfactor, sink);
+    run(0, tetra.size(), sink);
     return;
   }
+  static_assert(kGrain % kLanes == 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tetra.size(), kGrain), [&](const auto& range) {
     SlotSink sink{slots};
-    dforce_range(range.begin(), range.end(), dx, kfactor, sink);
+    const std::size_t eb = range.begin() - range.begin() % kLanes;
+    const std::size_t ee = range.end() == tetra.size() ? range.end() : range.end() - range.end() % kLanes;
+    run(eb, ee, sink);
   });
   gather_slots(df, true);
 }
@@ -709,6 +887,7 @@ void TetraFEM::prepare_von_mises(std::span<const double> E, std::span<const doub
 }
 
 void TetraFEM::von_mises(std::span<const Vec3> x, int mode, std::vector<double>& vme, std::vector<double>& vmn) {
+  touch(false);
   const std::size_t ne = tetra.size();
   vme.assign(ne, 0.0);
   if (shape_inv.size() != ne) return;

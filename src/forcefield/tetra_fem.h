@@ -15,6 +15,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -165,6 +166,36 @@ struct TetraFEM {
   void dforce_range(std::size_t e_begin, std::size_t e_end, std::span<const Vec3> dx, double kfactor,
                     Sink& sink) const;
   void gather_slots(std::span<Vec3> out, bool subtract) const;
+
+  // ---- fast force differential (bit-identical to dforce_range): element data
+  // packed per block of kLanes elements (SoA inside the block) with J reduced to
+  // its 12 distinct entries, evaluated kLanes elements at a time, each lane doing
+  // exactly the scalar sequence of operations. Used only when every element's J
+  // has the structure of tetra_strain_displacement (bitwise copies); rebuilt
+  // lazily when J/K (j_gen) or rot (r_gen) changed.
+ public:
+  static constexpr int kLanes = 4;
+  struct alignas(32) HotBlock {
+    double j[12][kLanes];  // per node k: b_k, c_k, d_k (J(3k,0), J(3k+1,1), J(3k+2,2))
+    double k[3][kLanes];   // K.d, K.o, K.s
+    double r[9][kLanes];   // rot[e](i, j) at 3i + j
+    std::int32_t n[4][kLanes];
+  };
+  // Call after writing J/K (j = true) or rot directly (add_force/init/von_mises do it).
+  void touch(bool j) {
+    ++r_gen;
+    if (j) ++j_gen;
+  }
+
+ private:
+  std::uint64_t j_gen = 1, r_gen = 1;
+  mutable std::uint64_t hot_j_gen = 0, hot_r_gen = 0;
+  mutable bool hot_ok = false;  // every J has the compact structure
+  mutable std::vector<HotBlock> hot;
+  bool refresh_hot() const;  // false: use dforce_range
+  template <bool kRot, class Sink>
+  void dforce_blocks(std::size_t b_begin, std::size_t b_end, std::span<const Vec3> dx, double kfactor,
+                     Sink& sink) const;
 };
 
 template <class Sink>

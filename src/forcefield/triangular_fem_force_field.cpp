@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/node.h"
+#include "core/parse.h"
 #include "core/registry.h"
 
 namespace sinew {
@@ -134,8 +135,14 @@ bool TriangularFEMForceField::rebuild() {
   const auto& ey = young_modulus.get();
   const auto& pr = poisson_ratio.get();
   // SOFA computes the material before checking the values (then warns).
-  if (ey.size() == 1 && ey[0] < 0) msg_warning("youngModulus is negative (SOFA resets it to 1000 after use)");
-  if (pr.size() == 1 && pr[0] < 0) msg_warning("poissonRatio is negative (SOFA resets it to 0.3 after use)");
+  if (ey.size() == 1 && ey[0] < 0)
+    msg_warning("youngModulus is " + parse::format_double(ey[0]) + ": negative (SOFA resets it to 1000 after use)");
+  else if (ey.size() == 1 && ey[0] == 0)
+    msg_warning("youngModulus is 0: the triangles have no stiffness");
+  if (pr.size() == 1 && pr[0] < 0)
+    msg_warning("poissonRatio is " + parse::format_double(pr[0]) + ": negative (SOFA resets it to 0.3 after use)");
+  else if (pr.size() == 1 && pr[0] >= 0.5)
+    msg_warning("poissonRatio is " + parse::format_double(pr[0]) + " (must be in [0, 0.5))");
   el_.assign(tris.size(), Element{});
   for (std::size_t i = 0; i < tris.size(); ++i) {
     const Triangle& t = tris[i];

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/node.h"
+#include "core/parse.h"
 #include "core/registry.h"
 
 namespace sinew {
@@ -77,10 +78,15 @@ bool TriangularFEMForceFieldOptim::rebuild() {
   if (ey.empty()) msg_warning("'youngModulus' is empty: using 5000");
   if (pr.empty()) msg_warning("'poissonRatio' is empty: using 0.45");
   for (std::size_t i = 0; i < ey.size(); ++i)
-    if (ey[i] < 0) msg_warning("youngModulus of element " + std::to_string(i) + " is negative: replaced by 5000");
+    if (ey[i] < 0)
+      msg_warning("youngModulus of element " + std::to_string(i) + " is " + parse::format_double(ey[i]) +
+                  ": negative, replaced by 5000");
+    else if (ey[i] == 0)
+      msg_warning("youngModulus of element " + std::to_string(i) + " is 0: the element has no stiffness");
   for (std::size_t i = 0; i < pr.size(); ++i)
     if (pr[i] < 0 || pr[i] >= 0.5)
-      msg_warning("poissonRatio of element " + std::to_string(i) + " is outside [0, 0.5[: replaced by 0.45");
+      msg_warning("poissonRatio of element " + std::to_string(i) + " is " + parse::format_double(pr[i]) +
+                  ": outside [0, 0.5[, replaced by 0.45");
   const bool scaled = rest_scale.is_set();
   const double rs = rest_scale.get();
   info_.assign(nt, TriangleInfo{});

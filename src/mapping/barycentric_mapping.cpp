@@ -48,9 +48,9 @@ Base3 make_base(const double* e0, const double* e1, const double* e2, bool* ok =
   return out;
 }
 
-// Points farther out of their element than this (in element coordinates) are reported;
-// surface points, outside by round-off only, are not.
-constexpr double kOutsideTolerance = 1e-2;
+// Points farther out of their element than this (in element coordinates, a quarter of the
+// element) are reported; surface points of a finer visual mesh, slightly outside, are not.
+constexpr double kOutsideTolerance = 0.25;
 inline bool outside_cell(double fx, double fy, double fz) {
   auto out = [](double f) { return f < -kOutsideTolerance || f > 1 + kOutsideTolerance; };
   return out(fx) || out(fy) || out(fz);

@@ -103,6 +103,8 @@ void DiagonalMass::init() {
   {
     const auto& vm = vertex_mass.value();
     if (!vm.empty() && vm.size() < s.size()) {
+      msg_warning("vertexMass has " + std::to_string(vm.size()) + " values for " + std::to_string(s.size()) +
+                  " points: the missing ones take the last value");
       std::vector<double> p = vm;
       const double last = p.back();
       p.resize(s.size(), last);

@@ -62,6 +62,8 @@ void UniformMass::init() {
     state_ = ComponentState::invalid;
     return;
   }
+  if (m_ == 0 && n > 0)
+    msg_warning("the mass of each point is 0: dynamic solvers need a positive mass (singular system, division by zero)");
   inertia_mass_ = inertia * m_;
   inv_inertia_mass_ = inertia_mass_.inverse();
 }

@@ -1,6 +1,7 @@
 #include "solver/precomputed_warp_preconditioner.h"
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -137,6 +138,7 @@ void PrecomputedWarpPreconditioner::load_matrix(const BlockCsrMatrix& A) {
 }
 
 void PrecomputedWarpPreconditioner::rotate() {
+  rotated_ = true;
   if (!use_rotations.value()) return;
   RotationFinder* finder = nullptr;
   for (const auto& o : node()->objects())
@@ -182,6 +184,45 @@ void PrecomputedWarpPreconditioner::solve(const BlockCsrMatrix&, Eigen::VectorXd
     const Mat3& R = rot_[k];
     const Eigen::Index l = static_cast<Eigen::Index>(3 * k);
     for (int c = 0; c < 3; ++c) z[l + c] = R(c, 0) * t_[l] + R(c, 1) * t_[l + 1] + R(c, 2) * t_[l + 2];
+  }
+}
+
+void PrecomputedWarpPreconditioner::add_jminvjt(Eigen::MatrixXd& result,
+                                                const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& J,
+                                                double fact) {
+  if (!rotated_) rotate();  // already rotated when used as a preconditioner this step
+  rotated_ = false;
+  if (J.cols() == 0 || J.rows() == 0) return;
+  const Eigen::Index n = static_cast<Eigen::Index>(nb_dofs_ * 3);
+  if (!minv_ || minv_->rows() != n || n == 0) return;
+  const Eigen::Index m = J.rows();
+  if (result.rows() < m || result.cols() < m) result.conservativeResize(std::max(result.rows(), m),
+                                                                        std::max(result.cols(), m));
+  const double f = static_cast<double>(static_cast<float>(fact));  // SOFA passes the factor as float
+  std::vector<Eigen::Index> rows;
+  for (Eigen::Index r = 0; r < m; ++r)
+    if (J.outerIndexPtr()[r] != J.outerIndexPtr()[r + 1]) rows.push_back(r);
+  for (Eigen::Index a : rows) {
+    // jr = J_a·R (dense row), then jrm = jr·Minv.
+    Eigen::RowVectorXd jr = Eigen::RowVectorXd::Zero(n);
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator it(J, a); it; ++it) {
+      const Eigen::Index c = it.col();
+      if (c >= n) continue;
+      if (!use_rotations.value()) {
+        jr[c] += it.value();
+        continue;
+      }
+      const Mat3& R = rot_[static_cast<std::size_t>(c / 3)];
+      const Eigen::Index base = (c / 3) * 3;
+      for (int e = 0; e < 3; ++e) jr[base + e] += it.value() * R(c % 3, e);
+    }
+    const Eigen::RowVectorXd jrm = jr * (*minv_);
+    for (Eigen::Index b : rows) {
+      double res = 0;
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator it(J, b); it; ++it)
+        if (it.col() < n) res += jrm[it.col()] * it.value();
+      result(a, b) += res * f;
+    }
   }
 }
 

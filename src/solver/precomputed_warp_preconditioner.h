@@ -42,6 +42,10 @@ class PrecomputedWarpPreconditioner final : public MatrixLinearSolver {
   std::size_t system_size() const { return system_size_; }
   const Dense* inverse() const { return minv_.get(); }
   const std::vector<Mat3>& rotations() const { return rot_; }
+  // Constraint corrections, as SOFA: result(row_a, row_b) += (float)fact · (J·R·Minv·J_bᵀ)
+  // over the non-empty rows of J (the second factor is the unrotated J).
+  void add_jminvjt(Eigen::MatrixXd& result, const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& J,
+                   double fact) override;
 
  protected:
   void invert(const BlockCsrMatrix& A) override;
@@ -52,7 +56,7 @@ class PrecomputedWarpPreconditioner final : public MatrixLinearSolver {
   void load_matrix(const BlockCsrMatrix& A);
   void rotate();
 
-  bool first_ = true, warned_rotation_ = false;
+  bool first_ = true, warned_rotation_ = false, rotated_ = false;
   std::size_t system_size_ = 0, nb_dofs_ = 0;
   std::shared_ptr<Dense> minv_;
   std::vector<Mat3> rot_;

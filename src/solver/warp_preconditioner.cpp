@@ -1,5 +1,9 @@
 #include "solver/warp_preconditioner.h"
 
+#include <vector>
+
+#include <Eigen/SparseCore>
+
 #include "core/node.h"
 #include "core/registry.h"
 
@@ -109,6 +113,28 @@ void WarpPreconditioner::solve(const BlockCsrMatrix&, Eigen::VectorXd& z, const 
   } else {
     z = sol;
   }
+}
+
+void WarpPreconditioner::add_jminvjt(Eigen::MatrixXd& result,
+                                     const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& J, double fact) {
+  if (J.rows() == 0 || !inner_ || !rotations_) return;
+  using RowSparse = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+  const Eigen::Index n = J.cols();
+  std::vector<Eigen::Triplet<double, int>> tr;
+  const bool blocks = rotations_->block(0) != nullptr;
+  for (Eigen::Index k = 0; k < n / 3; ++k) {
+    const double* R = blocks ? rotations_->block(static_cast<std::size_t>(k)) : nullptr;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const double v = R ? R[i * 3 + j] : (i == j ? 1.0 : 0.0);
+        if (v != 0.0) tr.emplace_back(static_cast<int>(3 * k + i), static_cast<int>(3 * k + j), v);
+      }
+  }
+  for (Eigen::Index i = (n / 3) * 3; i < n; ++i) tr.emplace_back(static_cast<int>(i), static_cast<int>(i), 1.0);
+  RowSparse R(static_cast<int>(n), static_cast<int>(n));
+  R.setFromTriplets(tr.begin(), tr.end());
+  const RowSparse JR = J * R;
+  inner_->add_jminvjt(result, JR, fact);
 }
 
 void register_warp_preconditioner(Registry& r) {

@@ -24,6 +24,9 @@ class WarpPreconditioner final : public MatrixLinearSolver {
   void init() override;
   void bwd_init() override;
   MatrixLinearSolver* inner() const { return inner_; }
+  // Constraint corrections: J is rotated (J·R) and handed to the inner solver.
+  void add_jminvjt(Eigen::MatrixXd& result, const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& J,
+                   double fact) override;
 
  protected:
   void invert(const BlockCsrMatrix&) override {}

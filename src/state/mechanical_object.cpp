@@ -192,8 +192,14 @@ void MechanicalObject::init() {
   std::vector<double> v = velocity.get().data;
   const std::vector<double>& r = rest_position.get().data;
   // 2-3. Sizes from given vectors; rest_position wins when longer.
+  const std::size_t nr_given = r.size() / cw;
   if (r.size() / cw > x.size() / cw) x = r;
   std::size_t nx = x.size() / cw, nv = v.size() / dw;
+  // Mismatched sizes are accepted as SOFA does, but never silently.
+  if (nv > 1 && nx != nv)
+    msg_warning("velocity has " + std::to_string(nv) + " values but position has " + std::to_string(nx) +
+                (nv < nx ? ": the last velocity is repeated for the other points"
+                         : ": the missing positions are set to 0"));
   if (nx <= 1 && nv <= 1) {
     // 4. A single (or no) position is replaced by the topology's points.
     if (topology && topology->has_positions() && topology->nb_points() > 0) {
@@ -222,6 +228,11 @@ void MechanicalObject::init() {
     }
   }
   const std::size_t n = std::max(nx, nv);
+  // A rest_position shorter than the state would be padded with zeros below: use the positions instead.
+  const bool rest_short = nr_given > 0 && nr_given < n;
+  if (rest_short)
+    msg_warning("rest_position has " + std::to_string(nr_given) + " values but the state has " + std::to_string(n) +
+                " points: rest_position is set to position");
   size_ = n;
   resize_vec(x, true, n);
   resize_vec(v, false, n);
@@ -231,7 +242,7 @@ void MechanicalObject::init() {
   // 5. Initial transform.
   reinit();
   // 6. Rest position := position (× restScale) unless given with the right size.
-  if (rest_position.value().data.size() != position.value().data.size()) {
+  if (rest_short || rest_position.value().data.size() != position.value().data.size()) {
     std::vector<double> rp = position.value().data;
     if (rest_scale.value() != 1.0)
       for (std::size_t i = 0; i < n; ++i)

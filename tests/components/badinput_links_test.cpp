@@ -239,3 +239,45 @@ TEST_F(BadInputLinks, LinkToAMissingObjectIsReported) {
   EXPECT_TRUE(any_contains_all(o.errors, {"scene.scn:"})) << o.all();
   EXPECT_FALSE(o.init_ok);
 }
+
+// ---------------------------------------------------------------- scene text
+TEST_F(BadInputLinks, UnknownComponentHasFileLineAndSuggestion) {
+  const Outcome o = run_xml(dir, base_scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>
+  <MechanicalObjekt name="typo"/>)"),
+                            1);
+  EXPECT_FALSE(o.init_ok);
+  EXPECT_TRUE(any_contains_all(o.errors, {"scene.scn:11:", "MechanicalObjekt", "MechanicalObject"})) << o.all();
+}
+
+TEST_F(BadInputLinks, UnknownAttributeHasFileLineAndSuggestion) {
+  const Outcome o = run_xml(dir, base_scene(R"(<FixedProjectiveConstraint name="fix" indicess="0 2 3"/>)"), 1);
+  EXPECT_TRUE(any_contains_all(o.problems(), {"scene.scn:10:", "indicess", "indices"})) << o.all();
+}
+
+TEST_F(BadInputLinks, UnparsableIndexIsReported) {
+  const Outcome o = run_xml(dir, base_scene(R"(<FixedProjectiveConstraint name="fix" indices="0 two 3"/>)"), 1);
+  EXPECT_TRUE(any_contains_all(o.problems(), {"scene.scn:10:", "'fix'", "indices", "two"})) << o.all();
+}
+
+TEST_F(BadInputLinks, MalformedXmlHasFileLine) {
+  const Outcome o = run_xml(dir, R"(<Node name="root">
+  <MechanicalObject name="dofs" position="0 0 0"/>
+  <UniformMass totalMass="1"
+</Node>)",
+                            1);
+  EXPECT_FALSE(o.init_ok);
+  EXPECT_TRUE(any_contains_all(o.errors, {"scene.scn:"})) << o.all();
+}
+
+TEST_F(BadInputLinks, EmptySceneFileIsAnError) {
+  const Outcome o = run_xml(dir, "", 1);
+  EXPECT_FALSE(o.init_ok);
+  EXPECT_TRUE(any_contains_all(o.errors, {"scene.scn"})) << o.all();
+}
+
+TEST_F(BadInputLinks, NonFiniteDtIsNotSilent) {
+  std::string xml = base_scene(R"(<FixedProjectiveConstraint name="fix" indices="0 2 3"/>)");
+  xml.replace(xml.find("dt=\"0.01\""), 9, "dt=\"1e400\"");
+  const Outcome o = run_xml(dir, xml, 3);
+  expect_no_silent_garbage(o);
+}

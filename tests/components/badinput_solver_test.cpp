@@ -92,7 +92,10 @@ TEST_P(BadInputSolver, NegativeStiffnessIsNotSilentGarbage) {
   <SpringForceField name="springs" spring="0 1 -1e6 0 1  1 2 -1e6 0 1  2 3 -1e6 0 1"/>
 </Node>)",
                             50);
-  EXPECT_FALSE(o.problems().empty()) << "negative stiffness must be reported:\n" << o.all();
+  EXPECT_TRUE(any_contains_all(o.problems(), {"component 'springs' (SpringForceField)", "negative stiffness"}) ||
+              mentions(o, std::string("component 'lin' (") + c.name + ")"))
+      << "negative stiffness must be reported:\n"
+      << o.all();
   expect_no_silent_garbage(o);
 }
 
@@ -164,6 +167,7 @@ TEST(BadInputExplicit, NonFiniteForceIsNotSilent) {
   <ConstantForceField name="cf" indices="1" forces="inf 0 0"/>
 </Node>)",
                             5);
-  EXPECT_FALSE(o.errors.empty()) << o.all();
+  // "inf" is not read (SOFA's stream would not read it either): a warning names the field.
+  EXPECT_TRUE(any_contains_all(o.problems(), {"component 'cf' (ConstantForceField)", "forces", "inf"})) << o.all();
   expect_no_silent_garbage(o);
 }

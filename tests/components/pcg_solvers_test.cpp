@@ -372,3 +372,38 @@ TEST(PcgPrecomputedWarp, DefaultSystemIsNeverAssembled) {
   EXPECT_EQ(p->system_size(), 0u);
   EXPECT_EQ(p->system()->matrix_size.value(), VecNi<2>(0, 0));
 }
+
+TEST(PcgWarpCompliance, JMinvJtMatchesDenseProduct) {
+  // R = identity after an assembly: J·A⁻¹·Jᵀ through the inner direct solver;
+  // PrecomputedWarp (identity rotations from the finder) gives the same with a float factor.
+  const int n = 24;
+  const Eigen::MatrixXd A = random_spd(n, 41);
+  Eigen::SparseMatrix<double, Eigen::RowMajor, int> J(4, n);
+  std::vector<Eigen::Triplet<double, int>> tr = {{0, 0, 1.0}, {0, 5, -0.5}, {2, 7, 2.0}, {2, 8, 1.0}, {3, 23, 0.3}};
+  J.setFromTriplets(tr.begin(), tr.end());
+  const Eigen::MatrixXd Jd = J;
+  const Eigen::MatrixXd ref = Jd * A.inverse() * Jd.transpose();
+
+  MatrixFreeScene warp(A, "<PCGLinearSolver iterations='100' preconditioner='@p'/>"
+                          "<RotationMatrixSystem name='R'/><WarpPreconditioner name='p' linearSystem='@R' "
+                          "linearSolver='@ldl'/><MatrixLinearSystem template='CompressedRowSparseMatrixMat3x3' "
+                          "name='sys'/><SparseLDLSolver name='ldl' template='CompressedRowSparseMatrixMat3x3' "
+                          "linearSystem='@sys'/>");
+  warp.solve(random_vec(n, 1));
+  auto* wp = test::get<WarpPreconditioner>(*warp.s.root, "p");
+  ASSERT_NE(wp, nullptr);
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(4, 4);
+  wp->add_jminvjt(W, J, 2.0);
+  EXPECT_LT((W - 2.0 * ref).norm(), 1e-10 * ref.norm());
+
+  MatrixFreeScene pre(A, "<PCGLinearSolver iterations='100' preconditioner='@p'/><MatrixLinearSystem name='ms'/>"
+                         "<PrecomputedWarpPreconditioner name='p' linearSystem='@ms' use_file='false'/>");
+  pre.solve(random_vec(n, 1));
+  auto* pp = test::get<PrecomputedWarpPreconditioner>(*pre.s.root, "p");
+  ASSERT_NE(pp, nullptr);
+  Eigen::MatrixXd W2 = Eigen::MatrixXd::Zero(4, 4);
+  const double fact = 0.1;  // not exact in float
+  pp->add_jminvjt(W2, J, fact);
+  EXPECT_LT((W2 - static_cast<double>(static_cast<float>(fact)) * ref).norm(), 1e-10 * ref.norm());
+  EXPECT_GT((W2 - fact * ref).norm(), 0.0);
+}
