@@ -87,20 +87,42 @@ inline Vec3 edge_x(const std::array<Vec3, 8>& n) { return edge_chain(n, 1, 0, 2,
 inline Vec3 edge_y(const std::array<Vec3, 8>& n) { return edge_chain(n, 3, 0, 2, 1, 7, 4, 6, 5); }
 inline Vec3 edge_z(const std::array<Vec3, 8>& n) { return edge_chain(n, 4, 0, 5, 1, 7, 3, 6, 2); }
 
-// F = K·D, each row summed left to right starting from the first product.
 // F = K·D with each F[i] summed left to right from K(i,0)·D[0], as SOFA does.
 // K is exactly symmetric (its lower half is a copy of the upper half), so
 // row c of the storage is column c: accumulating column by column keeps every
 // row's summation order while letting the 24 rows proceed independently
 // (vectorised, no dependency chain), for bit-identical results.
-inline void mul24(const Mat24& K, const double* D, double* F) {
-  const double* k = K.data();
-  for (int i = 0; i < 24; ++i) F[i] = k[i] * D[0];
+// Compiled twice (runtime choice): the AVX2 clone only widens the
+// row-wise vectorisation (4 rows per instruction instead of 2); every row
+// still gets k·D0, then += col·d in column order, no FMA (-ffp-contract=off,
+// and avx2 does not enable fma): bit-identical to the default clone.
+// The 24 accumulators stay in registers (6 vectors of 4 rows; plain arrays
+// through pointers made GCC load/store F for every column).
+typedef double v4u __attribute__((vector_size(32), aligned(8)));
+__attribute__((target_clones("avx2", "default"))) void mul24_clones(const double* k, const double* D, double* F) {
+  const v4u d0 = {D[0], D[0], D[0], D[0]};
+  v4u a0 = *reinterpret_cast<const v4u*>(k + 0) * d0;
+  v4u a1 = *reinterpret_cast<const v4u*>(k + 4) * d0;
+  v4u a2 = *reinterpret_cast<const v4u*>(k + 8) * d0;
+  v4u a3 = *reinterpret_cast<const v4u*>(k + 12) * d0;
+  v4u a4 = *reinterpret_cast<const v4u*>(k + 16) * d0;
+  v4u a5 = *reinterpret_cast<const v4u*>(k + 20) * d0;
   for (int c = 1; c < 24; ++c) {
     const double* col = k + 24 * c;
-    const double d = D[c];
-    for (int i = 0; i < 24; ++i) F[i] += col[i] * d;
+    const v4u d = {D[c], D[c], D[c], D[c]};
+    a0 += *reinterpret_cast<const v4u*>(col + 0) * d;
+    a1 += *reinterpret_cast<const v4u*>(col + 4) * d;
+    a2 += *reinterpret_cast<const v4u*>(col + 8) * d;
+    a3 += *reinterpret_cast<const v4u*>(col + 12) * d;
+    a4 += *reinterpret_cast<const v4u*>(col + 16) * d;
+    a5 += *reinterpret_cast<const v4u*>(col + 20) * d;
   }
+  *reinterpret_cast<v4u*>(F + 0) = a0;
+  *reinterpret_cast<v4u*>(F + 4) = a1;
+  *reinterpret_cast<v4u*>(F + 8) = a2;
+  *reinterpret_cast<v4u*>(F + 12) = a3;
+  *reinterpret_cast<v4u*>(F + 16) = a4;
+  *reinterpret_cast<v4u*>(F + 20) = a5;
 }
 
 bool all_finite(const Mat24& K) {
@@ -352,7 +374,7 @@ void HexaFEM::element_force(std::size_t e, std::span<const Vec3> x, Vec3* out, d
     for (int c = 0; c < 3; ++c) D[3 * k + c] = r[k][c] - deformed[k][c];
 
   if (update_stiffness) hexa_element_stiffness(deformed, material[e], coef[e], K[e]);
-  mul24(K[e], D, F);
+  mul24_clones(K[e].data(), D, F);
 
   for (int k = 0; k < 8; ++k)
     out[k] = method == HexaMethod::small ? Vec3(F[3 * k], F[3 * k + 1], F[3 * k + 2])
@@ -373,7 +395,7 @@ void HexaFEM::element_dforce(std::size_t e, std::span<const Vec3> dx, double kfa
     X[3 * k + 1] = v[1];
     X[3 * k + 2] = v[2];
   }
-  mul24(dforce_stiffness(e), X, F);
+  mul24_clones(dforce_stiffness(e).data(), X, F);
   for (int k = 0; k < 8; ++k) {
     const Vec3 t = rotate ? mul_t(Re, F[3 * k], F[3 * k + 1], F[3 * k + 2]) : Vec3(F[3 * k], F[3 * k + 1], F[3 * k + 2]);
     out[k] = Vec3(t[0] * kfactor, t[1] * kfactor, t[2] * kfactor);

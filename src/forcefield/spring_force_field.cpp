@@ -141,7 +141,7 @@ bool SpringForceField::sizes_ok() {
     const auto& s = i < springs_.size() ? springs_[i] : grid_springs_[i - springs_.size()];
     if (!fits(s)) {
       msg_error("spring " + std::to_string(i) + " (" + std::to_string(s.m1) + ", " + std::to_string(s.m2) +
-                ") refers to a point removed from the state at step " + std::to_string(node()->step_index) +
+                ") refers to a point removed from the state at step " + std::to_string(node()->root()->step_index) +
                 ": the force field stops");
       state_ = ComponentState::invalid;
       springs_.clear();

@@ -386,8 +386,9 @@ std::vector<TetraIssue> TetraFEM::init(std::span<const Vec3> X, std::span<const 
       }
     }
   }
-  // Inverted rest elements work (SOFA uses |volume|) but usually mean a badly ordered mesh: say so once.
-  if (n_inverted > 0)
+  // Inverted rest elements work (SOFA uses |volume|) but usually mean a badly ordered mesh: say so once
+  // (not for SOFA's own split of hexahedra, which yields inverted tetrahedra by construction).
+  if (n_inverted > 0 && !split_from_hexahedra)
     issues.push_back({first_inverted, false,
                       "inverted element (negative rest volume: vertices in the wrong order)" +
                           (n_inverted > 1 ? "; " + std::to_string(n_inverted) + " inverted elements in all"
@@ -431,6 +432,7 @@ void TetraFEM::force_range(std::size_t e_begin, std::size_t e_end, std::span<con
         } else {
           tetra_jkjt(J[e], K[e], jkjt);
           tetra_rotated_stiffness(jkjt, Mat3::Identity(), S, SR);
+          if (sr_cache.size() == tetra.size()) sr_cache[e] = SR;
           for (int i = 0; i < 12; ++i) {
             double r = 0;
             for (int j = 0; j < 12; ++j) r += S(i, j) * D[j];
@@ -495,6 +497,7 @@ void TetraFEM::force_range(std::size_t e_begin, std::size_t e_end, std::span<con
           J[e](10, 1) = 0;
           tetra_jkjt(J[e], K[e], jkjt);
           tetra_rotated_stiffness(jkjt, rot[e], S, SR);
+          if (sr_cache.size() == tetra.size()) sr_cache[e] = SR;
           for (int i = 0; i < 12; ++i) {
             double r = 0;
             for (int j = 0; j < 12; ++j) r += S(i, j) * D[j];
@@ -669,7 +672,101 @@ __attribute__((target_clones("avx2", "default"))) void tetra_dforce_block(const 
 #undef ld
 }  // namespace
 
-bool TetraFEM::refresh_hot() const {
+namespace {
+// Method large, no plasticity, no stiffness update: frame, rotated
+// displacement, J·K·Jᵀ·Δ and rotation back for kLanes elements (lane = element,
+// every lane doing force_range's scalar sequence). in[c][l]: node k component i
+// at c = 3k + i; q: q[1][0], q[2][0], q[2][1], q[3][0..2]. Writes rot (r[3i+j]
+// = R(j, i), as rot[e] = Rᵀ) and the 12 force components.
+__attribute__((target_clones("avx2", "default"))) void tetra_force_block_large(const TetraFEM::HotBlock& B,
+                                                                              const double (*in)[4],
+                                                                              const double (*q)[4], double (*r)[4],
+                                                                              double (*out)[4]) {
+#define ld(p) (*reinterpret_cast<const v4d*>(p))
+#define st(p, v) (*reinterpret_cast<v4d*>(p) = (v))
+  const v4d eps = {kEps, kEps, kEps, kEps};
+  const v4d ax = ld(in[0]), ay = ld(in[1]), az = ld(in[2]);
+  // SOFA normalize: divide by the norm when it is above DBL_EPSILON (per lane).
+  auto normalize = [&](v4d& u0, v4d& u1, v4d& u2) {
+    const v4d s2 = u0 * u0 + u1 * u1 + u2 * u2;
+    v4d n;
+    for (int l = 0; l < 4; ++l) n[l] = std::sqrt(s2[l]);
+    const auto big = n > eps;
+    const v4d d0 = u0 / n, d1 = u1 / n, d2 = u2 / n;
+    u0 = big ? d0 : u0;
+    u1 = big ? d1 : u1;
+    u2 = big ? d2 : u2;
+  };
+  // ex = normalized(b − a), ey = c − a, ez = normalized(ex × ey), ey = ez × ex
+  v4d ex0 = ld(in[3]) - ax, ex1 = ld(in[4]) - ay, ex2 = ld(in[5]) - az;
+  normalize(ex0, ex1, ex2);
+  v4d ey0 = ld(in[6]) - ax, ey1 = ld(in[7]) - ay, ey2 = ld(in[8]) - az;
+  v4d ez0 = ex1 * ey2 - ex2 * ey1, ez1 = ex2 * ey0 - ex0 * ey2, ez2 = ex0 * ey1 - ex1 * ey0;
+  normalize(ez0, ez1, ez2);
+  ey0 = ez1 * ex2 - ez2 * ex1;
+  ey1 = ez2 * ex0 - ez0 * ex2;
+  ey2 = ez0 * ex1 - ez1 * ex0;
+  // rot = Rᵀ: rot(i, j) = R(j, i), R rows ex, ey, ez
+  st(r[0], ex0); st(r[1], ey0); st(r[2], ez0);
+  st(r[3], ex1); st(r[4], ey1); st(r[5], ez1);
+  st(r[6], ex2); st(r[7], ey2); st(r[8], ez2);
+  // p_k = R·x_k
+  v4d p[4][3];
+  for (int k = 0; k < 4; ++k) {
+    const v4d x0 = ld(in[3 * k]), x1 = ld(in[3 * k + 1]), x2 = ld(in[3 * k + 2]);
+    p[k][0] = ex0 * x0 + ex1 * x1 + ex2 * x2;
+    p[k][1] = ey0 * x0 + ey1 * x1 + ey2 * x2;
+    p[k][2] = ez0 * x0 + ez1 * x1 + ez2 * x2;
+  }
+  p[1][0] -= p[0][0];
+  p[2][0] -= p[0][0];
+  p[2][1] -= p[0][1];
+  p[3][0] -= p[0][0];
+  p[3][1] -= p[0][1];
+  p[3][2] -= p[0][2];
+  const v4d z = {0, 0, 0, 0};
+  v4d X[12];
+  X[0] = X[1] = X[2] = z;
+  X[3] = ld(q[0]) - p[1][0];
+  X[4] = X[5] = z;
+  X[6] = ld(q[1]) - p[2][0];
+  X[7] = ld(q[2]) - p[2][1];
+  X[8] = z;
+  X[9] = ld(q[3]) - p[3][0];
+  X[10] = ld(q[4]) - p[3][1];
+  X[11] = ld(q[5]) - p[3][2];
+#define SINEW_J(i) ld(B.j[i])
+  const v4d e0 = SINEW_J(0) * X[0] + SINEW_J(3) * X[3] + SINEW_J(6) * X[6] + SINEW_J(9) * X[9];
+  const v4d e1 = SINEW_J(1) * X[1] + SINEW_J(4) * X[4] + SINEW_J(7) * X[7] + SINEW_J(10) * X[10];
+  const v4d e2 = SINEW_J(2) * X[2] + SINEW_J(5) * X[5] + SINEW_J(8) * X[8] + SINEW_J(11) * X[11];
+  const v4d e3 = SINEW_J(1) * X[0] + SINEW_J(0) * X[1] + SINEW_J(4) * X[3] + SINEW_J(3) * X[4] +
+                 SINEW_J(7) * X[6] + SINEW_J(6) * X[7] + SINEW_J(10) * X[9] + SINEW_J(9) * X[10];
+  const v4d e4 = SINEW_J(2) * X[1] + SINEW_J(1) * X[2] + SINEW_J(5) * X[4] + SINEW_J(4) * X[5] +
+                 SINEW_J(8) * X[7] + SINEW_J(7) * X[8] + SINEW_J(11) * X[10] + SINEW_J(10) * X[11];
+  const v4d e5 = SINEW_J(2) * X[0] + SINEW_J(0) * X[2] + SINEW_J(5) * X[3] + SINEW_J(3) * X[5] +
+                 SINEW_J(8) * X[6] + SINEW_J(6) * X[8] + SINEW_J(11) * X[9] + SINEW_J(9) * X[11];
+  const v4d Kd = ld(B.k[0]), Ko = ld(B.k[1]), Ks = ld(B.k[2]);
+  const v4d s0 = Kd * e0 + Ko * e1 + Ko * e2;
+  const v4d s1 = Ko * e0 + Kd * e1 + Ko * e2;
+  const v4d s2 = Ko * e0 + Ko * e1 + Kd * e2;
+  const v4d s3 = Ks * e3, s4 = Ks * e4, s5 = Ks * e5;
+  for (int k = 0; k < 4; ++k) {
+    const v4d bk = SINEW_J(3 * k), ck = SINEW_J(3 * k + 1), dk = SINEW_J(3 * k + 2);
+    const v4d f0 = bk * s0 + ck * s3 + dk * s5;
+    const v4d f1 = ck * s1 + bk * s3 + dk * s4;
+    const v4d f2 = dk * s2 + ck * s4 + bk * s5;
+    // fk = rot·F_k, rot(i, j) = R(j, i)
+    st(out[3 * k + 0], ex0 * f0 + ey0 * f1 + ez0 * f2);
+    st(out[3 * k + 1], ex1 * f0 + ey1 * f1 + ez1 * f2);
+    st(out[3 * k + 2], ex2 * f0 + ey2 * f1 + ez2 * f2);
+  }
+#undef SINEW_J
+#undef ld
+#undef st
+}
+}  // namespace
+
+bool TetraFEM::refresh_hot(bool rot_written) const {
   const std::size_t ne = tetra.size();
   if (ne == 0 || J.size() != ne || K.size() != ne || rot.size() != ne) return false;
   const std::size_t nb = (ne + kLanes - 1) / kLanes;
@@ -709,6 +806,7 @@ bool TetraFEM::refresh_hot() const {
     hot_r_gen = 0;
   }
   if (!hot_ok) return false;
+  if (rot_written) hot_r_gen = r_gen;  // the caller writes every rotation into the blocks
   if (hot_r_gen != r_gen) {
     for (std::size_t e = 0; e < ne; ++e) {
       HotBlock& B = hot[e / kLanes];
@@ -720,6 +818,41 @@ bool TetraFEM::refresh_hot() const {
     hot_r_gen = r_gen;
   }
   return true;
+}
+
+template <class Sink>
+void TetraFEM::force_blocks_large(std::size_t b_begin, std::size_t b_end, std::span<const Vec3> x, Sink& sink) {
+  const std::size_t ne = tetra.size();
+  alignas(32) double in[12][4];
+  alignas(32) double q[6][4];
+  alignas(32) double out[12][4];
+  for (std::size_t b = b_begin; b < b_end; ++b) {
+    HotBlock& B = hot[b];
+    const std::size_t e0 = b * kLanes;
+    const int nl = static_cast<int>(std::min<std::size_t>(kLanes, ne - e0));
+    for (int l = 0; l < kLanes; ++l) {
+      for (int k = 0; k < 4; ++k) {
+        const Vec3& v = x[B.n[k][l]];
+        in[3 * k + 0][l] = v[0];
+        in[3 * k + 1][l] = v[1];
+        in[3 * k + 2][l] = v[2];
+      }
+      const auto& qe = rest[l < nl ? e0 + l : e0];
+      q[0][l] = qe[1][0];
+      q[1][l] = qe[2][0];
+      q[2][l] = qe[2][1];
+      q[3][l] = qe[3][0];
+      q[4][l] = qe[3][1];
+      q[5][l] = qe[3][2];
+    }
+    tetra_force_block_large(B, in, q, B.r, out);
+    for (int l = 0; l < nl; ++l) {
+      Mat3& r = rot[e0 + l];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) r(i, j) = B.r[3 * i + j][l];
+      for (int k = 0; k < 4; ++k) sink.add(e0 + l, k, B.n[k][l], out[3 * k][l], out[3 * k + 1][l], out[3 * k + 2][l]);
+    }
+  }
 }
 
 template <bool kRot, class Sink>
@@ -780,24 +913,51 @@ void TetraFEM::gather_slots(std::span<Vec3> out, bool subtract) const {
 }
 
 void TetraFEM::add_force(std::span<const Vec3> x, std::span<Vec3> f) {
-  touch(update_stiffness_matrix);
+  // computeGlobalMatrix (large) zeroes three J entries in force_range.
+  touch(update_stiffness_matrix || assembling);
+  sr_r_gen = sr_j_gen = 0;
   const bool plastic_on = plasticity.max_threshold > 0;
   // SOFA: svd with computeGlobalMatrix returns before anything; small with
   // plasticity and computeGlobalMatrix adds nothing.
   if (assembling && method == TetraMethod::svd) return;
   if (assembling && plastic_on && method == TetraMethod::small) return;
   // Elements that add nothing leave their slots untouched: clear them first.
-  if (!parallel() || assembling) {
+  if (assembling) {
     DirectSink sink{f};
+    if ((method == TetraMethod::small || method == TetraMethod::large) && !plastic_on) {
+      sr_cache.resize(tetra.size());
+      force_range(0, tetra.size(), x, sink);
+      sr_j_gen = j_gen;  // every element stored its SR
+      sr_r_gen = r_gen;
+      return;
+    }
     force_range(0, tetra.size(), x, sink);
     return;
   }
-  for (auto& s : slots) s.fill(Vec3::Zero());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tetra.size(), kGrain), [&](const auto& range) {
-    SlotSink sink{slots};
-    force_range(range.begin(), range.end(), x, sink);
-  });
-  gather_slots(f, false);
+  // Packed path: large, no plasticity, no stiffness update, compact J.
+  const bool packed =
+      method == TetraMethod::large && !plastic_on && !update_stiffness_matrix && refresh_hot(/*rot_written=*/true);
+  auto run = [&](std::size_t e_begin, std::size_t e_end, auto& sink) {
+    if (!packed) {
+      force_range(e_begin, e_end, x, sink);
+      return;
+    }
+    force_blocks_large(e_begin / kLanes, (e_end + kLanes - 1) / kLanes, x, sink);
+  };
+  if (!parallel()) {
+    DirectSink sink{f};
+    run(0, tetra.size(), sink);
+  } else {
+    for (auto& s : slots) s.fill(Vec3::Zero());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tetra.size(), kGrain), [&](const auto& range) {
+      SlotSink sink{slots};
+      const std::size_t eb = range.begin() - range.begin() % kLanes;
+      const std::size_t ee = range.end() == tetra.size() ? range.end() : range.end() - range.end() % kLanes;
+      run(eb, ee, sink);
+    });
+    gather_slots(f, false);
+  }
+  if (packed) hot_r_gen = r_gen;  // the blocks hold the new rotations
 }
 
 void TetraFEM::add_dforce(std::span<const Vec3> dx, std::span<Vec3> df, double kfactor) const {

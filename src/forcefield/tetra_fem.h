@@ -192,7 +192,14 @@ struct TetraFEM {
   mutable std::uint64_t hot_j_gen = 0, hot_r_gen = 0;
   mutable bool hot_ok = false;  // every J has the compact structure
   mutable std::vector<HotBlock> hot;
-  bool refresh_hot() const;  // false: use dforce_range
+  // SR = rot·JKJt·rotᵀ per element from the last add_force with computeGlobalMatrix.
+  std::vector<Mat12> sr_cache;
+  std::uint64_t sr_j_gen = 0, sr_r_gen = 0;
+  mutable std::vector<Mat12> jkjt_cache;  // add_stiffness_blocks: JKJt per element (valid for jkjt_gen)
+  mutable std::uint64_t jkjt_gen = 0;
+  bool refresh_hot(bool rot_written = false) const;  // false: use dforce_range
+  template <class Sink>
+  void force_blocks_large(std::size_t b_begin, std::size_t b_end, std::span<const Vec3> x, Sink& sink);
   template <bool kRot, class Sink>
   void dforce_blocks(std::size_t b_begin, std::size_t b_end, std::span<const Vec3> dx, double kfactor,
                      Sink& sink) const;
@@ -200,11 +207,27 @@ struct TetraFEM {
 
 template <class Sink>
 void TetraFEM::add_stiffness_blocks(Sink&& sink) const {
-  Mat12 jkjt, S, SR;
+  Mat12 jkjt, S, SRl;
+  // add_force (computeGlobalMatrix) already computed SR with the same J, K and
+  // rot this step: reuse it.
+  const bool cached = sr_cache.size() == tetra.size() && sr_r_gen == r_gen && sr_j_gen == j_gen;
+  // JKJt depends on J and K only: kept from one call to the next.
+  const bool keep_jkjt = !cached && !update_stiffness_matrix;
+  const bool jkjt_ok = keep_jkjt && jkjt_cache.size() == tetra.size() && jkjt_gen == j_gen;
+  if (keep_jkjt && !jkjt_ok) jkjt_cache.resize(tetra.size());
   for (std::size_t e = 0; e < tetra.size(); ++e) {
-    tetra_jkjt(J[e], K[e], jkjt);
-    const Mat3 r = method == TetraMethod::small ? Mat3::Identity() : rot[e];
-    tetra_rotated_stiffness(jkjt, r, S, SR);
+    if (!cached) {
+      const Mat12* jk = &jkjt;
+      if (jkjt_ok) {
+        jk = &jkjt_cache[e];
+      } else {
+        tetra_jkjt(J[e], K[e], jkjt);
+        if (keep_jkjt) jkjt_cache[e] = jkjt;
+      }
+      const Mat3 r = method == TetraMethod::small ? Mat3::Identity() : rot[e];
+      tetra_rotated_stiffness(*jk, r, S, SRl);
+    }
+    const Mat12& SR = cached ? sr_cache[e] : SRl;
     for (int n1 = 0; n1 < 4; ++n1)
       for (int n2 = 0; n2 < 4; ++n2) {
         Mat3 b;
@@ -213,6 +236,7 @@ void TetraFEM::add_stiffness_blocks(Sink&& sink) const {
         sink(tetra[e][n1], tetra[e][n2], b);
       }
   }
+  if (keep_jkjt) jkjt_gen = j_gen;
 }
 
 // SOFA's hexahedron → 6 tetrahedra split used by TetrahedronFEMForceField when

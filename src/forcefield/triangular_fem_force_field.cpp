@@ -214,7 +214,7 @@ void TriangularFEMForceField::add_force(const MechParams& p) {
     std::array<double, 18> J;
     if (!local_j(db[0], dc[0], dc[1], J)) {
       msg_error("triangle " + std::to_string(i) + " is degenerate (zero area) at step " +
-                std::to_string(node()->step_index) + ": the force field stops");
+                std::to_string(node()->root()->step_index) + ": the force field stops");
       state_ = ComponentState::invalid;
       el_.clear();
       return;
@@ -266,7 +266,7 @@ void TriangularFEMForceField::add_force_small(const double* x, double* f) {
     std::array<double, 18> J;
     if (!global_j(db, dc, J)) {
       msg_error("triangle " + std::to_string(i) + " is degenerate (zero area) at step " +
-                std::to_string(node()->step_index) + ": the force field stops");
+                std::to_string(node()->root()->step_index) + ": the force field stops");
       state_ = ComponentState::invalid;
       el_.clear();
       return;

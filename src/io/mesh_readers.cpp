@@ -233,10 +233,11 @@ std::optional<MeshData> read_obj(const std::string& path, std::string* error, co
         tex.push_back(vtn[1]);
         nor.push_back(vtn[2]);
       }
-      if (nodes.size() < (tok == "f" ? 3u : 2u)) {
+      // As SOFA: 'f' and 'l' are read alike, two vertices make an edge; fewer is an error.
+      if (nodes.size() < 2u) {
         if (error)
           *error = where(path, ln + 1) + "'" + std::string(tok) + "' with " + std::to_string(nodes.size()) +
-                   " vertices (at least " + (tok == "f" ? "3" : "2") + " expected; truncated file?)";
+                   " vertices (at least 2 expected; truncated file?)";
         return std::nullopt;
       }
       m.face_positions.push_back(nodes);

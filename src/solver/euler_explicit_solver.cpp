@@ -45,8 +45,8 @@ void EulerExplicitSolver::solve(double dt, int x_result, int v_result) {
     ops.v_peq(v_result, acc_, h);
   }
   if (!ops.all_finite(x_result) || !ops.all_finite(v_result)) {
-    msg_error("the simulation diverged at t = " + parse::format_double(node()->time.value() + h) +
-              " (non-finite positions or velocities); reduce dt");
+    msg_error("the simulation diverged at step " + std::to_string(node()->root()->step_index) + ", t = " +
+              parse::format_double(node()->time.value() + h) + " (non-finite positions or velocities); reduce dt");
     state_ = ComponentState::invalid;
   }
 }

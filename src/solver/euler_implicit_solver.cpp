@@ -71,7 +71,8 @@ void EulerImplicitSolver::solve(double dt, int x_result, int v_result) {
   }
   if (!ops.all_finite(x_result) || !ops.all_finite(v_result)) {
     // Stop here rather than let NaNs spread: report once, then this solver is off.
-    msg_error("the simulation diverged at t = " + parse::format_double(node()->time.value() + h) +
+    msg_error("the simulation diverged at step " + std::to_string(node()->root()->step_index) +
+              ", t = " + parse::format_double(node()->time.value() + h) +
               " (non-finite positions or velocities); reduce dt or check the material parameters");
     state_ = ComponentState::invalid;
     return;

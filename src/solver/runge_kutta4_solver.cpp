@@ -55,8 +55,8 @@ void RungeKutta4Solver::solve(double dt, int x_result, int v_result) {
   ops.v_peq(v_result, k3a_, h3);
   ops.v_peq(v_result, k4a_, h6);
   if (!ops.all_finite(x_result) || !ops.all_finite(v_result)) {
-    msg_error("the simulation diverged at t = " + parse::format_double(t0 + h) +
-              " (non-finite positions or velocities); reduce dt");
+    msg_error("the simulation diverged at step " + std::to_string(node()->root()->step_index) +
+              ", t = " + parse::format_double(t0 + h) + " (non-finite positions or velocities); reduce dt");
     state_ = ComponentState::invalid;
   }
 }

@@ -246,17 +246,17 @@ TEST_F(BadInputLinks, UnknownComponentHasFileLineAndSuggestion) {
   <MechanicalObjekt name="typo"/>)"),
                             1);
   EXPECT_FALSE(o.init_ok);
-  EXPECT_TRUE(any_contains_all(o.errors, {"scene.scn:11:", "MechanicalObjekt", "MechanicalObject"})) << o.all();
+  EXPECT_TRUE(any_contains_all(o.errors, {"scene.scn:10:", "MechanicalObjekt", "MechanicalObject"})) << o.all();
 }
 
 TEST_F(BadInputLinks, UnknownAttributeHasFileLineAndSuggestion) {
   const Outcome o = run_xml(dir, base_scene(R"(<FixedProjectiveConstraint name="fix" indicess="0 2 3"/>)"), 1);
-  EXPECT_TRUE(any_contains_all(o.problems(), {"scene.scn:10:", "indicess", "indices"})) << o.all();
+  EXPECT_TRUE(any_contains_all(o.problems(), {"scene.scn:9:", "indicess", "indices"})) << o.all();
 }
 
 TEST_F(BadInputLinks, UnparsableIndexIsReported) {
   const Outcome o = run_xml(dir, base_scene(R"(<FixedProjectiveConstraint name="fix" indices="0 two 3"/>)"), 1);
-  EXPECT_TRUE(any_contains_all(o.problems(), {"scene.scn:10:", "'fix'", "indices", "two"})) << o.all();
+  EXPECT_TRUE(any_contains_all(o.problems(), {"scene.scn:9:", "'fix'", "indices", "two"})) << o.all();
 }
 
 TEST_F(BadInputLinks, MalformedXmlHasFileLine) {

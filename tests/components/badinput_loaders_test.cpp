@@ -27,7 +27,8 @@ std::ostream& operator<<(std::ostream& os, const LoaderCase& c) { return os << c
 
 const char* kObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n";
 const char* kObjGarbage = "v 0 0 0\nv 1 0 0\nv 0 1e+ 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n";
-const char* kObjTrunc = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2";
+// Cut inside a face line: a one-vertex face (two vertices would be a valid edge, as in SOFA).
+const char* kObjTrunc = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1";
 const char* kObjIndex = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 9\n";
 
 const char* kMsh =

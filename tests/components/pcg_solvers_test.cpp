@@ -39,8 +39,9 @@ Eigen::MatrixXd random_spd(int n, unsigned seed) {
 class DenseMatrixForceField final : public ForceField, public RotationFinder {
  public:
   Eigen::MatrixXd K;
+  Mat3 rotation = Mat3::Identity();  // the same rotation for every point
   void node_rotations(std::span<Mat3> out) const override {
-    for (Mat3& m : out) m = Mat3::Identity();
+    for (Mat3& m : out) m = rotation;
   }
   MechanicalState* rotation_state() const override { return mstate.get(); }
   void add_force(const MechParams&) override {}
@@ -146,7 +147,9 @@ TEST_P(PcgPreconditioned, MatchesDenseSolveOnRandomSpdSystems) {
     ASSERT_EQ(pcg->state(), ComponentState::valid);
     const Eigen::VectorXd x = sc.solve(b);
     EXPECT_LT((x - ref).norm(), 1e-9 * ref.norm()) << prec << " n=" << n;
-    if (prec == "Warp") EXPECT_EQ(pcg->last_iterations(), 1) << "an exact preconditioner converges in one step";
+    if (prec == "Warp") {
+      EXPECT_EQ(pcg->last_iterations(), 1) << "an exact preconditioner converges in one step";
+    }
     // Warm start: starting from the solution, no iteration is needed.
     const Eigen::VectorXd x2 = sc.solve(b, &ref);
     EXPECT_LE(pcg->last_iterations(), 1) << prec;
@@ -350,7 +353,7 @@ TEST(PcgPrecomputedWarp, AssembledSystemGivesTheExactInverse) {
   MatrixFreeScene sc(A, "<PCGLinearSolver iterations='100' tolerance='1e-20' preconditioner='@p'/>"
                         "<MatrixLinearSystem name='ms'/>"
                         "<PrecomputedWarpPreconditioner name='p' linearSystem='@ms' use_file='false' "
-                        "use_rotations='false'/>");
+                        "share_matrix='false' use_rotations='false'/>");
   auto* p = test::get<PrecomputedWarpPreconditioner>(*sc.s.root, "p");
   ASSERT_NE(p, nullptr);
   const Eigen::VectorXd b = random_vec(n, 2);
@@ -397,7 +400,8 @@ TEST(PcgWarpCompliance, JMinvJtMatchesDenseProduct) {
   EXPECT_LT((W - 2.0 * ref).norm(), 1e-10 * ref.norm());
 
   MatrixFreeScene pre(A, "<PCGLinearSolver iterations='100' preconditioner='@p'/><MatrixLinearSystem name='ms'/>"
-                         "<PrecomputedWarpPreconditioner name='p' linearSystem='@ms' use_file='false'/>");
+                         "<PrecomputedWarpPreconditioner name='p' linearSystem='@ms' use_file='false' "
+                         "share_matrix='false'/>");  // (shared inverses are keyed by node name, size and dt only)
   pre.solve(random_vec(n, 1));
   auto* pp = test::get<PrecomputedWarpPreconditioner>(*pre.s.root, "p");
   ASSERT_NE(pp, nullptr);
@@ -406,4 +410,44 @@ TEST(PcgWarpCompliance, JMinvJtMatchesDenseProduct) {
   pp->add_jminvjt(W2, J, fact);
   EXPECT_LT((W2 - static_cast<double>(static_cast<float>(fact)) * ref).norm(), 1e-10 * ref.norm());
   EXPECT_GT((W2 - fact * ref).norm(), 0.0);
+}
+
+TEST(PcgWarp, AppliesTheRotatedInverseBetweenAssemblies) {
+  // assemblingRate 2: the second build keeps A₀ and fills R from the rotation finder,
+  // so the preconditioner is z = R·A₀⁻¹·Rᵀ·r.
+  const int n = 12;
+  const Eigen::MatrixXd A = random_spd(n, 51);
+  MatrixFreeScene sc(A, "<PCGLinearSolver iterations='100' preconditioner='@p'/>"
+                        "<RotationMatrixSystem name='R' assemblingRate='2'/><WarpPreconditioner name='p' "
+                        "linearSystem='@R' linearSolver='@ldl'/><MatrixLinearSystem name='sys'/>"
+                        "<SparseLDLSolver name='ldl' linearSystem='@sys'/>");
+  auto* wp = test::get<WarpPreconditioner>(*sc.s.root, "p");
+  auto* R = test::get<RotationMatrixSystem>(*sc.s.root, "R");
+  ASSERT_NE(wp, nullptr);
+  ASSERT_NE(R, nullptr);
+  sc.solve(random_vec(n, 1));  // assembles A₀, R = I
+  const Mat3 Q = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  sc.ff->rotation = Q;
+  sc.solver().build_system(*sc.ops, 0.0, 0.0, 1.0);  // R from the finder
+  ASSERT_FALSE(R->main_assembled_last());
+  Eigen::MatrixXd Rd = Eigen::MatrixXd::Zero(n, n);
+  for (int k = 0; k < n / 3; ++k) Rd.block<3, 3>(3 * k, 3 * k) = Q;
+  const Eigen::VectorXd r = random_vec(n, 2);
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
+  wp->solve_global(z, r);
+  const Eigen::VectorXd ref = Rd * A.inverse() * Rd.transpose() * r;
+  EXPECT_LT((z - ref).norm(), 1e-10 * ref.norm());
+}
+
+TEST(PcgPrecomputedWarp, InversesAreSharedByFileName) {
+  const Eigen::MatrixXd A = random_spd(9, 3), B = random_spd(9, 4);
+  const std::string xml = "<PCGLinearSolver iterations='100' preconditioner='@p'/><MatrixLinearSystem name='ms'/>"
+                          "<PrecomputedWarpPreconditioner name='p' linearSystem='@ms' use_file='false'/>";
+  MatrixFreeScene a(A, xml), b(B, xml);
+  a.solve(random_vec(9, 1));
+  b.solve(random_vec(9, 1));
+  auto* pa = test::get<PrecomputedWarpPreconditioner>(*a.s.root, "p");
+  auto* pb = test::get<PrecomputedWarpPreconditioner>(*b.s.root, "p");
+  ASSERT_NE(pa->inverse(), nullptr);
+  EXPECT_EQ(pa->inverse(), pb->inverse());  // same "<node>-<n>-<dt>" key: B's scene reuses A's inverse
 }

@@ -116,4 +116,98 @@ TEST(TetraSimd, DForceBitIdenticalToScalarReference) {
       }
 }
 
+// add_stiffness_blocks keeps JKJt between calls and reuses add_force's SR with
+// computeGlobalMatrix: the blocks must equal the ones computed from scratch.
+void check_blocks(const Mesh& m, M method, bool assembling, bool update_stiffness) {
+  TetraFEM fem;
+  std::vector<double> E(m.tetra.size(), 2500.0), nu(m.tetra.size(), 0.32);
+  fem.init(m.x0, m.tetra, E, nu, method);
+  fem.assembling = assembling;
+  fem.update_stiffness_matrix = update_stiffness;
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-0.05, 0.05);
+  std::vector<Vec3> f(m.x0.size(), Vec3::Zero());
+  for (int round = 0; round < 4; ++round) {
+    if (round > 0 && round != 2) {  // round 2: two calls without add_force in between
+      std::vector<Vec3> x = m.x0;
+      for (auto& p : x) p += Vec3(u(rng), u(rng), u(rng)) * round;
+      fem.add_force(x, f);
+    }
+    std::vector<Mat3> got, want;
+    fem.add_stiffness_blocks([&](int, int, const Mat3& b) { got.push_back(b); });
+    sinew::fem::Mat12 jkjt, S, SR;
+    for (std::size_t e = 0; e < fem.size(); ++e) {
+      sinew::fem::tetra_jkjt(fem.J[e], fem.K[e], jkjt);
+      sinew::fem::tetra_rotated_stiffness(jkjt, method == M::small ? Mat3::Identity() : fem.rot[e], S, SR);
+      for (int n1 = 0; n1 < 4; ++n1)
+        for (int n2 = 0; n2 < 4; ++n2) {
+          Mat3 b;
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) b(i, j) = -SR(3 * n1 + i, 3 * n2 + j);
+          want.push_back(b);
+        }
+    }
+    ASSERT_EQ(got.size(), want.size());
+    for (std::size_t k = 0; k < got.size(); ++k)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          ASSERT_EQ(got[k](i, j), want[k](i, j)) << "block " << k << " method " << int(method) << " round " << round;
+  }
+}
+
+TEST(TetraSimd, StiffnessBlocksBitIdenticalToScratch) {
+  const Mesh mesh = make_mesh(5, 4, 4, 3);
+  for (M method : {M::large, M::small, M::polar})
+    for (bool assembling : {false, true})
+      for (bool upd : {false, true}) check_blocks(mesh, method, assembling, upd);
+}
+
+// Packed force of the large method against SOFA's scalar sequence (frame,
+// rotated Δ, J·K·Jᵀ·Δ, rotation back), element after element.
+TEST(TetraSimd, LargeForceBitIdenticalToScalarReference) {
+  for (const Mesh& m : {make_mesh(5, 4, 4, 3), make_mesh(14, 10, 10, 1)})
+    for (int threads : {1, 2}) {
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+      TetraFEM fem, ref;
+      std::vector<double> E(m.tetra.size()), nu(m.tetra.size());
+      for (std::size_t e = 0; e < E.size(); ++e) E[e] = 3000.0 + 7.0 * (e % 13), nu[e] = 0.3 + 0.01 * (e % 5);
+      fem.init(m.x0, m.tetra, E, nu, M::large);
+      ref.init(m.x0, m.tetra, E, nu, M::large);
+      std::mt19937 rng(13);
+      std::uniform_real_distribution<double> u(-0.05, 0.05);
+      for (int round = 1; round < 4; ++round) {
+        std::vector<Vec3> x = m.x0;
+        for (auto& p : x) p += Vec3(u(rng), u(rng), u(rng)) * round;
+        if (round == 3) x[m.tetra[0][1]] = x[m.tetra[0][0]];  // degenerate edge: no normalisation
+        std::vector<Vec3> got(x.size(), Vec3(1, 2, 3)), want = got;
+        fem.add_force(x, got);
+        for (std::size_t e = 0; e < ref.size(); ++e) {
+          const auto& t = ref.tetra[e];
+          const Mat3 R = sinew::fem::tetra_frame_large(x[t[0]], x[t[1]], x[t[2]]);
+          Vec3 p[4];
+          for (int k = 0; k < 4; ++k)
+            for (int i = 0; i < 3; ++i) p[k][i] = R(i, 0) * x[t[k]][0] + R(i, 1) * x[t[k]][1] + R(i, 2) * x[t[k]][2];
+          p[1][0] -= p[0][0];
+          p[2][0] -= p[0][0];
+          p[2][1] -= p[0][1];
+          for (int i = 0; i < 3; ++i) p[3][i] -= p[0][i];
+          const auto& q = ref.rest[e];
+          double D[12] = {0, 0, 0, q[1][0] - p[1][0], 0, 0, q[2][0] - p[2][0], q[2][1] - p[2][1], 0,
+                          q[3][0] - p[3][0], q[3][1] - p[3][1], q[3][2] - p[3][2]};
+          double F[12];
+          sinew::fem::tetra_force(ref.J[e], ref.K[e], D, F);
+          for (int k = 0; k < 4; ++k)
+            for (int i = 0; i < 3; ++i)
+              want[t[k]][i] += R(0, i) * F[3 * k] + R(1, i) * F[3 * k + 1] + R(2, i) * F[3 * k + 2];
+          const Mat3 rt = R.transpose();
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) ASSERT_EQ(fem.rot[e](i, j), rt(i, j)) << "rot, element " << e;
+        }
+        for (std::size_t i = 0; i < got.size(); ++i)
+          for (int c = 0; c < 3; ++c)
+            ASSERT_EQ(got[i][c], want[i][c]) << "point " << i << " threads " << threads << " round " << round;
+      }
+    }
+}
+
 }  // namespace
