@@ -125,6 +125,49 @@ __attribute__((target_clones("avx2", "default"))) void mul24_clones(const double
   *reinterpret_cast<v4u*>(F + 20) = a5;
 }
 
+// element_dforce with a row-reordered stiffness kp (rows: x of nodes 0..7,
+// y, z) and node-major inputs v[i][k]: X = R·dx per node, F = K·X (each row
+// k·X0 then += col·X_c for c = 3k + i in column order, as mul24), t = Rᵀ·F per
+// node, times kfactor. Every value gets the scalar sequence of operations of
+// element_dforce; only independent nodes/rows share the vector instructions.
+__attribute__((target_clones("avx2", "default"))) void hexa_dforce_soa(const double* kp, const Mat3& R, bool rotate,
+                                                                      const double (*v)[8], double kfactor,
+                                                                      double (*o)[8]) {
+#define L(p) (*reinterpret_cast<const v4u*>(p))
+#define S(x) (v4u{(x), (x), (x), (x)})
+  alignas(32) double X[3][8];
+  for (int h = 0; h < 8; h += 4) {
+    const v4u v0 = L(v[0] + h), v1 = L(v[1] + h), v2 = L(v[2] + h);
+    for (int i = 0; i < 3; ++i) {
+      const v4u x = rotate ? S(R(i, 0)) * v0 + S(R(i, 1)) * v1 + S(R(i, 2)) * v2 : (i == 0 ? v0 : i == 1 ? v1 : v2);
+      *reinterpret_cast<v4u*>(X[i] + h) = x;
+    }
+  }
+  const v4u d0 = S(X[0][0]);
+  v4u a0 = L(kp + 0) * d0, a1 = L(kp + 4) * d0, a2 = L(kp + 8) * d0;
+  v4u a3 = L(kp + 12) * d0, a4 = L(kp + 16) * d0, a5 = L(kp + 20) * d0;
+  for (int c = 1; c < 24; ++c) {
+    const double* col = kp + 24 * c;
+    const v4u d = S(X[c % 3][c / 3]);
+    a0 += L(col + 0) * d;
+    a1 += L(col + 4) * d;
+    a2 += L(col + 8) * d;
+    a3 += L(col + 12) * d;
+    a4 += L(col + 16) * d;
+    a5 += L(col + 20) * d;
+  }
+  const v4u fx[2] = {a0, a1}, fy[2] = {a2, a3}, fz[2] = {a4, a5};
+  const v4u kf = S(kfactor);
+  for (int q = 0; q < 2; ++q)
+    for (int i = 0; i < 3; ++i) {
+      const v4u t = rotate ? S(R(0, i)) * fx[q] + S(R(1, i)) * fy[q] + S(R(2, i)) * fz[q]
+                           : (i == 0 ? fx[q] : i == 1 ? fy[q] : fz[q]);
+      *reinterpret_cast<v4u*>(o[i] + 4 * q) = t * kf;
+    }
+#undef L
+#undef S
+}
+
 bool all_finite(const Mat24& K) {
   for (int i = 0; i < 24 * 24; ++i)
     if (!std::isfinite(K.data()[i])) return false;
@@ -385,6 +428,17 @@ void HexaFEM::element_force(std::size_t e, std::span<const Vec3> x, Vec3* out, d
 }
 
 void HexaFEM::element_dforce(std::size_t e, std::span<const Vec3> dx, double kfactor, Vec3* out) const {
+  if (!k_index.empty()) {
+    alignas(32) double v[3][8], o[3][8];
+    const auto& h = hexa[e];
+    for (int k = 0; k < 8; ++k) {
+      const Vec3& d = dx[h[k]];
+      v[0][k] = d[0], v[1][k] = d[1], v[2][k] = d[2];
+    }
+    hexa_dforce_soa(k_shared[k_index[e]].data(), R[e], method != HexaMethod::small, v, kfactor, o);
+    for (int k = 0; k < 8; ++k) out[k] = Vec3(o[0][k], o[1][k], o[2][k]);
+    return;
+  }
   double X[24], F[24];
   const bool rotate = method != HexaMethod::small;  // small: R = I, product skipped (exact)
   const auto& h = hexa[e];
@@ -395,7 +449,7 @@ void HexaFEM::element_dforce(std::size_t e, std::span<const Vec3> dx, double kfa
     X[3 * k + 1] = v[1];
     X[3 * k + 2] = v[2];
   }
-  mul24_clones(dforce_stiffness(e).data(), X, F);
+  mul24_clones(K[e].data(), X, F);
   for (int k = 0; k < 8; ++k) {
     const Vec3 t = rotate ? mul_t(Re, F[3 * k], F[3 * k + 1], F[3 * k + 2]) : Vec3(F[3 * k], F[3 * k + 1], F[3 * k + 2]);
     out[k] = Vec3(t[0] * kfactor, t[1] * kfactor, t[2] * kfactor);
@@ -461,6 +515,7 @@ void HexaFEM::refresh_shared_stiffness() const {
   shared_gen = k_gen;
   k_index.clear();
   k_shared.clear();
+  k_rep.clear();
   if (update_stiffness || K.empty()) return;
   // Group bitwise-equal matrices (hash of the bytes, then memcmp).
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> groups;
@@ -472,17 +527,22 @@ void HexaFEM::refresh_shared_stiffness() const {
     auto& g = groups[h];
     std::uint32_t found = UINT32_MAX;
     for (std::uint32_t u : g)
-      if (std::memcmp(k_shared[u].data(), K[e].data(), sizeof(double) * 24 * 24) == 0) {
+      if (std::memcmp(K[k_rep[u]].data(), K[e].data(), sizeof(double) * 24 * 24) == 0) {
         found = u;
         break;
       }
     if (found == UINT32_MAX) {
       if (k_shared.size() * 4 >= K.size() + 64) {  // hardly shared: keep K
         k_shared.clear();
+        k_rep.clear();
         return;
       }
       found = static_cast<std::uint32_t>(k_shared.size());
-      k_shared.push_back(K[e]);
+      auto& kp = k_shared.emplace_back();
+      const double* k = K[e].data();
+      for (int c = 0; c < 24; ++c)
+        for (int rp = 0; rp < 24; ++rp) kp[24 * c + rp] = k[24 * c + 3 * (rp % 8) + rp / 8];
+      k_rep.push_back(static_cast<std::uint32_t>(e));
       g.push_back(found);
     }
     index[e] = found;

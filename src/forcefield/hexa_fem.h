@@ -99,13 +99,17 @@ struct HexaFEM {
   // results bit for bit. Rebuilt when k_gen changed (init, add_force with
   // update_stiffness); call touch_stiffness() after writing K directly.
   void touch_stiffness() { ++k_gen; }
+  // True when the last add_dforce used the shared stiffnesses (tests).
+  bool shares_stiffness() const { return !k_index.empty(); }
  private:
   std::uint64_t k_gen = 1;
   mutable std::uint64_t shared_gen = 0;
   mutable std::vector<std::uint32_t> k_index;  // element → k_shared (empty: use K)
-  mutable std::vector<Mat24> k_shared;
+  // Distinct stiffnesses with rows reordered x of the 8 nodes, then y, then z
+  // (rows are independent sums: the order of each row's terms is unchanged).
+  mutable std::vector<std::array<double, 24 * 24>> k_shared;
+  mutable std::vector<std::uint32_t> k_rep;   // an element having k_shared[u]
   void refresh_shared_stiffness() const;
-  const Mat24& dforce_stiffness(std::size_t e) const { return k_index.empty() ? K[e] : k_shared[k_index[e]]; }
  public:
 
   // Precompute frames, rotated rest nodes and stiffnesses from rest positions
