@@ -89,7 +89,7 @@ struct MechParams {
 class ForceField : public Component {
  public:
   Field<double> rayleigh_stiffness{this, "rayleighStiffness", 0.0,
-                                   "Rayleigh damping coefficient related to stiffness (> 0)", "Rayleigh"};
+                                   "stiffness-proportional Rayleigh damping coefficient (>= 0)", "Rayleigh"};
   Link<MechanicalState> mstate{this, "mstate", "state this force field acts on (default: the node's)"};
 
   // f += f(x, v) on the acted state(s).
@@ -112,7 +112,7 @@ class ForceField : public Component {
 
 class Mass : public ForceField {
  public:
-  Field<double> rayleigh_mass{this, "rayleighMass", 0.0, "Rayleigh damping coefficient related to mass (> 0)",
+  Field<double> rayleigh_mass{this, "rayleighMass", 0.0, "mass-proportional Rayleigh damping coefficient (>= 0)",
                               "Rayleigh"};
   Field<bool> separate_gravity{this, "separateGravity", false, "add gravity to velocity instead of forces",
                                "Physics"};
@@ -159,12 +159,11 @@ class VisualState : public Component {
 
 class Mapping : public Component {
  public:
-  Field<bool> map_forces{this, "mapForces", true, "Are forces mapped ?", "Mapping"};
-  Field<bool> map_constraints{this, "mapConstraints", true, "Are constraints mapped ?", "Mapping"};
-  Field<bool> map_masses{this, "mapMasses", true, "Are masses mapped ?", "Mapping"};
-  Field<bool> map_matrices{this, "mapMatrices", false, "Are matrix explicit mapped?", "Mapping"};
-  Field<bool> apply_rest_position{this, "applyRestPosition", false,
-                                  "set to true to apply this mapping to restPosition at init", "Mapping"};
+  Field<bool> map_forces{this, "mapForces", true, "propagate forces through this mapping", "Mapping"};
+  Field<bool> map_constraints{this, "mapConstraints", true, "propagate constraints through this mapping", "Mapping"};
+  Field<bool> map_masses{this, "mapMasses", true, "propagate masses through this mapping", "Mapping"};
+  Field<bool> map_matrices{this, "mapMatrices", false, "propagate assembled matrices through this mapping", "Mapping"};
+  Field<bool> apply_rest_position{this, "applyRestPosition", false, "also map the rest positions at init", "Mapping"};
 
   // Input states (several for multi-mappings) and the output; the output is
   // null when it is not a mechanical state (a visual model, see visual_output()).

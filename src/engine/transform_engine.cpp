@@ -18,8 +18,8 @@ FlatVec empty_flat(StateType t) {
 }  // namespace
 
 TransformEngine::TransformEngine(StateType type)
-    : input_position(this, "input_position", empty_flat(type), "input array of points", "Inputs"),
-      output_position(this, "output_position", empty_flat(type), "output array of points", "Outputs"),
+    : input_position(this, "input_position", empty_flat(type), "points to transform", "Inputs"),
+      output_position(this, "output_position", empty_flat(type), "transformed points", "Outputs"),
       type_(type) {
   for (BaseField* f :
        std::initializer_list<BaseField*>{&input_position, &translation, &rotation, &quaternion, &scale, &inverse})

@@ -6,13 +6,13 @@ namespace sinew {
 
 CorotationalFEMForceField::CorotationalFEMForceField(FemElementKind kind)
     : ElementFEMForceFieldBase(kind),
-      rotation_method_f(this, "rotationMethod", kind == FemElementKind::hexahedron ? "hexahedron" : "triangle",
-                        kind == FemElementKind::hexahedron
-                            ? "The method used to compute the element rotations: stable_polar, polar, identity, "
-                              "hexahedron (two average edges)"
-                            : "The method used to compute the element rotations: stable_polar, polar, identity, "
-                              "triangle (Gram-Schmidt frame of nodes 0, 1, 2)",
-                        "Material") {}
+      rotation_method_f(
+          this, "rotationMethod", kind == FemElementKind::hexahedron ? "hexahedron" : "triangle",
+          kind == FemElementKind::hexahedron
+              ? "element rotation extraction: stable_polar, polar, identity or hexahedron (two averaged edges)"
+              : "element rotation extraction: stable_polar, polar, identity or triangle (Gram-Schmidt frame of nodes "
+                "0, 1, 2)",
+          "Material") {}
 
 bool CorotationalFEMForceField::rotation_method(fem::RotationMethod& out) {
   const std::string& m = rotation_method_f.get();

@@ -13,18 +13,17 @@ namespace sinew {
 
 class EdgePressureForceField final : public ForceField {
  public:
-  Field<Vec3> pressure{this, "pressure", Vec3::Zero(), "Pressure force per unit area", "Load"};
-  Field<std::vector<unsigned>> edge_indices{this, "edgeIndices", {},
-                                            "Indices of edges separated with commas where a pressure is applied",
-                                            "Load"};
-  Field<std::vector<Edge>> edges{this, "edges", {}, "List of edges where a pressure is applied", "Load"};
-  Field<Vec3> normal{this, "normal", Vec3::Zero(), "Normal direction for the plane selection of edges", "Load"};
-  Field<double> dmin{this, "dmin", 0.0, "Minimum distance from the origin along the normal direction", "Load"};
-  Field<double> dmax{this, "dmax", 0.0, "Maximum distance from the origin along the normal direction", "Load"};
-  Field<double> arrow_size_coef{this, "arrowSizeCoef", 0.0, "Size of the drawn arrows (viewer)", "Visualization"};
-  Field<std::vector<double>> p_intensity{this, "p_intensity", {}, "pressure intensity on edge normal", "Load"};
-  Field<Vec3> binormal{this, "binormal", Vec3::Zero(), "Binormal of the 2D plane", "Load"};
-  Field<bool> show_forces{this, "showForces", false, "draw arrows of edge pressures", "Visualization"};
+  Field<Vec3> pressure{this, "pressure", Vec3::Zero(), "pressure vector (force per unit area)", "Load"};
+  Field<std::vector<unsigned>> edge_indices{this, "edgeIndices", {}, "indices of the loaded edges", "Load"};
+  Field<std::vector<Edge>> edges{this, "edges", {}, "loaded edges, as vertex index pairs", "Load"};
+  Field<Vec3> normal{this, "normal", Vec3::Zero(), "normal of the slab selecting the loaded edges", "Load"};
+  Field<double> dmin{this, "dmin", 0.0, "lower bound of the selection slab along 'normal'", "Load"};
+  Field<double> dmax{this, "dmax", 0.0, "upper bound of the selection slab along 'normal'", "Load"};
+  Field<double> arrow_size_coef{this, "arrowSizeCoef", 0.0, "arrow length scale (viewer)", "Visualization"};
+  Field<std::vector<double>> p_intensity{this, "p_intensity", {}, "pressure magnitude along each edge normal", "Load"};
+  Field<Vec3> binormal{this, "binormal", Vec3::Zero(), "binormal of the 2D plane (edge normals are computed from it)",
+                       "Load"};
+  Field<bool> show_forces{this, "showForces", false, "draw the pressure forces (viewer)", "Visualization"};
   Link<MeshTopologyBase> topology{this, "topology", "topology holding the edges (default: the node's)"};
 
   void init() override;

@@ -14,24 +14,20 @@ enum class FemElementKind { tetrahedron, hexahedron };
 
 class ElementFEMForceFieldBase : public ForceField {
  public:
-  Field<std::vector<double>> young_modulus{this, "youngModulus", {5000.0},
-                                           "FEM Young's Modulus in Hooke's law (Pa), one value or one per element",
-                                           "Material"};
-  Field<std::vector<double>> poisson_ratio{this, "poissonRatio", {0.45},
-                                           "FEM Poisson Ratio in Hooke's law [0,0.5[, one value or one per element",
-                                           "Material"};
+  Field<std::vector<double>> young_modulus{
+      this, "youngModulus", {5000.0}, "Young's modulus (Pa): one value, or one per element", "Material"};
+  Field<std::vector<double>> poisson_ratio{
+      this, "poissonRatio", {0.45}, "Poisson's ratio in [0, 0.5): one value, or one per element", "Material"};
   Field<std::string> compute_force_strategy{
       this, "computeForceStrategy", "parallel",
-      "The compute strategy used to compute the forces: \"parallel\" or \"sequenced\" (same results)",
-      "Multithreading"};
+      "execution policy of the force evaluation: \"parallel\" or \"sequenced\" (identical results)", "Multithreading"};
   Field<std::string> compute_force_deriv_strategy{
       this, "computeForceDerivStrategy", "parallel",
-      "The compute strategy used to compute the forces derivatives: \"parallel\" or \"sequenced\" (same results)",
+      "execution policy of the force-derivative evaluation: \"parallel\" or \"sequenced\" (identical results)",
       "Multithreading"};
-  Field<double> element_space{this, "elementSpace", 0.125, "When rendering, the space between elements (viewer)",
-                              "Visualization"};
+  Field<double> element_space{this, "elementSpace", 0.125, "gap between drawn elements (viewer)", "Visualization"};
   Field<std::vector<double>> element_stiffness{
-      this, "elementStiffness", {}, "List of stiffness matrices per element (output, row-major, flattened)"};
+      this, "elementStiffness", {}, "stiffness matrix of each element (output, row-major, flattened)"};
   Link<MeshTopologyBase> topology{this, "topology", "topology holding the elements (default: the node's)"};
 
   explicit ElementFEMForceFieldBase(FemElementKind kind) : kind_(kind) {}

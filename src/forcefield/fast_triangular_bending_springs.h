@@ -15,8 +15,8 @@ namespace sinew {
 
 class FastTriangularBendingSprings final : public ForceField {
  public:
-  Field<double> bending_stiffness{this, "bendingStiffness", 1.0, "Bending stiffness of the material", "Material"};
-  Field<double> min_dist_validity{this, "minDistValidity", 0.000001, "Distance under which a spring is not valid",
+  Field<double> bending_stiffness{this, "bendingStiffness", 1.0, "bending stiffness", "Material"};
+  Field<double> min_dist_validity{this, "minDistValidity", 0.000001, "bending springs shorter than this are ignored",
                                   "Material"};
   Link<MeshTopologyBase> topology{this, "topology", "topology holding the triangles (default: the node's)"};
 

@@ -521,9 +521,12 @@ void HexaFEM::refresh_shared_stiffness() const {
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> groups;
   std::vector<std::uint32_t> index(K.size());
   for (std::size_t e = 0; e < K.size(); ++e) {
-    const auto* b = reinterpret_cast<const unsigned char*>(K[e].data());
     std::uint64_t h = 1469598103934665603ull;
-    for (std::size_t i = 0; i < sizeof(double) * 24 * 24; ++i) h = (h ^ b[i]) * 1099511628211ull;
+    for (int i = 0; i < 24 * 24; ++i) {
+      std::uint64_t w;
+      std::memcpy(&w, K[e].data() + i, sizeof w);
+      h = (h ^ w) * 1099511628211ull;
+    }
     auto& g = groups[h];
     std::uint32_t found = UINT32_MAX;
     for (std::uint32_t u : g)

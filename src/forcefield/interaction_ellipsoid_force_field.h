@@ -18,16 +18,16 @@ class InteractionEllipsoidForceField final : public ForceField {
   Field<std::vector<Vec3>> center{this, "center", {}, "ellipsoid centers (in the frame of object2)", "Ellipsoid"};
   Field<std::vector<Vec3>> vradius{this, "vradius", {}, "ellipsoid radii", "Ellipsoid"};
   Field<double> stiffness{this, "stiffness", 500.0,
-                          "force stiffness (positive to repulse outward, negative inward)", "Ellipsoid"};
-  Field<double> damping{this, "damping", 5.0, "force damping", "Ellipsoid"};
+                          "penalty stiffness; > 0 pushes points out of the ellipsoids, < 0 keeps them inside",
+                          "Ellipsoid"};
+  Field<double> damping{this, "damping", 5.0, "penalty damping", "Ellipsoid"};
   Field<std::vector<double>> color{this, "color", {0.0, 0.5, 1.0, 1.0}, "ellipsoid colour (viewer)",
                                    "Visualization"};
   Field<bool> draw{this, "draw", true, "draw the ellipsoids (viewer)", "Visualization"};
-  Field<int> object2_dof_index{this, "object2_dof_index", 0, "dof index of object 2 where the forcefield is attached",
+  Field<int> object2_dof_index{this, "object2_dof_index", 0, "index of the object2 frame carrying the ellipsoids",
                                "Ellipsoid"};
-  Field<bool> object2_forces{this, "object2_forces", true, "enable/disable propagation of forces to object 2",
-                             "Ellipsoid"};
-  Field<bool> object2_invert{this, "object2_invert", false, "inverse transform from object 2 (unsupported)",
+  Field<bool> object2_forces{this, "object2_forces", true, "apply the reaction forces to object2", "Ellipsoid"};
+  Field<bool> object2_invert{this, "object2_invert", false, "use object2 as the rest configuration (unsupported)",
                              "Ellipsoid"};
 
   struct Contact {

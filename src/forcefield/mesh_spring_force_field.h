@@ -12,24 +12,28 @@ class MeshSpringForceField final : public SpringForceField {
  public:
   MeshSpringForceField();
 
-  Field<double> lines_stiffness{this, "linesStiffness", 0.0, "Stiffness for the Lines", "Spring"};
-  Field<double> lines_damping{this, "linesDamping", 0.0, "Damping for the Lines", "Spring"};
-  Field<double> triangles_stiffness{this, "trianglesStiffness", 0.0, "Stiffness for the Triangles", "Spring"};
-  Field<double> triangles_damping{this, "trianglesDamping", 0.0, "Damping for the Triangles", "Spring"};
-  Field<double> quads_stiffness{this, "quadsStiffness", 0.0, "Stiffness for the Quads", "Spring"};
-  Field<double> quads_damping{this, "quadsDamping", 0.0, "Damping for the Quads", "Spring"};
-  Field<double> tetrahedra_stiffness{this, "tetrahedraStiffness", 0.0, "Stiffness for the Tetrahedra", "Spring"};
-  Field<double> tetrahedra_damping{this, "tetrahedraDamping", 0.0, "Damping for the Tetrahedra", "Spring"};
-  Field<double> cubes_stiffness{this, "cubesStiffness", 0.0, "Stiffness for the Cubes", "Spring"};
-  Field<double> cubes_damping{this, "cubesDamping", 0.0, "Damping for the Cubes", "Spring"};
-  Field<bool> no_compression{this, "noCompression", false, "Only consider elongation", "Spring"};
+  Field<double> lines_stiffness{this, "linesStiffness", 0.0, "stiffness of the edge springs (N/m)", "Spring"};
+  Field<double> lines_damping{this, "linesDamping", 0.0, "damping of the edge springs", "Spring"};
+  Field<double> triangles_stiffness{this, "trianglesStiffness", 0.0, "stiffness of the springs inside triangles (N/m)",
+                                    "Spring"};
+  Field<double> triangles_damping{this, "trianglesDamping", 0.0, "damping of the springs inside triangles", "Spring"};
+  Field<double> quads_stiffness{this, "quadsStiffness", 0.0, "stiffness of the springs inside quads (N/m)", "Spring"};
+  Field<double> quads_damping{this, "quadsDamping", 0.0, "damping of the springs inside quads", "Spring"};
+  Field<double> tetrahedra_stiffness{this, "tetrahedraStiffness", 0.0,
+                                     "stiffness of the springs inside tetrahedra (N/m)", "Spring"};
+  Field<double> tetrahedra_damping{this, "tetrahedraDamping", 0.0, "damping of the springs inside tetrahedra",
+                                   "Spring"};
+  Field<double> cubes_stiffness{this, "cubesStiffness", 0.0, "stiffness of the springs inside hexahedra (N/m)",
+                                "Spring"};
+  Field<double> cubes_damping{this, "cubesDamping", 0.0, "damping of the springs inside hexahedra", "Spring"};
+  Field<bool> no_compression{this, "noCompression", false, "springs resist stretching only", "Spring"};
   Field<double> draw_min_elongation_range{this, "drawMinElongationRange", 8.0, "min elongation range (viewer)",
                                           "Visualization"};
   Field<double> draw_max_elongation_range{this, "drawMaxElongationRange", 15.0, "max elongation range (viewer)",
                                           "Visualization"};
   Field<double> draw_spring_size{this, "drawSpringSize", 8.0, "size of drawn lines (viewer)", "Visualization"};
   Field<VecNi<2>> local_range{this, "localRange", VecNi<2>(-1, -1),
-                              "optional range of local DOF indices (springs outside are discarded)", "Spring"};
+                              "[first, last] DoF range; springs outside it are ignored (-1: open end)", "Spring"};
   Link<MeshTopologyBase> topology{this, "topology", "topology the springs are built from (default: the node's)"};
 
   void parse(AttributeMap& attrs, Diagnostics& diag) override;

@@ -12,13 +12,14 @@ namespace sinew {
 
 class PlaneForceField final : public ForceField {
  public:
-  Field<Vec3> normal{this, "normal", Vec3(0, 1, 0), "plane normal. (default=[0,1,0])", "Plane"};
-  Field<double> d{this, "d", 0.0, "plane d coef. (default=0)", "Plane"};
-  Field<double> stiffness{this, "stiffness", 500.0, "force stiffness. (default=500)", "Plane"};
-  Field<double> damping{this, "damping", 5.0, "force damping. (default=5)", "Plane"};
-  Field<double> max_force{this, "maxForce", 0.0, "if non-null, the max force that can be applied (default=0)", "Plane"};
-  Field<bool> bilateral{this, "bilateral", false, "apply the force on both sides (default=false)", "Plane"};
-  Field<VecNi<2>> local_range{this, "localRange", VecNi<2>(-1, -1), "optional range of local DOF indices", "Plane"};
+  Field<Vec3> normal{this, "normal", Vec3(0, 1, 0), "normal of the plane", "Plane"};
+  Field<double> d{this, "d", 0.0, "plane offset d (plane: normal·x = d)", "Plane"};
+  Field<double> stiffness{this, "stiffness", 500.0, "penalty stiffness (N/m)", "Plane"};
+  Field<double> damping{this, "damping", 5.0, "penalty damping", "Plane"};
+  Field<double> max_force{this, "maxForce", 0.0, "force magnitude cap per point (0: no cap)", "Plane"};
+  Field<bool> bilateral{this, "bilateral", false, "push points toward the plane from both sides", "Plane"};
+  Field<VecNi<2>> local_range{this, "localRange", VecNi<2>(-1, -1),
+                              "[first, last] DoF range the plane acts on (-1: open end)", "Plane"};
   Field<bool> show_plane{this, "showPlane", false, "draw the plane (viewer)", "Visualization"};
   Field<std::vector<double>> plane_color{this, "planeColor", {0.0, 0.5, 0.2, 1.0}, "plane colour (viewer)",
                                          "Visualization"};

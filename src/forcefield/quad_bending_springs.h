@@ -11,7 +11,7 @@ namespace sinew {
 class QuadBendingSprings final : public SpringForceField {
  public:
   Field<VecNi<2>> local_range{this, "localRange", VecNi<2>(-1, -1),
-                              "optional range of local DOF indices (springs outside are discarded)", "Spring"};
+                              "[first, last] DoF range; springs outside it are ignored (-1: open end)", "Spring"};
   Link<MeshTopologyBase> topology{this, "topology", "topology holding the quads (default: the node's)"};
 
   void init() override;

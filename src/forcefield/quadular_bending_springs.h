@@ -14,8 +14,8 @@ namespace sinew {
 
 class QuadularBendingSprings final : public ForceField {
  public:
-  Field<double> stiffness{this, "stiffness", 100000.0, "uniform stiffness for the all springs", "Spring"};
-  Field<double> damping{this, "damping", 1.0, "uniform damping for the all springs", "Spring"};
+  Field<double> stiffness{this, "stiffness", 100000.0, "stiffness shared by all springs (N/m)", "Spring"};
+  Field<double> damping{this, "damping", 1.0, "damping shared by all springs", "Spring"};
   Link<MeshTopologyBase> topology{this, "topology", "topology holding the quads (default: the node's)"};
 
   struct Spring {

@@ -12,23 +12,22 @@ namespace sinew {
 
 class RestShapeSpringsForceField final : public ForceField {
  public:
-  Field<std::vector<unsigned>> points{this, "points", {}, "points controlled by the rest shape springs (default: all)",
-                                      "Spring"};
+  Field<std::vector<unsigned>> points{this, "points", {}, "indices of the sprung points (default: all)", "Spring"};
   Field<std::vector<double>> stiffness{this, "stiffness", {},
                                        "stiffness per point (or one for all; default 100)", "Spring"};
   Field<std::vector<double>> angular_stiffness{this, "angularStiffness", {},
                                                "angular stiffness (rigid states only)", "Spring"};
   Field<std::vector<Vec3>> pivot_points{this, "pivot_points", {}, "global pivot points (rigid states only)",
                                         "Spring"};
-  Field<std::vector<unsigned>> external_points{this, "external_points", {},
-                                               "points of the external state defining the rest shape", "Spring"};
-  Field<bool> recompute_indices{this, "recompute_indices", true, "recompute indices (should be false for BBOX)",
-                                "Spring"};
+  Field<std::vector<unsigned>> external_points{
+      this, "external_points", {}, "matching point indices in the external rest-shape state", "Spring"};
+  Field<bool> recompute_indices{this, "recompute_indices", true,
+                                "recompute the point indices when the state is resized", "Spring"};
   Field<bool> draw_spring{this, "drawSpring", false, "draw the springs (viewer)", "Visualization"};
   Field<std::vector<double>> spring_color{this, "springColor", {0.0, 1.0, 0.0, 1.0}, "spring colour (viewer)",
                                           "Visualization"};
-  Field<std::vector<int>> active_directions{this, "activeDirections", {1, 1, 1, 1, 1, 1},
-                                            "directions in which the springs act (1 active, 0 not)", "Spring"};
+  Field<std::vector<int>> active_directions{
+      this, "activeDirections", {1, 1, 1, 1, 1, 1}, "per-component mask: 1 sprung, 0 free", "Spring"};
   Link<MechanicalState> external_rest_shape{this, "external_rest_shape",
                                             "state whose positions define the rest shape"};
   Link<MeshTopologyBase> topology{this, "topology", "topology container (topological changes)"};

@@ -21,9 +21,8 @@ class SpringForceField : public ForceField {
 
   Link<MechanicalState> object1{this, "object1", "first state (default: the node's)"};
   Link<MechanicalState> object2{this, "object2", "second state (default: the node's)"};
-  Field<std::vector<double>> stiffness{this, "stiffness", {100.0}, "uniform stiffness for the all springs",
-                                       "Spring"};
-  Field<std::vector<double>> damping{this, "damping", {5.0}, "uniform damping for the all springs", "Spring"};
+  Field<std::vector<double>> stiffness{this, "stiffness", {100.0}, "stiffness shared by all springs (N/m)", "Spring"};
+  Field<std::vector<double>> damping{this, "damping", {5.0}, "damping shared by all springs", "Spring"};
   Field<std::vector<double>> spring{this, "spring", {},
                                     "springs, 5 numbers each: index1 index2 stiffness damping restLength", "Spring"};
   Field<std::vector<unsigned>> springs_indices1{this, "springsIndices1", {}, "first extremity of each spring",
@@ -36,7 +35,7 @@ class SpringForceField : public ForceField {
                                           "per spring: only resist elongation (one for all allowed)", "Spring"};
   Field<std::vector<int>> enabled{this, "enabled", {1}, "per spring: enabled (one for all allowed)", "Spring"};
   Field<std::string> file_springs{this, "filename", "", "file (.xs3) with the springs", "Spring"};
-  Field<float> show_arrow_size{this, "showArrowSize", 0.01f, "size of the axis", "Visualization"};
+  Field<float> show_arrow_size{this, "showArrowSize", 0.01f, "arrow or cylinder size (viewer)", "Visualization"};
   Field<int> draw_mode{this, "drawMode", 0, "how springs are drawn: 0 line, 1 cylinder, 2 arrow", "Visualization"};
 
   void init() override;

@@ -10,12 +10,10 @@ namespace sinew {
 
 class TetrahedralCorotationalFEMForceField final : public ForceField {
  public:
-  Field<std::vector<double>> young_modulus{this, "youngModulus", {5000.0},
-                                           "FEM Young's Modulus in Hooke's law (Pa), one value or one per element",
-                                           "Material"};
-  Field<std::vector<double>> poisson_ratio{this, "poissonRatio", {0.45},
-                                           "FEM Poisson Ratio in Hooke's law [0,0.5[, one value or one per element",
-                                           "Material"};
+  Field<std::vector<double>> young_modulus{
+      this, "youngModulus", {5000.0}, "Young's modulus (Pa): one value, or one per element", "Material"};
+  Field<std::vector<double>> poisson_ratio{
+      this, "poissonRatio", {0.45}, "Poisson's ratio in [0, 0.5): one value, or one per element", "Material"};
   Field<std::string> method{this, "method", "large", "\"small\", \"large\" (by QR) or \"polar\" displacements",
                             "Material"};
   Field<std::vector<double>> local_stiffness_factor{

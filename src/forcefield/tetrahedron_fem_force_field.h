@@ -12,12 +12,10 @@ namespace sinew {
 
 class TetrahedronFEMForceField final : public ForceField, public RotationFinder {
  public:
-  Field<std::vector<double>> young_modulus{this, "youngModulus", {5000.0},
-                                           "FEM Young's Modulus in Hooke's law (Pa), one value or one per element",
-                                           "Material"};
-  Field<std::vector<double>> poisson_ratio{this, "poissonRatio", {0.45},
-                                           "FEM Poisson Ratio in Hooke's law [0,0.5[, one value or one per element",
-                                           "Material"};
+  Field<std::vector<double>> young_modulus{
+      this, "youngModulus", {5000.0}, "Young's modulus (Pa): one value, or one per element", "Material"};
+  Field<std::vector<double>> poisson_ratio{
+      this, "poissonRatio", {0.45}, "Poisson's ratio in [0, 0.5): one value, or one per element", "Material"};
   Field<std::string> method{this, "method", "large",
                             "\"small\", \"large\" (by QR), \"polar\" or \"svd\" displacements", "Material"};
   Field<std::vector<double>> local_stiffness_factor{
@@ -29,12 +27,12 @@ class TetrahedronFEMForceField final : public ForceField, public RotationFinder 
   Field<bool> assembling{this, "computeGlobalMatrix", false,
                          "compute the force through the assembled element matrix (alias: assembling)", "Material"};
   Field<double> plastic_max_threshold{this, "plasticMaxThreshold", 0.0,
-                                      "Plastic Max Threshold (2-norm of the strain); 0 disables plasticity",
-                                      "Plasticity"};
+                                      "upper bound on the plastic strain norm; 0 disables plasticity", "Plasticity"};
   Field<double> plastic_yield_threshold{this, "plasticYieldThreshold", static_cast<double>(0.0001f),
-                                        "Plastic Yield Threshold (2-norm of the strain)", "Plasticity"};
+                                        "strain norm above which plastic flow starts", "Plasticity"};
   Field<double> plastic_creep{this, "plasticCreep", static_cast<double>(0.9f),
-                              "Plastic Creep Factor * dt [0,1]. Warning this factor depends on dt.", "Plasticity"};
+                              "share of the excess strain made plastic per step, in [0, 1] (depends on dt)",
+                              "Plasticity"};
   Field<std::string> gather_pt{this, "gatherPt", "", "unused (GPU version only)", "Material"};
   Field<std::string> gather_bsize{this, "gatherBsize", "", "unused (GPU version only)", "Material"};
   Field<bool> update_stiffness{this, "updateStiffness", false,

@@ -12,16 +12,17 @@ namespace sinew {
 
 class TrianglePressureForceField final : public ForceField {
  public:
-  Field<Vec3> pressure{this, "pressure", Vec3::Zero(), "Pressure force per unit area", "Load"};
-  Field<std::vector<double>> cauchy_stress{this, "cauchyStress", {0, 0, 0, 0, 0, 0},
-                                           "Cauchy stress (symmetric: xx xy yy xz yz zz) applied on the normal of "
-                                           "each triangle",
-                                           "Load"};
-  Field<std::vector<unsigned>> triangle_list{this, "triangleList", {},
-                                             "Indices of triangles where a pressure is applied", "Load"};
-  Field<bool> show_forces{this, "showForces", false, "draw triangles which have a given pressure", "Visualization"};
-  Field<bool> use_constant_force{this, "useConstantForce", true,
-                                 "applied force is computed as the pressure vector times the area at rest", "Load"};
+  Field<Vec3> pressure{this, "pressure", Vec3::Zero(), "pressure vector (force per unit area)", "Load"};
+  Field<std::vector<double>> cauchy_stress{
+      this,
+      "cauchyStress",
+      {0, 0, 0, 0, 0, 0},
+      "Cauchy stress (xx xy yy xz yz zz) whose traction on each triangle normal is applied",
+      "Load"};
+  Field<std::vector<unsigned>> triangle_list{this, "triangleList", {}, "indices of the loaded triangles", "Load"};
+  Field<bool> show_forces{this, "showForces", false, "draw the loaded triangles (viewer)", "Visualization"};
+  Field<bool> use_constant_force{this, "useConstantForce", true, "apply constant forces computed on the rest shape",
+                                 "Load"};
   Link<MeshTopologyBase> topology{this, "topology", "topology holding the triangles (default: the node's)"};
 
   void init() override;

@@ -13,9 +13,9 @@ namespace sinew {
 
 class TriangularBendingSprings final : public ForceField {
  public:
-  Field<double> stiffness{this, "stiffness", 100000.0, "uniform stiffness for the all springs", "Spring"};
-  Field<double> damping{this, "damping", 1.0, "uniform damping for the all springs", "Spring"};
-  Field<bool> show_springs{this, "showSprings", true, "option to draw springs", "Visualization"};
+  Field<double> stiffness{this, "stiffness", 100000.0, "stiffness shared by all springs (N/m)", "Spring"};
+  Field<double> damping{this, "damping", 1.0, "damping shared by all springs", "Spring"};
+  Field<bool> show_springs{this, "showSprings", true, "draw the springs (viewer)", "Visualization"};
   Link<MeshTopologyBase> topology{this, "topology", "topology holding the triangles (default: the node's)"};
 
   void init() override;

@@ -14,27 +14,27 @@ namespace sinew {
 
 class TriangularFEMForceField final : public ForceField {
  public:
-  Field<std::string> method{this, "method", "large", "large: large displacements, small: small displacements",
+  Field<std::string> method{this, "method", "large", "\"large\" (corotational) or \"small\" (linear) displacements",
                             "Material"};
-  Field<std::vector<double>> poisson_ratio{this, "poissonRatio", {0.3}, "Poisson ratio in Hooke's law (vector)",
-                                           "Material"};
-  Field<std::vector<double>> young_modulus{this, "youngModulus", {1000.0}, "Young modulus in Hooke's law (vector)",
-                                           "Material"};
+  Field<std::vector<double>> poisson_ratio{
+      this, "poissonRatio", {0.3}, "Poisson's ratio: one value, or one per element", "Material"};
+  Field<std::vector<double>> young_modulus{
+      this, "youngModulus", {1000.0}, "Young's modulus (Pa): one value, or one per element", "Material"};
   Field<std::vector<double>> rotated_initial_elements{this, "rotatedInitialElements", {},
                                                       "rest shape of each element in its frame (unsupported)",
                                                       "Material"};
   Field<std::vector<double>> initial_transformation{this, "initialTransformation", {},
                                                     "rest frame of each element (unsupported)", "Material"};
-  Field<double> hosford_exponant{this, "hosfordExponant", 1.0, "Exponant in the Hosford yield criteria", "Stress"};
-  Field<double> criteria_value{this, "criteriaValue", 1e15, "Fracturable threshold used to draw fracturable triangles",
-                               "Stress"};
+  Field<double> hosford_exponant{this, "hosfordExponant", 1.0, "exponent of the Hosford yield criterion", "Stress"};
+  Field<double> criteria_value{this, "criteriaValue", 1e15,
+                               "stress threshold above which triangles are shown as fracturable", "Stress"};
   Field<bool> show_stress_value{this, "showStressValue", true, "render stress values (viewer)", "Visualization"};
   Field<bool> show_stress_vector{this, "showStressVector", false, "render stress directions (viewer)",
                                  "Visualization"};
   Field<bool> show_fracturable_triangles{this, "showFracturableTriangles", false,
                                          "render triangles to fracture (viewer)", "Visualization"};
   Field<bool> compute_principal_stress{this, "computePrincipalStress", false,
-                                       "Compute principal stress for each triangle", "Stress"};
+                                       "compute the principal stresses of each triangle", "Stress"};
   Link<MeshTopologyBase> topology{this, "topology", "topology holding the triangles (default: the node's)"};
 
   struct Element {

@@ -12,21 +12,17 @@ namespace sinew {
 
 class TriangularFEMForceFieldOptim final : public ForceField {
  public:
-  Field<std::vector<double>> young_modulus{this, "youngModulus", {5000.0},
-                                           "FEM Young's Modulus in Hooke's law (one value or one per element)",
-                                           "Material"};
-  Field<std::vector<double>> poisson_ratio{this, "poissonRatio", {0.45},
-                                           "FEM Poisson Ratio in Hooke's law [0,0.5[ (one value or one per element)",
-                                           "Material"};
+  Field<std::vector<double>> young_modulus{
+      this, "youngModulus", {5000.0}, "Young's modulus (Pa): one value, or one per element", "Material"};
+  Field<std::vector<double>> poisson_ratio{
+      this, "poissonRatio", {0.45}, "Poisson's ratio in [0, 0.5): one value, or one per element", "Material"};
   Field<std::string> method{this, "method", "large", "only \"large\" is implemented (other values: warning)",
                             "Material"};
-  Field<double> damping{this, "damping", 0.0, "Ratio damping/stiffness (unused)", "Material"};
-  Field<double> rest_scale{this, "restScale", 1.0,
-                           "Scale factor applied to rest positions (to simulate pre-stretched materials)", "Material"};
+  Field<double> damping{this, "damping", 0.0, "damping-to-stiffness ratio (unused)", "Material"};
+  Field<double> rest_scale{this, "restScale", 1.0, "rest-shape scale factor (pre-stretch when < 1)", "Material"};
   Field<bool> compute_principal_stress{this, "computePrincipalStress", false,
-                                       "Compute principal stress for each triangle", "Stress"};
-  Field<double> stress_max_value{this, "stressMaxValue", 0.0, "Max stress value computed over the triangulation",
-                                 "Stress"};
+                                       "compute the principal stresses of each triangle", "Stress"};
+  Field<double> stress_max_value{this, "stressMaxValue", 0.0, "largest stress over all triangles (output)", "Stress"};
   Field<bool> show_stress_vector{this, "showStressVector", false, "render stress directions (viewer)",
                                  "Visualization"};
   Field<double> show_stress_threshold{this, "showStressThreshold", 0.0,

@@ -27,29 +27,27 @@ class MeshLoader : public Engine {
 
   Field<std::string> filename{this, "filename", "", "mesh file to load", "Loader"};
 
-  Field<std::vector<Vec3>> position{this, "position", {}, "vertices of the mesh loaded", "Vectors"};
-  io::ValueField<std::vector<std::vector<unsigned>>> polylines{this, "polylines", "polylines of the mesh loaded",
-                                                                "Vectors"};
-  Field<std::vector<Edge>> edges{this, "edges", {}, "edges of the mesh loaded", "Vectors"};
-  Field<std::vector<Triangle>> triangles{this, "triangles", {}, "triangles of the mesh loaded", "Vectors"};
-  Field<std::vector<Quad>> quads{this, "quads", {}, "quads of the mesh loaded", "Vectors"};
-  io::ValueField<std::vector<std::vector<unsigned>>> polygons{this, "polygons", "polygons of the mesh loaded",
-                                                               "Vectors"};
+  Field<std::vector<Vec3>> position{this, "position", {}, "loaded vertex positions", "Vectors"};
+  io::ValueField<std::vector<std::vector<unsigned>>> polylines{this, "polylines", "loaded polylines", "Vectors"};
+  Field<std::vector<Edge>> edges{this, "edges", {}, "loaded edges", "Vectors"};
+  Field<std::vector<Triangle>> triangles{this, "triangles", {}, "loaded triangles", "Vectors"};
+  Field<std::vector<Quad>> quads{this, "quads", {}, "loaded quads", "Vectors"};
+  io::ValueField<std::vector<std::vector<unsigned>>> polygons{this, "polygons", "loaded polygons", "Vectors"};
   Field<std::vector<std::array<unsigned, 4>>> high_order_edge_positions{
-      this, "highOrderEdgePositions", {}, "high order edge points of the mesh loaded", "Vectors"};
+      this, "highOrderEdgePositions", {}, "loaded high-order nodes on edges", "Vectors"};
   Field<std::vector<std::array<unsigned, 4>>> high_order_triangle_positions{
-      this, "highOrderTrianglePositions", {}, "high order triangle points of the mesh loaded", "Vectors"};
+      this, "highOrderTrianglePositions", {}, "loaded high-order nodes on triangles", "Vectors"};
   Field<std::vector<std::array<unsigned, 4>>> high_order_quad_positions{
-      this, "highOrderQuadPositions", {}, "high order quad points of the mesh loaded", "Vectors"};
-  Field<std::vector<Tetra>> tetrahedra{this, "tetrahedra", {}, "tetrahedra of the mesh loaded", "Vectors"};
-  Field<std::vector<Hexa>> hexahedra{this, "hexahedra", {}, "hexahedra of the mesh loaded", "Vectors"};
-  Field<std::vector<io::Prism>> prisms{this, "prisms", {}, "prisms of the mesh loaded", "Vectors"};
+      this, "highOrderQuadPositions", {}, "loaded high-order nodes on quads", "Vectors"};
+  Field<std::vector<Tetra>> tetrahedra{this, "tetrahedra", {}, "loaded tetrahedra", "Vectors"};
+  Field<std::vector<Hexa>> hexahedra{this, "hexahedra", {}, "loaded hexahedra", "Vectors"};
+  Field<std::vector<io::Prism>> prisms{this, "prisms", {}, "loaded prisms", "Vectors"};
   Field<std::vector<std::array<unsigned, 4>>> high_order_tetrahedron_positions{
-      this, "highOrderTetrahedronPositions", {}, "high order tetrahedron points of the mesh loaded", "Vectors"};
+      this, "highOrderTetrahedronPositions", {}, "loaded high-order nodes on tetrahedra", "Vectors"};
   Field<std::vector<std::array<unsigned, 4>>> high_order_hexahedron_positions{
-      this, "highOrderHexahedronPositions", {}, "high order hexahedron points of the mesh loaded", "Vectors"};
-  Field<std::vector<io::Pyramid>> pyramids{this, "pyramids", {}, "pyramids of the mesh loaded", "Vectors"};
-  Field<std::vector<Vec3>> normals{this, "normals", {}, "normals of the mesh loaded (per point)", "Vectors"};
+      this, "highOrderHexahedronPositions", {}, "loaded high-order nodes on hexahedra", "Vectors"};
+  Field<std::vector<io::Pyramid>> pyramids{this, "pyramids", {}, "loaded pyramids", "Vectors"};
+  Field<std::vector<Vec3>> normals{this, "normals", {}, "loaded per-vertex normals", "Vectors"};
 
   io::ValueField<std::vector<io::PrimitiveGroup>> edges_groups{this, "edgesGroups", "groups of edges", "Groups"};
   io::ValueField<std::vector<io::PrimitiveGroup>> triangles_groups{this, "trianglesGroups", "groups of triangles",

@@ -27,12 +27,9 @@ class BarycentricMapping final : public MappingBase {
   BarycentricMapping(StateType in, StateType out) : MappingBase(in, out) {}
 
   Field<bool> use_rest_position{this, "useRestPosition", false,
-                                "Use the rest position of the input and output models to initialize the mapping",
-                                "Mapping"};
-  Link<MeshTopologyBase> input_topology{this, "input_topology",
-                                        "Input topology container (usually the surrounding domain)."};
-  Link<MeshTopologyBase> output_topology{this, "output_topology",
-                                         "Output topology container (usually the immersed domain)."};
+                                "compute the barycentric coordinates from the rest positions", "Mapping"};
+  Link<MeshTopologyBase> input_topology{this, "input_topology", "topology of the embedding (input) mesh"};
+  Link<MeshTopologyBase> output_topology{this, "output_topology", "topology of the embedded (output) mesh"};
 
   void apply(int x) override;
   void apply_j(int v, int role) override;

@@ -18,11 +18,9 @@ class BeamLinearMapping final : public MappingBase {
  public:
   BeamLinearMapping() : MappingBase(StateType::rigid3, StateType::vec3) {}
 
-  Field<bool> local_coord{this, "localCoord", true,
-                          "true if initial coordinates are in the beam local coordinate system (i.e. a point at "
-                          "(10,0,0) is on the DOF number 10, whereas if this is false it is at whatever position on "
-                          "the beam where the distance from the initial DOF is 10)",
-                          "Mapping"};
+  Field<bool> local_coord{
+      this, "localCoord", true,
+      "initial points are in beam coordinates (x = beam index + fraction) instead of world coordinates", "Mapping"};
 
   void apply(int x) override;
   void apply_j(int v, int role) override;

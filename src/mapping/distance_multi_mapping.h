@@ -14,20 +14,22 @@ class DistanceMultiMapping final : public MappingBase {
  public:
   explicit DistanceMultiMapping(StateType in) : MappingBase(in, StateType::vec1, /*multi_input=*/true) {}
 
-  Field<bool> compute_distance{this, "computeDistance", false,
-                               "if 'computeDistance = true', then rest length of each element equal 0, otherwise rest "
-                               "length is the initial lenght of each of them",
-                               "Mapping"};
-  Field<std::vector<double>> rest_lengths{this, "restLengths", {}, "Rest lengths of the connections", "Mapping"};
-  Field<std::vector<int>> index_pairs{this, "indexPairs", {},
-                                      "list of couples (parent index + index in the parent)", "Mapping"};
+  Field<bool> compute_distance{
+      this, "computeDistance", false,
+      "output the distance itself (rest length 0) instead of the elongation from the initial length", "Mapping"};
+  Field<std::vector<double>> rest_lengths{
+      this,
+      "restLengths",
+      {},
+      "rest length of each edge (default: initial lengths, or 0 with computeDistance)",
+      "Mapping"};
+  Field<std::vector<int>> index_pairs{
+      this, "indexPairs", {}, "input points as (parent state index, point index) pairs", "Mapping"};
   Field<std::string> geometric_stiffness{this, "geometricStiffness", "Stabilized",
-                                         "Method used to compute the geometric stiffness: None, Exact or Stabilized "
-                                         "(0, 1, 2)",
-                                         "Mapping"};
-  Field<double> show_object_scale{this, "showObjectScale", 0.0, "Scale for object display", "Visualization"};
-  Field<std::vector<double>> show_color{this, "showColor", {1, 1, 0, 1}, "Color for object display", "Visualization"};
-  Link<MeshTopologyBase> topology{this, "topology", "link to the topology container"};
+                                         "geometric stiffness: None, Exact or Stabilized (0, 1, 2)", "Mapping"};
+  Field<double> show_object_scale{this, "showObjectScale", 0.0, "drawing scale (viewer)", "Visualization"};
+  Field<std::vector<double>> show_color{this, "showColor", {1, 1, 0, 1}, "drawing colour (viewer)", "Visualization"};
+  Link<MeshTopologyBase> topology{this, "topology", "topology used by this component (default: the node's)"};
 
   void apply(int x) override;
   void apply_j(int v, int role) override;

@@ -29,8 +29,8 @@ int geometric_stiffness_id(const std::string& text, int fallback) {
 }
 
 MappingBase::MappingBase(StateType in, StateType out, bool multi_input)
-    : input(this, "input", multi_input ? "Input objects to map" : "Input object to map", multi_input, false),
-      output_link(this, "output", "Output object to map", false, true),
+    : input(this, "input", multi_input ? "input states" : "input state", multi_input, false),
+      output_link(this, "output", "output state", false, true),
       in_type_(in),
       out_type_(out) {}
 

@@ -19,23 +19,19 @@ class RigidMapping final : public MappingBase {
  public:
   RigidMapping(StateType in, StateType out) : MappingBase(in, out) { filename.add_alias("fileRigidMapping"); }
 
-  Field<std::vector<double>> initial_points{this, "initialPoints", {}, "Local Coordinates of the points", "Mapping"};
-  Field<unsigned> index{this, "index", 0u, "input DOF index", "Mapping"};
-  Field<std::string> filename{this, "filename", "",
-                              "Xsp file where rigid mapping information can be loaded from.", "Mapping"};
+  Field<std::vector<double>> initial_points{
+      this, "initialPoints", {}, "mapped points in the frame of their rigid", "Mapping"};
+  Field<unsigned> index{this, "index", 0u, "index of the input rigid", "Mapping"};
+  Field<std::string> filename{this, "filename", "", "Xsp file to read the mapped points from", "Mapping"};
   Field<bool> use_x0{this, "useX0", false,
-                     "Use x0 instead of local copy of initial positions (to support topo changes)", "Mapping"};
-  Field<bool> index_from_end{this, "indexFromEnd", false, "input DOF index starts from the end of input DOFs vector",
-                             "Mapping"};
-  Field<std::vector<unsigned>> rigid_index_per_point{this, "rigidIndexPerPoint", {},
-                                                     "For each mapped point, the index of the Rigid it is mapped from",
-                                                     "Mapping"};
+                     "read the local points from the output rest positions (follows topology changes)", "Mapping"};
+  Field<bool> index_from_end{this, "indexFromEnd", false, "count 'index' from the last input rigid", "Mapping"};
+  Field<std::vector<unsigned>> rigid_index_per_point{
+      this, "rigidIndexPerPoint", {}, "rigid index of each mapped point", "Mapping"};
   Field<bool> global_to_local_coords{this, "globalToLocalCoords", false,
-                                     "are the output DOFs initially expressed in global coordinates", "Mapping"};
+                                     "initial output positions are world coordinates", "Mapping"};
   Field<std::string> geometric_stiffness{this, "geometricStiffness", "None",
-                                         "Method used to compute the geometric stiffness: None, Exact or Stabilized "
-                                         "(0, 1, 2)",
-                                         "Mapping"};
+                                         "geometric stiffness: None, Exact or Stabilized (0, 1, 2)", "Mapping"};
 
   void apply(int x) override;
   void apply_j(int v, int role) override;

@@ -14,12 +14,10 @@ class SquareDistanceMapping final : public MappingBase {
   explicit SquareDistanceMapping(StateType in) : MappingBase(in, StateType::vec1) {}
 
   Field<std::string> geometric_stiffness{this, "geometricStiffness", "Stabilized",
-                                         "Method used to compute the geometric stiffness: None, Exact or Stabilized "
-                                         "(0, 1, 2)",
-                                         "Mapping"};
-  Field<double> show_object_scale{this, "showObjectScale", 0.0, "Scale for object display", "Visualization"};
-  Field<std::vector<double>> show_color{this, "showColor", {1, 1, 0, 1}, "Color for object display", "Visualization"};
-  Link<MeshTopologyBase> topology{this, "topology", "link to the topology container"};
+                                         "geometric stiffness: None, Exact or Stabilized (0, 1, 2)", "Mapping"};
+  Field<double> show_object_scale{this, "showObjectScale", 0.0, "drawing scale (viewer)", "Visualization"};
+  Field<std::vector<double>> show_color{this, "showColor", {1, 1, 0, 1}, "drawing colour (viewer)", "Visualization"};
+  Link<MeshTopologyBase> topology{this, "topology", "topology used by this component (default: the node's)"};
 
   void apply(int x) override;
   void apply_j(int v, int role) override;

@@ -12,20 +12,17 @@ class SubsetMapping final : public MappingBase {
  public:
   SubsetMapping(StateType in, StateType out) : MappingBase(in, out) {}
 
-  Field<std::vector<unsigned>> indices{this, "indices", {}, "list of input indices", "Mapping"};
-  Field<unsigned> first{this, "first", 4294967295u, "first index (use if indices are sequential)", "Mapping"};
-  Field<unsigned> last{this, "last", 4294967295u, "last index (use if indices are sequential)", "Mapping"};
-  Field<double> radius{this, "radius", 1.0e-5,
-                       "search radius to find corresponding points in case no indices are given", "Mapping"};
-  Field<bool> handle_topology_change{this, "handleTopologyChange", true,
-                                     "Enable support of topological changes for indices", "Mapping"};
+  Field<std::vector<unsigned>> indices{this, "indices", {}, "input index of each output point", "Mapping"};
+  Field<unsigned> first{this, "first", 4294967295u, "first input index of a contiguous range", "Mapping"};
+  Field<unsigned> last{this, "last", 4294967295u, "last input index of a contiguous range", "Mapping"};
+  Field<double> radius{this, "radius", 1.0e-5, "matching radius used when no indices are given", "Mapping"};
+  Field<bool> handle_topology_change{this, "handleTopologyChange", true, "update the indices on topology changes",
+                                     "Mapping"};
   Field<bool> ignore_not_found{this, "ignoreNotFound", false,
-                               "True to ignore points that are not found in the input model, they will be treated "
-                               "as fixed points",
-                               "Mapping"};
-  Field<bool> resize_to_model{this, "resizeToModel", false,
-                              "True to resize the output MechanicalState to match the size of indices", "Mapping"};
-  Link<MeshTopologyBase> topology{this, "topology", "link to the topology container"};
+                               "tolerate output points without an input match (no error)", "Mapping"};
+  Field<bool> resize_to_model{this, "resizeToModel", false, "resize the output state to the number of indices",
+                              "Mapping"};
+  Link<MeshTopologyBase> topology{this, "topology", "topology used by this component (default: the node's)"};
 
   void apply(int x) override;
   void apply_j(int v, int role) override;

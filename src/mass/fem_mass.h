@@ -18,7 +18,7 @@ class FEMMass final : public Mass {
   enum class ElementKind { tetrahedron, hexahedron };
 
   Link<NodalMassDensity> nodal_mass_density{this, "nodalMassDensity",
-                                            "Link to nodal mass density (default: first one in the context)"};
+                                            "NodalMassDensity component (default: first one found in the context)"};
   Link<MeshTopologyBase> topology{this, "topology", "topology holding the elements (default: the node's)"};
 
   explicit FEMMass(ElementKind kind) : kind_(kind) {}

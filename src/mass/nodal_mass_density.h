@@ -9,7 +9,7 @@ namespace sinew {
 
 class NodalMassDensity final : public Component {
  public:
-  Field<std::vector<double>> property{this, "property", {1.0}, "Nodal property (mass density per node, kg/m³)"};
+  Field<std::vector<double>> property{this, "property", {1.0}, "mass density at each node (kg/m³)"};
 
   double node_property(std::size_t i) const {
     const auto& p = property.get();

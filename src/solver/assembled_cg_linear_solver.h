@@ -15,15 +15,11 @@ namespace sinew {
 
 class AssembledCGLinearSolver final : public MatrixLinearSolver {
  public:
-  Field<unsigned> iterations{this, "iterations", 25, "Maximum number of iterations of the Conjugate Gradient solution",
-                             "Solver"};
-  Field<double> tolerance{this, "tolerance", 1e-5, "Desired accuracy of the Conjugate Gradient solution evaluating: "
-                          "|r|²/|b|² (ratio of current residual norm over initial residual norm)", "Solver"};
-  Field<double> threshold{this, "threshold", 1e-5,
-                          "Minimum value of the denominator (pT A p)^ in the conjugate Gradient solution", "Solver"};
-  Field<bool> warm_start{this, "warmStart", false,
-                         "Use previous solution as initial solution, which may improve the initial guess if your "
-                         "system is evolving smoothly", "Solver"};
+  Field<unsigned> iterations{this, "iterations", 25, "maximum number of CG iterations", "Solver"};
+  Field<double> tolerance{this, "tolerance", 1e-5, "stop when |r|²/|b|² falls below this value", "Solver"};
+  Field<double> threshold{this, "threshold", 1e-5, "stop when the CG denominator pᵀAp falls below this value",
+                          "Solver"};
+  Field<bool> warm_start{this, "warmStart", false, "start from the previous solution instead of zero", "Solver"};
 
   void init() override;
   int last_iterations() const { return last_iterations_; }

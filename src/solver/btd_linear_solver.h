@@ -20,12 +20,10 @@ class BTDLinearSolver final : public MatrixLinearSolver {
   using Block = Eigen::Matrix<double, 6, 6>;
   using BlockVec = Eigen::Matrix<double, 6, 1>;
 
-  Field<bool> verbose{this, "verbose", false, "Dump system state at each iteration", "Solver"};
-  Field<bool> show_problem{this, "showProblem", false, "display debug informations about subpartSolve computation",
-                           "Solver"};
-  Field<bool> subpart_solve{this, "subpartSolve", false, "Allows for the computation of a subpart of the system",
-                            "Solver"};
-  Field<bool> verification{this, "verification", false, "verification of the subpartSolve", "Solver"};
+  Field<bool> verbose{this, "verbose", false, "log the system at each iteration", "Solver"};
+  Field<bool> show_problem{this, "showProblem", false, "log the partial-solve computations", "Solver"};
+  Field<bool> subpart_solve{this, "subpartSolve", false, "solve only the needed part of the system", "Solver"};
+  Field<bool> verification{this, "verification", false, "check the partial solve against a full one", "Solver"};
   Field<int> block_size{this, "blockSize", 6, "deprecated: the block size is given by the template", "Solver"};
 
   void init() override;

@@ -34,10 +34,8 @@ class LinearSystemListLink final : public BaseLink {
 
 class CompositeLinearSystem final : public MatrixLinearSystem {
  public:
-  LinearSystemListLink linear_systems{this, "linearSystems", "List of linear systems to assemble"};
-  Link<MatrixLinearSystem> solver_linear_system{this, "solverLinearSystem",
-                                                "Among the list of linear systems, which one is to be used by the "
-                                                "linear solver"};
+  LinearSystemListLink linear_systems{this, "linearSystems", "sub-systems assembled by this composite"};
+  Link<MatrixLinearSystem> solver_linear_system{this, "solverLinearSystem", "sub-system handed to the linear solver"};
 
   void init() override;
   void build_system_matrix(MechanicalOps& ops, double m, double b, double k) override;

@@ -41,7 +41,7 @@ class EigenFactorizationOf final : public EigenFactorization {
 
 class EigenDirectSolver : public MatrixLinearSolver {
  public:
-  Link<OrderingMethod> ordering_method{this, "orderingMethod", "Ordering method used by this component"};
+  Link<OrderingMethod> ordering_method{this, "orderingMethod", "fill-reducing ordering (default: AMD)"};
 
   void init() override;
   bool factorized() const { return factorized_; }

@@ -19,10 +19,8 @@ namespace sinew {
 
 class MatrixLinearSolver : public LinearSolver {
  public:
-  Link<MatrixLinearSystem> linear_system{this, "linearSystem", "The linear system to solve"};
-  Field<bool> parallel_inverse_product{this, "parallelInverseProduct", false,
-                                       "Parallelize the computation of the product J*M^{-1}*J^T where M is the "
-                                       "matrix of the linear system and J is any matrix with compatible dimensions",
+  Link<MatrixLinearSystem> linear_system{this, "linearSystem", "linear system assembled for this solver"};
+  Field<bool> parallel_inverse_product{this, "parallelInverseProduct", false, "compute J·A⁻¹·Jᵀ products in parallel",
                                        "LinearSolver"};
 
   void init() override;

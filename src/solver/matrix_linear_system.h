@@ -21,32 +21,25 @@ namespace sinew {
 
 class MatrixLinearSystem : public Component {
  public:
-  Field<VecNi<2>> matrix_size{this, "matrixSize", VecNi<2>(0, 0), "Size of the global matrix", "LinearSystem"};
-  Field<bool> enable_assembly{this, "enableAssembly", true, "Allows to assemble the system matrix", "LinearSystem"};
+  Field<VecNi<2>> matrix_size{this, "matrixSize", VecNi<2>(0, 0), "size of the assembled matrix (output)",
+                              "LinearSystem"};
+  Field<bool> enable_assembly{this, "enableAssembly", true, "assemble the matrix", "LinearSystem"};
   Field<bool> factorization_invalidation{this, "factorizationInvalidation", false,
-                                         "Internal data for the detection of cache invalidation of the matrix",
-                                         "LinearSystem"};
-  Field<bool> assemble_stiffness{this, "assembleStiffness", true, "If true, the stiffness is added to the global matrix",
-                                 "LinearSystem"};
-  Field<bool> assemble_mass{this, "assembleMass", true, "If true, the mass is added to the global matrix",
-                            "LinearSystem"};
-  Field<bool> assemble_damping{this, "assembleDamping", true, "If true, the damping is added to the global matrix",
-                               "LinearSystem"};
-  Field<bool> assemble_geometric_stiffness{
-      this, "assembleGeometricStiffness", true,
-      "If true, the geometric stiffness of mappings is added to the global matrix", "LinearSystem"};
+                                         "change counter used to refresh the factorisation (internal)", "LinearSystem"};
+  Field<bool> assemble_stiffness{this, "assembleStiffness", true, "include stiffness contributions", "LinearSystem"};
+  Field<bool> assemble_mass{this, "assembleMass", true, "include mass contributions", "LinearSystem"};
+  Field<bool> assemble_damping{this, "assembleDamping", true, "include damping contributions", "LinearSystem"};
+  Field<bool> assemble_geometric_stiffness{this, "assembleGeometricStiffness", true,
+                                           "include the mappings' geometric stiffness", "LinearSystem"};
   Field<bool> apply_projective_constraints{this, "applyProjectiveConstraints", true,
-                                           "If true, projective constraints are applied on the global matrix",
-                                           "LinearSystem"};
-  Field<bool> apply_mapped_components{this, "applyMappedComponents", true,
-                                      "If true, mapped components contribute to the global matrix", "LinearSystem"};
-  Field<bool> check_indices{this, "checkIndices", false,
-                            "If true, indices are verified before being added in to the global matrix, favoring "
-                            "security over speed",
+                                           "project the matrix with the projective constraints", "LinearSystem"};
+  Field<bool> apply_mapped_components{this, "applyMappedComponents", true, "include components below mappings",
+                                      "LinearSystem"};
+  Field<bool> check_indices{this, "checkIndices", false, "bounds-check entries while assembling (slower)",
                             "LinearSystem"};
-  Field<bool> parallel_assembly_independent_matrices{
-      this, "parallelAssemblyIndependentMatrices", false,
-      "If true, independent matrices (global matrix vs mapped matrices) are assembled in parallel", "LinearSystem"};
+  Field<bool> parallel_assembly_independent_matrices{this, "parallelAssemblyIndependentMatrices", false,
+                                                     "assemble the main and mapped matrices concurrently",
+                                                     "LinearSystem"};
 
   void init() override;
 

@@ -20,12 +20,9 @@ namespace sinew {
 
 class MinResLinearSolver final : public LinearSolver {
  public:
-  Field<unsigned> iterations{this, "iterations", 25u,
-                             "maximum number of iterations of the Conjugate Gradient solution", "Solver"};
+  Field<unsigned> iterations{this, "iterations", 25u, "maximum number of iterations", "Solver"};
   Field<double> tolerance{this, "tolerance", 1e-5,
-                          "desired precision of the Conjugate Gradient Solution (ratio of current residual norm over "
-                          "initial residual norm)",
-                          "Solver"};
+                          "stop when the residual norm ratio (current / initial) falls below this value", "Solver"};
   Field<bool> verbose{this, "verbose", false, "deprecated: has no effect", "Solver"};
   Field<bool> parallel_inverse_product{this, "parallelInverseProduct", false, "no effect for MinRes", "Solver"};
 
@@ -48,12 +45,9 @@ class MinResLinearSolver final : public LinearSolver {
 
 class AssembledMinResLinearSolver final : public MatrixLinearSolver {
  public:
-  Field<unsigned> iterations{this, "iterations", 25u,
-                             "maximum number of iterations of the Conjugate Gradient solution", "Solver"};
+  Field<unsigned> iterations{this, "iterations", 25u, "maximum number of iterations", "Solver"};
   Field<double> tolerance{this, "tolerance", 1e-5,
-                          "desired precision of the Conjugate Gradient Solution (ratio of current residual norm over "
-                          "initial residual norm)",
-                          "Solver"};
+                          "stop when the residual norm ratio (current / initial) falls below this value", "Solver"};
   Field<bool> verbose{this, "verbose", false, "deprecated: has no effect", "Solver"};
 
   void init() override;

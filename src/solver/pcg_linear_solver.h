@@ -19,22 +19,16 @@ namespace sinew {
 
 class PCGLinearSolver final : public LinearSolver {
  public:
-  Field<unsigned> iterations{this, "iterations", 25u,
-                             "Maximum number of iterations after which the iterative descent of the Conjugate "
-                             "Gradient must stop",
-                             "Solver"};
-  Field<double> tolerance{this, "tolerance", 1e-5,
-                          "Desired accuracy of the Conjugate Gradient solution evaluating: |r|²/|b|² (ratio of "
-                          "current residual norm over initial residual norm)",
-                          "Solver"};
-  Field<bool> use_precond{this, "use_precond", true, "Use a preconditioner", "Solver"};
+  Field<unsigned> iterations{this, "iterations", 25u, "maximum number of PCG iterations", "Solver"};
+  Field<double> tolerance{this, "tolerance", 1e-5, "stop when |r|²/|b|² falls below this value", "Solver"};
+  Field<bool> use_precond{this, "use_precond", true, "apply the preconditioner", "Solver"};
   Field<unsigned> update_step{this, "update_step", 1u,
                               "deprecated: use the assemblingRate of the PreconditionedMatrixFreeSystem", "Solver"};
   Field<bool> build_precond{this, "build_precond", true, "deprecated: has no effect", "Solver"};
   Field<bool> parallel_inverse_product{this, "parallelInverseProduct", false, "no effect for PCG", "Solver"};
-  Link<LinearSolver> preconditioner{this, "preconditioner",
-                                    "Link towards the linear solver used to precondition the conjugate gradient"};
-  Link<Component> linear_system{this, "linearSystem", "The linear system to solve (a PreconditionedMatrixFreeSystem)"};
+  Link<LinearSolver> preconditioner{this, "preconditioner", "linear solver acting as preconditioner"};
+  Link<Component> linear_system{this, "linearSystem",
+                                "linear system of this solver (a PreconditionedMatrixFreeSystem)"};
 
   void init() override;
   void bwd_init() override;

@@ -17,8 +17,8 @@ namespace sinew {
 
 class PrecomputedLinearSolver final : public MatrixLinearSolver {
  public:
-  Field<bool> jmjt_twostep{this, "jmjt_twostep", true, "Use two step algorithm to compute JMinvJt", "Solver"};
-  Field<bool> use_file{this, "use_file", true, "Dump system matrix in a file", "Solver"};
+  Field<bool> jmjt_twostep{this, "jmjt_twostep", true, "compute J·A⁻¹·Jᵀ in two passes", "Solver"};
+  Field<bool> use_file{this, "use_file", true, "store/reuse the precomputed matrix in a file", "Solver"};
   Field<bool> verbose{this, "verbose", false, "deprecated: has no effect", "Solver"};
 
   void init() override;

@@ -26,16 +26,14 @@ class PrecomputedWarpPreconditioner final : public MatrixLinearSolver {
  public:
   using Dense = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-  Field<bool> jmjt_twostep{this, "jmjt_twostep", true, "Use two step algorithm to compute JMinvJt", "Solver"};
-  Field<bool> use_file{this, "use_file", true, "Dump system matrix in a file", "Solver"};
-  Field<bool> share_matrix{this, "share_matrix", true,
-                           "Share the compliance matrix in memory if they are related to the same file (WARNING: "
-                           "might require to reload Sofa when opening a new scene...)",
+  Field<bool> jmjt_twostep{this, "jmjt_twostep", true, "compute J·A⁻¹·Jᵀ in two passes", "Solver"};
+  Field<bool> use_file{this, "use_file", true, "store/reuse the precomputed matrix in a file", "Solver"};
+  Field<bool> share_matrix{this, "share_matrix", true, "share one in-memory matrix among instances using the same file",
                            "Solver"};
-  Link<LinearSolver> linear_solver{this, "linearSolver",
-                                   "Link towards the linear solver used to precompute the first matrix"};
-  Field<bool> use_rotations{this, "use_rotations", true, "Use Rotations around the preconditioner", "Solver"};
-  Field<double> draw_rotations_scale{this, "draw_rotations_scale", 0.0, "Scale rotations in draw function",
+  Link<LinearSolver> linear_solver{this, "linearSolver", "linear solver computing the initial inverse"};
+  Field<bool> use_rotations{this, "use_rotations", true,
+                            "rotate the precomputed inverse with the current element rotations", "Solver"};
+  Field<double> draw_rotations_scale{this, "draw_rotations_scale", 0.0, "size of the drawn rotation frames (viewer)",
                                      "Visualization"};
 
   void init() override;

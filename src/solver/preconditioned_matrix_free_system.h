@@ -17,14 +17,13 @@ class PreconditionedMatrixFreeSystem final : public Component {
  public:
   PreconditionedMatrixFreeSystem() { assembling_rate.add_alias("update_step"); }
 
-  Field<VecNi<2>> matrix_size{this, "matrixSize", VecNi<2>(0, 0), "Size of the global matrix", "LinearSystem"};
-  Field<bool> enable_assembly{this, "enableAssembly", true, "Allows to assemble the system matrix", "LinearSystem"};
+  Field<VecNi<2>> matrix_size{this, "matrixSize", VecNi<2>(0, 0), "size of the assembled matrix (output)",
+                              "LinearSystem"};
+  Field<bool> enable_assembly{this, "enableAssembly", true, "assemble the matrix", "LinearSystem"};
   Field<unsigned> assembling_rate{this, "assemblingRate", 1u,
-                                  "Rate of update of the preconditioner matrix, in number of time steps or Newton "
-                                  "iterations",
-                                  "LinearSystem"};
+                                  "refresh the preconditioner every N time steps / Newton iterations", "LinearSystem"};
   Link<MatrixLinearSystem> preconditioner_system{this, "preconditionerSystem",
-                                                 "Link toward the linear system of the preconditioner"};
+                                                 "linear system assembling the preconditioner"};
 
   void init() override { reinit_counter(); }
   void reset() override { reinit_counter(); }

@@ -15,11 +15,9 @@ namespace sinew {
 
 class RotationMatrixSystem final : public MatrixLinearSystem {
  public:
-  Field<unsigned> assembling_rate{this, "assemblingRate", 1u, "Rate of update of the preconditioner matrix",
-                                  "LinearSystem"};
-  Link<MatrixLinearSystem> main_system{this, "mainSystem", "Main assembled linear system that will be warped"};
-  Link<Component> rotation_finder{this, "rotationFinder",
-                                  "Link toward the rotation finder used to compute the rotation matrix"};
+  Field<unsigned> assembling_rate{this, "assemblingRate", 1u, "refresh the rotations every N steps", "LinearSystem"};
+  Link<MatrixLinearSystem> main_system{this, "mainSystem", "assembled system to rotate"};
+  Link<Component> rotation_finder{this, "rotationFinder", "component providing the rotations"};
 
   void init() override;
   void reset() override { counter_ = assembling_rate.value(); }

@@ -21,15 +21,10 @@ class SparseLDLSolver final : public MatrixLinearSolver {
  public:
   Field<bool> precompute_symbolic_decomposition{
       this, "precomputeSymbolicDecomposition", true,
-      "If true the solver will reuse the precomputed symbolic decomposition. Otherwise it will recompute it at "
-      "each step.",
-      "Solver"};
-  Field<int> l_nnz{this, "L_nnz", 0,
-                   "Number of non-zero values in the lower triangular matrix of the factorization. The lower, the "
-                   "faster the system is solved.",
-                   "Solver"};
+      "reuse the symbolic factorisation while the sparsity pattern is unchanged", "Solver"};
+  Field<int> l_nnz{this, "L_nnz", 0, "non-zeros of the L factor (output)", "Solver"};
   Field<bool> saving_matrix_to_file{this, "savingMatrixToFile", false, "deprecated: has no effect", "Solver"};
-  Link<OrderingMethod> ordering_method{this, "orderingMethod", "Ordering method used by this component"};
+  Link<OrderingMethod> ordering_method{this, "orderingMethod", "fill-reducing ordering (default: AMD)"};
 
   void init() override;
   // Symbolic factorizations done so far (tests).

@@ -15,7 +15,7 @@ namespace sinew {
 
 class SSORPreconditioner final : public MatrixLinearSolver {
  public:
-  Field<double> omega{this, "omega", 1.0, "Omega coefficient", "Solver"};
+  Field<double> omega{this, "omega", 1.0, "relaxation factor ω", "Solver"};
   Field<bool> verbose{this, "verbose", false, "deprecated: has no effect", "Solver"};
 
   void init() override;

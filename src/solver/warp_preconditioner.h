@@ -12,13 +12,9 @@ namespace sinew {
 
 class WarpPreconditioner final : public MatrixLinearSolver {
  public:
-  Link<LinearSolver> linear_solver{this, "linearSolver",
-                                   "Link towards the linear solver used to build the warp conditioner"};
-  Field<unsigned> use_rotation_finder{this, "useRotationFinder", 0u, "deprecated: Which rotation Finder to use",
-                                      "Solver"};
-  Field<unsigned> update_step{this, "update_step", 1u,
-                              "deprecated: Number of steps before the next refresh of the system matrix in the main "
-                              "solver (use the assemblingRate of the RotationMatrixSystem)",
+  Link<LinearSolver> linear_solver{this, "linearSolver", "linear solver factorising the rotated system"};
+  Field<unsigned> use_rotation_finder{this, "useRotationFinder", 0u, "deprecated, no effect", "Solver"};
+  Field<unsigned> update_step{this, "update_step", 1u, "deprecated: use assemblingRate of RotationMatrixSystem",
                               "Solver"};
 
   void init() override;

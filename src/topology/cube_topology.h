@@ -9,16 +9,15 @@ namespace sinew {
 
 class CubeTopology final : public MeshTopology {
  public:
-  Field<int> nx{this, "nx", 0, "x grid resolution", "Grid"};
-  Field<int> ny{this, "ny", 0, "y grid resolution", "Grid"};
-  Field<int> nz{this, "nz", 0, "z grid resolution", "Grid"};
+  Field<int> nx{this, "nx", 0, "number of points along x", "Grid"};
+  Field<int> ny{this, "ny", 0, "number of points along y", "Grid"};
+  Field<int> nz{this, "nz", 0, "number of points along z", "Grid"};
   Field<bool> internal_points{this, "internalPoints", false,
-                              "include internal points (allow a one-to-one mapping between points from "
-                              "RegularGridTopology and CubeTopology)",
-                              "Grid"};
-  Field<bool> split_normals{this, "splitNormals", false, "split corner points to have planar normals", "Grid"};
-  Field<Vec3> min{this, "min", Vec3::Zero(), "Min", "Grid"};
-  Field<Vec3> max{this, "max", Vec3::Ones(), "Max", "Grid"};
+                              "also create the interior points (same numbering as RegularGridTopology)", "Grid"};
+  Field<bool> split_normals{this, "splitNormals", false,
+                            "duplicate edge and corner points so each face has flat normals", "Grid"};
+  Field<Vec3> min{this, "min", Vec3::Zero(), "lower corner of the box", "Grid"};
+  Field<Vec3> max{this, "max", Vec3::Ones(), "upper corner of the box", "Grid"};
 
   void parse(AttributeMap& attrs, Diagnostics& diag) override;
   void init() override;

@@ -11,11 +11,9 @@ class MeshContainer;
 
 class EdgeSetGeometryAlgorithms : public PointSetGeometryAlgorithms {
  public:
-  Field<bool> show_edge_indices{this, "showEdgeIndices", false, "Debug : view Edge indices.", "Visualization"};
-  Field<bool> draw_edges{this, "drawEdges", false, "if true, draw the edges in the topology.", "Visualization"};
-  Field<std::string> draw_color_edges{this, "drawColorEdges", "0.4 1 0.3 1", "RGB code color used to draw edges.",
-                                      "Visualization"};
-
+  Field<bool> show_edge_indices{this, "showEdgeIndices", false, "draw edge indices (viewer)", "Visualization"};
+  Field<bool> draw_edges{this, "drawEdges", false, "draw the edges (viewer)", "Visualization"};
+  Field<std::string> draw_color_edges{this, "drawColorEdges", "0.4 1 0.3 1", "edge colour (viewer)", "Visualization"};
 };
 
 }  // namespace sinew

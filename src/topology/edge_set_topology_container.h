@@ -7,8 +7,7 @@ namespace sinew {
 
 class EdgeSetTopologyContainer : public PointSetTopologyContainer {
  public:
-  Field<bool> check_connexity{this, "checkConnexity", false, "It true, will check the connexity of the mesh.",
-                              "Topology"};
+  Field<bool> check_connexity{this, "checkConnexity", false, "check that the mesh is connected at init", "Topology"};
 
   Level level() const override { return Level::edge; }
 

@@ -8,8 +8,7 @@ namespace sinew {
 
 class Hexa2QuadTopologicalMapping final : public TopologicalMapping {
  public:
-  Field<bool> flip_normals{this, "flipNormals", false,
-                           "Flip Normal ? (Inverse point order when creating triangle)", "Mapping"};
+  Field<bool> flip_normals{this, "flipNormals", false, "reverse the vertex order of the created faces", "Mapping"};
   void init() override;
 };
 

@@ -9,9 +9,7 @@ namespace sinew {
 class Hexa2TetraTopologicalMapping final : public TopologicalMapping {
  public:
   Field<bool> swapping{this, "swapping", false,
-                       "Boolean enabling to swap edges to hexahedrons based on their grid position in order to avoid "
-                       "numerical bias effect",
-                       "Mapping"};
+                       "alternate the split pattern per cell (checkerboard) to avoid a directional bias", "Mapping"};
   void init() override;
 
   // The 6 tetrahedra of hexahedron `h` (index `i` in a grid of nx × ny cells per layer).

@@ -11,15 +11,12 @@ class MeshContainer;
 
 class HexahedronSetGeometryAlgorithms : public QuadSetGeometryAlgorithms {
  public:
-  Field<bool> show_hexa_indices{this, "showHexaIndices", false, "Debug : view Hexa indices", "Visualization"};
-  Field<bool> draw_hexahedra{this, "drawHexahedra", false, "if true, draw the Hexahedron in the topology",
-                             "Visualization"};
+  Field<bool> show_hexa_indices{this, "showHexaIndices", false, "draw hexahedron indices (viewer)", "Visualization"};
+  Field<bool> draw_hexahedra{this, "drawHexahedra", false, "draw the hexahedra (viewer)", "Visualization"};
   Field<float> draw_scale_hexahedra{this, "drawScaleHexahedra", 1.0f,
-                                    "Scale of the hexahedra (between 0 and 1; if <1.0, it produces gaps between the hexahedra)",
-                                    "Visualization"};
-  Field<std::string> draw_color_hexahedra{this, "drawColorHexahedra", "1 0.5 0 1",
-                                          "RGB code color used to draw hexahedra.", "Visualization"};
-
+                                    "shrink factor of drawn hexahedra in [0, 1] (viewer)", "Visualization"};
+  Field<std::string> draw_color_hexahedra{this, "drawColorHexahedra", "1 0.5 0 1", "hexahedron colour (viewer)",
+                                          "Visualization"};
 };
 
 }  // namespace sinew

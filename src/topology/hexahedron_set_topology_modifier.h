@@ -11,7 +11,7 @@ class MeshContainer;
 
 class HexahedronSetTopologyModifier : public QuadSetTopologyModifier {
  public:
-  Field<bool> remove_isolated{this, "removeIsolated", true, "Remove isolated DOFs", "Topology"};
+  Field<bool> remove_isolated{this, "removeIsolated", true, "remove points left without elements", "Topology"};
 
  protected:
   bool accepts(const Component& c) const override;

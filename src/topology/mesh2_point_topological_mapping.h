@@ -11,36 +11,34 @@ namespace sinew {
 class Mesh2PointTopologicalMapping final : public TopologicalMapping {
  public:
   Field<std::vector<Vec3>> point_bary_coords{
-      this, "pointBaryCoords", {},
-      "Coordinates for the points of the output topology created from the points of the input topology", "BaryCoords"};
+      this, "pointBaryCoords", {}, "barycentric offsets of output points created at each input point", "BaryCoords"};
   Field<std::vector<Vec3>> edge_bary_coords{
-      this, "edgeBaryCoords", {},
-      "Coordinates for the points of the output topology created from the edges of the input topology", "BaryCoords"};
+      this, "edgeBaryCoords", {}, "barycentric coordinates of output points created on each input edge", "BaryCoords"};
   Field<std::vector<Vec3>> triangle_bary_coords{
-      this, "triangleBaryCoords", {},
-      "Coordinates for the points of the output topology created from the triangles of the input topology",
+      this,
+      "triangleBaryCoords",
+      {},
+      "barycentric coordinates of output points created in each input triangle",
       "BaryCoords"};
   Field<std::vector<Vec3>> quad_bary_coords{
-      this, "quadBaryCoords", {},
-      "Coordinates for the points of the output topology created from the quads of the input topology", "BaryCoords"};
+      this, "quadBaryCoords", {}, "barycentric coordinates of output points created in each input quad", "BaryCoords"};
   Field<std::vector<Vec3>> tetra_bary_coords{
-      this, "tetraBaryCoords", {},
-      "Coordinates for the points of the output topology created from the tetra of the input topology", "BaryCoords"};
-  Field<std::vector<Vec3>> hexa_bary_coords{
-      this, "hexaBaryCoords", {},
-      "Coordinates for the points of the output topology created from the hexa of the input topology", "BaryCoords"};
-  Field<bool> copy_edges{this, "copyEdges", false,
-                         "Activate mapping of input edges into the output topology (requires at least one item in "
-                         "pointBaryCoords)",
+      this,
+      "tetraBaryCoords",
+      {},
+      "barycentric coordinates of output points created in each input tetrahedron",
+      "BaryCoords"};
+  Field<std::vector<Vec3>> hexa_bary_coords{this,
+                                            "hexaBaryCoords",
+                                            {},
+                                            "barycentric coordinates of output points created in each input hexahedron",
+                                            "BaryCoords"};
+  Field<bool> copy_edges{this, "copyEdges", false, "copy the input edges to the output (needs pointBaryCoords)",
                          "Mapping"};
   Field<bool> copy_triangles{this, "copyTriangles", false,
-                             "Activate mapping of input triangles into the output topology (requires at least one "
-                             "item in pointBaryCoords)",
-                             "Mapping"};
+                             "copy the input triangles to the output (needs pointBaryCoords)", "Mapping"};
   Field<bool> copy_tetrahedra{this, "copyTetrahedra", false,
-                              "Activate mapping of input tetrahedra into the output topology (requires at least one "
-                              "item in pointBaryCoords)",
-                              "Mapping"};
+                              "copy the input tetrahedra to the output (needs pointBaryCoords)", "Mapping"};
 
   void init() override;
 

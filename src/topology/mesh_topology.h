@@ -57,13 +57,13 @@ class MeshContainer : public MeshTopologyBase {
   MeshContainer();
   ~MeshContainer() override;
 
-  Field<std::vector<Vec3>> position{this, "position", {}, "List of point positions", "Topology"};
-  Field<std::vector<Edge>> edges_f{this, "edges", {}, "List of edge indices", "Topology"};
-  Field<std::vector<Triangle>> triangles_f{this, "triangles", {}, "List of triangle indices", "Topology"};
-  Field<std::vector<Quad>> quads_f{this, "quads", {}, "List of quad indices", "Topology"};
-  Field<std::vector<Tetra>> tetrahedra_f{this, "tetrahedra", {}, "List of tetrahedron indices", "Topology"};
-  Field<std::vector<Hexa>> hexahedra_f{this, "hexahedra", {}, "List of hexahedron indices", "Topology"};
-  Field<std::string> filename{this, "filename", "", "Filename of the mesh (alias fileTopology)", "Topology"};
+  Field<std::vector<Vec3>> position{this, "position", {}, "point coordinates", "Topology"};
+  Field<std::vector<Edge>> edges_f{this, "edges", {}, "edges (vertex index pairs)", "Topology"};
+  Field<std::vector<Triangle>> triangles_f{this, "triangles", {}, "triangles (3 vertex indices each)", "Topology"};
+  Field<std::vector<Quad>> quads_f{this, "quads", {}, "quads (4 vertex indices each)", "Topology"};
+  Field<std::vector<Tetra>> tetrahedra_f{this, "tetrahedra", {}, "tetrahedra (4 vertex indices each)", "Topology"};
+  Field<std::vector<Hexa>> hexahedra_f{this, "hexahedra", {}, "hexahedra (8 vertex indices each)", "Topology"};
+  Field<std::string> filename{this, "filename", "", "mesh file to read (alias: fileTopology)", "Topology"};
 
   std::size_t nb_points() const override;
   bool has_positions() const override;
@@ -131,18 +131,16 @@ class MeshTopology : public MeshContainer {
   MeshTopology();
   ~MeshTopology() override;
 
-  Field<std::vector<std::array<unsigned, 6>>> prisms{this, "prisms", {}, "List of prisms indices", "Topology"};
-  Field<std::vector<std::array<unsigned, 5>>> pyramids{this, "pyramids", {}, "List of pyramids indices", "Topology"};
-  Field<std::vector<Vec2>> uv{this, "uv", {}, "List of uv coordinates", "Topology"};
-  Field<bool> compute_all_buffers{this, "computeAllBuffers", false,
-                                  "Option to compute all crossed topology buffers at init. False by default",
-                                  "Topology"};
-  Field<bool> draw_edges{this, "drawEdges", false, "if true, draw the topology Edges", "Visualization"};
-  Field<bool> draw_triangles{this, "drawTriangles", false, "if true, draw the topology Triangles", "Visualization"};
-  Field<bool> draw_quads{this, "drawQuads", false, "if true, draw the topology Quads", "Visualization"};
-  Field<bool> draw_tetrahedra{this, "drawTetrahedra", false, "if true, draw the topology Tetrahedra",
-                              "Visualization"};
-  Field<bool> draw_hexahedra{this, "drawHexahedra", false, "if true, draw the topology hexahedra", "Visualization"};
+  Field<std::vector<std::array<unsigned, 6>>> prisms{this, "prisms", {}, "prisms (6 vertex indices each)", "Topology"};
+  Field<std::vector<std::array<unsigned, 5>>> pyramids{
+      this, "pyramids", {}, "pyramids (5 vertex indices each)", "Topology"};
+  Field<std::vector<Vec2>> uv{this, "uv", {}, "texture coordinates", "Topology"};
+  Field<bool> compute_all_buffers{this, "computeAllBuffers", false, "build all adjacency tables at init", "Topology"};
+  Field<bool> draw_edges{this, "drawEdges", false, "draw the edges (viewer)", "Visualization"};
+  Field<bool> draw_triangles{this, "drawTriangles", false, "draw the triangles (viewer)", "Visualization"};
+  Field<bool> draw_quads{this, "drawQuads", false, "draw the quads (viewer)", "Visualization"};
+  Field<bool> draw_tetrahedra{this, "drawTetrahedra", false, "draw the tetrahedra (viewer)", "Visualization"};
+  Field<bool> draw_hexahedra{this, "drawHexahedra", false, "draw the hexahedra (viewer)", "Visualization"};
 
   void init() override;
   void clear_topology() override;

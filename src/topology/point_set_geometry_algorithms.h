@@ -11,12 +11,11 @@ class MeshContainer;
 
 class PointSetGeometryAlgorithms : public TopologyObject {
  public:
-  Field<float> show_indices_scale{this, "showIndicesScale", 1.0f,
-                                  "Debug : scaling factor for view topology indices size", "Visualization"};
-  Field<bool> show_point_indices{this, "showPointIndices", false, "Debug : view Point indices", "Visualization"};
-  Field<std::string> tag_mechanics{this, "tagMechanics", "", "Tag of the Mechanical Object", "Topology"};
+  Field<float> show_indices_scale{this, "showIndicesScale", 1.0f, "size of drawn indices (viewer)", "Visualization"};
+  Field<bool> show_point_indices{this, "showPointIndices", false, "draw point indices (viewer)", "Visualization"};
+  Field<std::string> tag_mechanics{this, "tagMechanics", "", "tag of the state holding the positions", "Topology"};
 
-  Link<MeshTopologyBase> topology{this, "topology", "link to the topology container"};
+  Link<MeshTopologyBase> topology{this, "topology", "topology used by this component (default: the node's)"};
 
   void init() override;
   // The state whose positions the geometric queries read.

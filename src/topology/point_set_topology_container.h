@@ -19,10 +19,8 @@ class PointSetTopologyContainer : public MeshContainer {
 
   PointSetTopologyContainer();
 
-  Field<unsigned> nb_points_f{this, "nbPoints", 0u, "Number of points", "Topology"};
-  Field<bool> check_topology{this, "checkTopology", false,
-                             "Parameter to activate internal topology checks (might slow down the simulation)",
-                             "Topology"};
+  Field<unsigned> nb_points_f{this, "nbPoints", 0u, "point count (when no positions are given)", "Topology"};
+  Field<bool> check_topology{this, "checkTopology", false, "run consistency checks on the topology (slow)", "Topology"};
 
   virtual Level level() const { return Level::point; }
 

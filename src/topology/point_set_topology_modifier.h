@@ -11,7 +11,7 @@ class MeshContainer;
 
 class PointSetTopologyModifier : public TopologyObject {
  public:
-  Field<bool> propagate_to_dof{this, "propagateToDOF", true, "Propagate changes to Mechanical object DOFs",
+  Field<bool> propagate_to_dof{this, "propagateToDOF", true, "apply point additions/removals to the node's state",
                                "Topology"};
 
   void init() override;

@@ -11,11 +11,9 @@ class MeshContainer;
 
 class QuadSetGeometryAlgorithms : public EdgeSetGeometryAlgorithms {
  public:
-  Field<bool> show_quad_indices{this, "showQuadIndices", false, "Debug : view Quad indices", "Visualization"};
-  Field<bool> draw_quads{this, "drawQuads", false, "if true, draw the quads in the topology", "Visualization"};
-  Field<std::string> draw_color_quads{this, "drawColorQuads", "0 0.4 0.4 1", "RGB code color used to draw quads.",
-                                      "Visualization"};
-
+  Field<bool> show_quad_indices{this, "showQuadIndices", false, "draw quad indices (viewer)", "Visualization"};
+  Field<bool> draw_quads{this, "drawQuads", false, "draw the quads (viewer)", "Visualization"};
+  Field<std::string> draw_color_quads{this, "drawColorQuads", "0 0.4 0.4 1", "quad colour (viewer)", "Visualization"};
 };
 
 }  // namespace sinew

@@ -14,26 +14,18 @@ class SparseGridTopology final : public MeshTopology {
  public:
   enum class CellType { outside, inside, boundary };
 
-  Field<bool> fill_weighted{this, "fillWeighted", true,
-                            "Is quantity of matter inside a cell taken into account? (.5 for boundary, 1 for inside)",
-                            "Grid"};
-  Field<bool> only_inside_cells{this, "onlyInsideCells", false, "Select only inside cells (exclude boundary cells)",
-                                "Grid"};
+  Field<bool> fill_weighted{this, "fillWeighted", true, "weight cells by fill (0.5 boundary, 1 interior)", "Grid"};
+  Field<bool> only_inside_cells{this, "onlyInsideCells", false, "keep interior cells only", "Grid"};
   Field<VecNi<3>> n{this, "n", VecNi<3>(2, 2, 2), "grid resolution", "Grid"};
-  Field<Vec3> min{this, "min", Vec3::Zero(), "Min", "Grid"};
-  Field<Vec3> max{this, "max", Vec3::Zero(), "Max", "Grid"};
-  Field<double> cell_width{this, "cellWidth", 0.0, "if > 0 : dimension of each cell in the created grid", "Grid"};
+  Field<Vec3> min{this, "min", Vec3::Zero(), "lower corner of the box", "Grid"};
+  Field<Vec3> max{this, "max", Vec3::Zero(), "upper corner of the box", "Grid"};
+  Field<double> cell_width{this, "cellWidth", 0.0, "if > 0, cell size; n is derived from it", "Grid"};
   Field<int> nb_virtual_finer_levels{this, "nbVirtualFinerLevels", 0,
-                                     "create virtual (not in the animation tree) finer sparse grids in order to "
-                                     "dispose of finest information",
-                                     "Grid"};
-  Field<VecNi<3>> data_resolution{this, "dataResolution", VecNi<3>(0, 0, 0), "Dimension of the voxel File", "Grid"};
-  Field<Vec3> voxel_size{this, "voxelSize", Vec3::Ones(), "Dimension of one voxel", "Grid"};
-  Field<unsigned> marching_cube_step{this, "marchingCubeStep", 1u, "Step of the Marching Cube algorithm", "Grid"};
-  Field<unsigned> convolution_size{this, "convolutionSize", 0u,
-                                   "Dimension of the convolution kernel to smooth the voxels. 0 if no smoothing is "
-                                   "required.",
-                                   "Grid"};
+                                     "number of finer hidden grid levels used to compute the coarse cells", "Grid"};
+  Field<VecNi<3>> data_resolution{this, "dataResolution", VecNi<3>(0, 0, 0), "voxel file resolution", "Grid"};
+  Field<Vec3> voxel_size{this, "voxelSize", Vec3::Ones(), "voxel size", "Grid"};
+  Field<unsigned> marching_cube_step{this, "marchingCubeStep", 1u, "marching-cubes step", "Grid"};
+  Field<unsigned> convolution_size{this, "convolutionSize", 0u, "voxel smoothing kernel size (0: none)", "Grid"};
 
   void init() override;
 

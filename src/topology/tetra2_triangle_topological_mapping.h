@@ -10,15 +10,11 @@ namespace sinew {
 
 class Tetra2TriangleTopologicalMapping final : public TopologicalMapping {
  public:
-  Link<TriangleSetTopologyModifier> modifier{this, "modifier", "Optional link to a topology modifier"};
-  Field<bool> flip_normals{this, "flipNormals", false,
-                           "Flip Normal ? (Inverse point order when creating triangle)", "Mapping"};
-  Field<bool> no_new_triangles{this, "noNewTriangles", false, "If true no new triangles are being created",
-                               "Mapping"};
+  Link<TriangleSetTopologyModifier> modifier{this, "modifier", "topology modifier of the output (optional)"};
+  Field<bool> flip_normals{this, "flipNormals", false, "reverse the vertex order of the created faces", "Mapping"};
+  Field<bool> no_new_triangles{this, "noNewTriangles", false, "do not add triangles on topology changes", "Mapping"};
   Field<bool> no_initial_triangles{this, "noInitialTriangles", false,
-                                   "If true the list of initial triangles is initially empty. Only additional "
-                                   "triangles will be added in the list",
-                                   "Mapping"};
+                                   "start with no triangles; only triangles created later are mapped", "Mapping"};
   void init() override;
 };
 

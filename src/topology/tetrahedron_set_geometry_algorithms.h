@@ -11,16 +11,13 @@ class MeshContainer;
 
 class TetrahedronSetGeometryAlgorithms : public TriangleSetGeometryAlgorithms {
  public:
-  Field<bool> show_tetrahedra_indices{this, "showTetrahedraIndices", false, "Debug : view Tetrahedrons indices",
+  Field<bool> show_tetrahedra_indices{this, "showTetrahedraIndices", false, "draw tetrahedron indices (viewer)",
                                       "Visualization"};
-  Field<bool> draw_tetrahedra{this, "drawTetrahedra", false, "if true, draw the tetrahedra in the topology",
-                              "Visualization"};
+  Field<bool> draw_tetrahedra{this, "drawTetrahedra", false, "draw the tetrahedra (viewer)", "Visualization"};
   Field<float> draw_scale_tetrahedra{this, "drawScaleTetrahedra", 1.0f,
-                                     "Scale of the terahedra (between 0 and 1; if <1.0, it produces gaps between the tetrahedra)",
-                                     "Visualization"};
-  Field<std::string> draw_color_tetrahedra{this, "drawColorTetrahedra", "1 1 0 1",
-                                           "RGBA code color used to draw tetrahedra.", "Visualization"};
-
+                                     "shrink factor of drawn tetrahedra in [0, 1] (viewer)", "Visualization"};
+  Field<std::string> draw_color_tetrahedra{this, "drawColorTetrahedra", "1 1 0 1", "tetrahedron colour (viewer)",
+                                           "Visualization"};
 };
 
 }  // namespace sinew

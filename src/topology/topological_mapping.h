@@ -17,8 +17,8 @@ const char* element_type_name(ElementType t);
 
 class TopologicalMapping : public Component {
  public:
-  Link<MeshTopologyBase> input{this, "input", "Input topology to map"};
-  Link<MeshContainer> output{this, "output", "Output topology to map"};
+  Link<MeshTopologyBase> input{this, "input", "source topology"};
+  Link<MeshContainer> output{this, "output", "target topology"};
 
  protected:
   // Common checks: both links resolved; with `check_types`, the input and

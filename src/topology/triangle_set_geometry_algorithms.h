@@ -11,21 +11,17 @@ class MeshContainer;
 
 class TriangleSetGeometryAlgorithms : public EdgeSetGeometryAlgorithms {
  public:
-  Field<bool> show_triangle_indices{this, "showTriangleIndices", false, "Debug : view Triangle indices",
+  Field<bool> show_triangle_indices{this, "showTriangleIndices", false, "draw triangle indices (viewer)",
                                     "Visualization"};
-  Field<bool> draw_triangles{this, "drawTriangles", false, "if true, draw the triangles in the topology",
-                             "Visualization"};
-  Field<std::string> draw_color_triangles{this, "drawColorTriangles", "0.3 0.5 0.8 1",
-                                          "RGBA code color used to draw triangles", "Visualization"};
-  Field<bool> draw_normals{this, "drawNormals", false, "if true, draw the triangles in the topology",
-                           "Visualization"};
-  Field<double> draw_normal_length{this, "drawNormalLength", 10.0, "Fiber length visualisation.", "Visualization"};
+  Field<bool> draw_triangles{this, "drawTriangles", false, "draw the triangles (viewer)", "Visualization"};
+  Field<std::string> draw_color_triangles{this, "drawColorTriangles", "0.3 0.5 0.8 1", "triangle colour (viewer)",
+                                          "Visualization"};
+  Field<bool> draw_normals{this, "drawNormals", false, "draw the triangle normals (viewer)", "Visualization"};
+  Field<double> draw_normal_length{this, "drawNormalLength", 10.0, "length of drawn normals (viewer)", "Visualization"};
   Field<bool> recompute_triangles_orientation{this, "recomputeTrianglesOrientation", false,
-                                              "if true, will recompute triangles orientation according to normals",
-                                              "Topology"};
+                                              "reorient the triangles consistently at init", "Topology"};
   Field<bool> flip_normals{this, "flipNormals", false,
-                           "if true, will flip normal of the first triangle used to recompute triangle orientation.",
-                           "Topology"};
+                           "flip the reference triangle used by recomputeTrianglesOrientation", "Topology"};
 
   void init() override;
 };

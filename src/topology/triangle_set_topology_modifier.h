@@ -11,7 +11,7 @@ class MeshContainer;
 
 class TriangleSetTopologyModifier : public EdgeSetTopologyModifier {
  public:
-  Field<std::vector<unsigned>> list_out{this, "list_Out", {}, "triangles with at least one null values.", "Topology"};
+  Field<std::vector<unsigned>> list_out{this, "list_Out", {}, "degenerate triangles found (output)", "Topology"};
 
  protected:
   bool accepts(const Component& c) const override;

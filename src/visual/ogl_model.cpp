@@ -18,8 +18,8 @@ FlatVec empty3() {
 }  // namespace
 
 OglModel::OglModel()
-    : position(this, "position", empty3(), "Vertices coordinates", "Vector"),
-      rest_position(this, "restPosition", empty3(), "Vertices rest coordinates", "Vector") {
+    : position(this, "position", empty3(), "vertex positions", "Vector"),
+      rest_position(this, "restPosition", empty3(), "vertex rest positions", "Vector") {
   filename.add_alias("fileMesh");
   filename.set_file(true);
   edges.set_autolink(false);  // SOFA: edges are not linked by src=

@@ -24,88 +24,65 @@ class OglModel : public VisualState {
 
   Field<FlatVec> position;
   Field<FlatVec> rest_position;
-  Field<std::vector<Vec3>> normal{this, "normal", {}, "Normals of the model", "Vector"};
+  Field<std::vector<Vec3>> normal{this, "normal", {}, "vertex normals", "Vector"};
   Field<bool> init_rest_positions{this, "initRestPositions", false,
-                                  "True if rest positions must be initialized with initial positions", "Visual"};
-  Field<bool> use_normals{this, "useNormals", true, "True if normal smoothing groups should be read from file",
-                          "Visual"};
-  Field<bool> update_normals{this, "updateNormals", true, "True if normals should be updated at each iteration",
-                             "Visual"};
-  Field<bool> compute_tangents{this, "computeTangents", false, "True if tangents should be computed at startup",
-                               "Visual"};
-  Field<bool> update_tangents{this, "updateTangents", true, "True if tangents should be updated at each iteration",
-                              "Visual"};
+                                  "copy the initial positions into the rest positions", "Visual"};
+  Field<bool> use_normals{this, "useNormals", true, "read the smoothing groups of the file", "Visual"};
+  Field<bool> update_normals{this, "updateNormals", true, "recompute the normals every step", "Visual"};
+  Field<bool> compute_tangents{this, "computeTangents", false, "compute tangents at init", "Visual"};
+  Field<bool> update_tangents{this, "updateTangents", true, "recompute the tangents every step", "Visual"};
   Field<bool> compute_texture_coordinates{this, "computeTextureCoordinates", false,
-                                          "True if texture coordinates should be computed at startup, using UV "
-                                          "sphere projection",
-                                          "Visual"};
-  Field<bool> handle_dynamic_topology{this, "handleDynamicTopology", true,
-                                      "True if topological changes should be handled", "Visual"};
+                                          "generate texture coordinates at init by spherical projection", "Visual"};
+  Field<bool> handle_dynamic_topology{this, "handleDynamicTopology", true, "follow topology changes", "Visual"};
   Field<bool> fix_merged_uv_seams{this, "fixMergedUVSeams", true,
-                                  "True if UV seams should be handled even when duplicate UVs are merged", "Visual"};
-  Field<bool> keep_lines{this, "keepLines", false, "keep and draw lines (false by default)", "Visual"};
-  Field<std::vector<Vec3>> vertices{this, "vertices", {},
-                                    "vertices of the model (only if vertices have multiple normals/texcoords, "
-                                    "otherwise positions are used)",
-                                    "Vector"};
-  Field<std::vector<Vec2>> texcoords{this, "texcoords", {}, "coordinates of the texture", "Vector"};
-  Field<std::vector<Vec3>> tangents{this, "tangents", {}, "tangents for normal mapping", "Vector"};
-  Field<std::vector<Vec3>> bitangents{this, "bitangents", {}, "tangents for normal mapping", "Vector"};
-  Field<std::vector<Edge>> edges{this, "edges", {}, "edges of the model", "Vector"};
-  Field<std::vector<Triangle>> triangles{this, "triangles", {}, "triangles of the model", "Vector"};
-  Field<std::vector<Quad>> quads{this, "quads", {}, "quads of the model", "Vector"};
-  Field<std::vector<unsigned>> vert_pos_idx{this, "vertPosIdx", {},
-                                            "If vertices have multiple normals/texcoords stores vertices position "
-                                            "indices",
-                                            "Vector"};
-  Field<std::vector<unsigned>> vert_norm_idx{this, "vertNormIdx", {},
-                                             "If vertices have multiple normals/texcoords stores vertices normal "
-                                             "indices",
-                                             "Vector"};
-  Field<std::string> filename{this, "filename", "", " Path to an ogl model", "Visual"};
-  Field<std::string> texturename{this, "texturename", "", "Full path of the texture file", "Visual"};
-  Field<Vec3> translation{this, "translation", Vec3::Zero(), "Initial Translation of the object", "Transformation"};
-  Field<Vec3> rotation{this, "rotation", Vec3::Zero(), "Initial Rotation of the object", "Transformation"};
-  Field<Vec3> scale3d{this, "scale3d", Vec3::Ones(), "Initial Scale of the object", "Transformation"};
-  Field<Vec2> scale_tex{this, "scaleTex", Vec2(1, 1), "Scale of the texture", "Visual"};
-  Field<Vec2> translation_tex{this, "translationTex", Vec2(0, 0), "Translation of the texture", "Visual"};
-  Field<std::string> material{this, "material", "", "Material", "Visual"};
-  Field<bool> put_only_tex_coords{this, "putOnlyTexCoords", false,
-                                  "Give Texture Coordinates without the texture binding", "Visual"};
-  Field<bool> srgb_texturing{this, "srgbTexturing", false,
-                             "When sRGB rendering is enabled, is the texture in sRGB colorspace?", "Visual"};
-  Field<std::string> materials{this, "materials", "", "List of materials", "Visual"};
-  Field<std::string> groups{this, "groups", "", "Groups of triangles and quads using a given material", "Visual"};
-  Link<MeshTopologyBase> topology{this, "topology", "link to the topology container"};
-  Field<bool> enable{this, "enable", true, "Display the object or not", "Visualization"};
+                                  "keep UV seams when merging duplicated texture coordinates", "Visual"};
+  Field<bool> keep_lines{this, "keepLines", false, "keep the line elements and draw them", "Visual"};
+  Field<std::vector<Vec3>> vertices{
+      this, "vertices", {}, "render vertices (when they differ from positions because of seams)", "Vector"};
+  Field<std::vector<Vec2>> texcoords{this, "texcoords", {}, "texture coordinates per vertex", "Vector"};
+  Field<std::vector<Vec3>> tangents{this, "tangents", {}, "tangent vectors (normal mapping)", "Vector"};
+  Field<std::vector<Vec3>> bitangents{this, "bitangents", {}, "bitangent vectors (normal mapping)", "Vector"};
+  Field<std::vector<Edge>> edges{this, "edges", {}, "edges drawn", "Vector"};
+  Field<std::vector<Triangle>> triangles{this, "triangles", {}, "triangles drawn", "Vector"};
+  Field<std::vector<Quad>> quads{this, "quads", {}, "quads drawn", "Vector"};
+  Field<std::vector<unsigned>> vert_pos_idx{this, "vertPosIdx", {}, "position index of each render vertex", "Vector"};
+  Field<std::vector<unsigned>> vert_norm_idx{this, "vertNormIdx", {}, "normal index of each render vertex", "Vector"};
+  Field<std::string> filename{this, "filename", "", "mesh file", "Visual"};
+  Field<std::string> texturename{this, "texturename", "", "texture image file", "Visual"};
+  Field<Vec3> translation{this, "translation", Vec3::Zero(), "translation applied at load", "Transformation"};
+  Field<Vec3> rotation{this, "rotation", Vec3::Zero(), "rotation applied at load (Euler angles, degrees)",
+                       "Transformation"};
+  Field<Vec3> scale3d{this, "scale3d", Vec3::Ones(), "scale applied at load", "Transformation"};
+  Field<Vec2> scale_tex{this, "scaleTex", Vec2(1, 1), "texture coordinate scale", "Visual"};
+  Field<Vec2> translation_tex{this, "translationTex", Vec2(0, 0), "texture coordinate offset", "Visual"};
+  Field<std::string> material{this, "material", "", "default material", "Visual"};
+  Field<bool> put_only_tex_coords{this, "putOnlyTexCoords", false, "send texture coordinates without binding a texture",
+                                  "Visual"};
+  Field<bool> srgb_texturing{this, "srgbTexturing", false, "texture is in sRGB colour space", "Visual"};
+  Field<std::string> materials{this, "materials", "", "materials of the model", "Visual"};
+  Field<std::string> groups{this, "groups", "", "face groups, one per material", "Visual"};
+  Link<MeshTopologyBase> topology{this, "topology", "topology used by this component (default: the node's)"};
+  Field<bool> enable{this, "enable", true, "draw this model", "Visualization"};
   // OglModel (OpenGL options, viewer only).
-  Field<bool> blend_translucency{this, "blendTranslucency", true, "Blend transparent parts", "Visualization"};
-  Field<bool> premultiplied_alpha{this, "premultipliedAlpha", false, "is alpha premultiplied ?", "Visualization"};
-  Field<bool> write_z_transparent{this, "writeZTransparent", false, "Write into Z Buffer for Transparent Object",
+  Field<bool> blend_translucency{this, "blendTranslucency", true, "blend translucent faces", "Visualization"};
+  Field<bool> premultiplied_alpha{this, "premultipliedAlpha", false, "colours use premultiplied alpha",
                                   "Visualization"};
-  Field<bool> alpha_blend{this, "alphaBlend", false, "Enable alpha blending", "Visualization"};
-  Field<bool> depth_test{this, "depthTest", true, "Enable depth testing", "Visualization"};
-  Field<int> cull_face{this, "cullFace", 0, "Face culling (0 = no culling, 1 = cull back faces, 2 = cull front faces)",
-                       "Visualization"};
-  Field<double> line_width{this, "lineWidth", 1.0, "Line width (set if != 1, only for lines rendering)",
-                           "Visualization"};
-  Field<double> point_size{this, "pointSize", 1.0, "Point size (set if != 1, only for points rendering)",
-                           "Visualization"};
-  Field<bool> line_smooth{this, "lineSmooth", false, "Enable smooth line rendering", "Visualization"};
-  Field<bool> point_smooth{this, "pointSmooth", false, "Enable smooth point rendering", "Visualization"};
-  Field<bool> is_enabled{this, "isEnabled", true, "Activate/deactive the component.", "Visualization"};
+  Field<bool> write_z_transparent{this, "writeZTransparent", false, "write depth for translucent faces",
+                                  "Visualization"};
+  Field<bool> alpha_blend{this, "alphaBlend", false, "alpha blending", "Visualization"};
+  Field<bool> depth_test{this, "depthTest", true, "depth test", "Visualization"};
+  Field<int> cull_face{this, "cullFace", 0, "culling: 0 none, 1 back faces, 2 front faces", "Visualization"};
+  Field<double> line_width{this, "lineWidth", 1.0, "line width in pixels", "Visualization"};
+  Field<double> point_size{this, "pointSize", 1.0, "point size in pixels", "Visualization"};
+  Field<bool> line_smooth{this, "lineSmooth", false, "antialiased lines", "Visualization"};
+  Field<bool> point_smooth{this, "pointSmooth", false, "antialiased points", "Visualization"};
+  Field<bool> is_enabled{this, "isEnabled", true, "enable this component", "Visualization"};
   Field<std::string> primitive_type{this, "primitiveType", "DEFAULT",
-                                    "Select types of primitives to send (DEFAULT, LINES_ADJACENCY, PATCHES, POINTS)",
+                                    "primitive type sent to the GPU (DEFAULT, LINES_ADJACENCY, PATCHES, POINTS)",
                                     "Visualization"};
-  Field<std::string> blend_equation{this, "blendEquation", "GL_FUNC_ADD",
-                                    "if alpha blending is enabled this specifies how source and destination colors "
-                                    "are combined",
-                                    "Visualization"};
-  Field<std::string> source_factor{this, "sfactor", "GL_SRC_ALPHA",
-                                   "if alpha blending is enabled, how the source blending factors are computed",
-                                   "Visualization"};
-  Field<std::string> dest_factor{this, "dfactor", "GL_ONE_MINUS_SRC_ALPHA",
-                                 "if alpha blending is enabled, how the destination blending factors are computed",
+  Field<std::string> blend_equation{this, "blendEquation", "GL_FUNC_ADD", "blend equation", "Visualization"};
+  Field<std::string> source_factor{this, "sfactor", "GL_SRC_ALPHA", "source blend factor", "Visualization"};
+  Field<std::string> dest_factor{this, "dfactor", "GL_ONE_MINUS_SRC_ALPHA", "destination blend factor",
                                  "Visualization"};
 
   // Pseudo-attribute `color` (SOFA's setColor): kept as written.

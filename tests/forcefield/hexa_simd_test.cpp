@@ -85,7 +85,9 @@ void check(const Grid& g, HM method, int threads, bool update_stiffness, bool ex
       for (auto& d : dx) d = Vec3(u(rng), u(rng), u(rng));
       std::vector<Vec3> got(g.x0.size(), Vec3(-1, 0.5, 0)), want = got;
       fem.add_dforce(dx, got, kfactor);
-      if (!update_stiffness) EXPECT_EQ(fem.shares_stiffness(), expect_shared);
+      if (!update_stiffness) {
+        EXPECT_EQ(fem.shares_stiffness(), expect_shared);
+      }
       reference_dforce(fem, dx, want, kfactor);
       for (std::size_t i = 0; i < got.size(); ++i)
         for (int c = 0; c < 3; ++c)
