@@ -167,7 +167,7 @@ bool SystemAssembler::chain(MechanicalOps& ops, const MechanicalState* s, std::v
   out.clear();
   if (!s) return false;
   const std::size_t ns = s->size() * static_cast<std::size_t>(s->info().deriv_width);
-  if (const StateBlock* blk = find_block(s)) {
+  if (find_block(s)) {
     RowSparse I(static_cast<int>(ns), static_cast<int>(ns));
     I.setIdentity();
     out.push_back({s, std::move(I)});
