@@ -1,5 +1,7 @@
 #include "mass/mesh_geometry.h"
 
+#include "core/node.h"
+
 namespace sinew::meshgeo {
 
 namespace {
@@ -22,6 +24,26 @@ std::size_t max_index_plus_one(const MeshTopologyBase& t, MassElement k) {
     case MassElement::none: return 0;
   }
   return 0;
+}
+
+bool bind_mesh_mass(Mass& mass, Link<MeshTopologyBase>& topology, Link<MechanicalState>& geometry_state) {
+  auto fail = [&](const std::string& why) {
+    mass.msg_error(why);
+    mass.set_state(ComponentState::invalid);
+    return false;
+  };
+  const MechanicalState& s = *mass.mstate;
+  if (s.state_type() != StateType::vec1 && s.state_type() != StateType::vec2 && s.state_type() != StateType::vec3)
+    return fail(std::string("template ") + s.info().name + " is not supported (Vec1d, Vec2d, Vec3d only)");
+  if (!topology) topology.set(mass.node()->get_mesh_topology_link());
+  if (!topology) return fail("no topology found");
+  if (!geometry_state) {
+    Node* tn = topology->node() ? topology->node() : mass.node();
+    geometry_state.set(tn->get_mechanical_state());
+  }
+  if (!geometry_state || geometry_state->state_type() != s.state_type())
+    return fail("no state compatible with the mass was found for the topology's geometry");
+  return true;
 }
 
 }  // namespace sinew::meshgeo

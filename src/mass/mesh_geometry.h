@@ -82,4 +82,10 @@ inline MassElement mass_element(const MeshTopologyBase& t) {
 // Largest point index used by the elements of kind k (+1), to check them against a state size.
 std::size_t max_index_plus_one(const MeshTopologyBase& t, MassElement k);
 
+// Shared init of the mesh-based masses: Vec1d/2d/3d state, topology (link,
+// else the node's last one) and the state holding the topology's geometry
+// (link, else the state of the topology's node). Reports and returns false
+// (component invalid) when one is missing.
+bool bind_mesh_mass(Mass& mass, Link<MeshTopologyBase>& topology, Link<MechanicalState>& geometry_state);
+
 }  // namespace sinew::meshgeo

@@ -84,26 +84,7 @@ void MeshMatrixMass::init() {
   ForceField::init();
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
-  if (s.state_type() != StateType::vec1 && s.state_type() != StateType::vec2 && s.state_type() != StateType::vec3) {
-    msg_error(std::string("template ") + s.info().name + " is not supported (Vec1d, Vec2d, Vec3d only)");
-    state_ = ComponentState::invalid;
-    return;
-  }
-  if (!topology) topology.set(node()->get_mesh_topology_link());
-  if (!topology) {
-    msg_error("no topology found");
-    state_ = ComponentState::invalid;
-    return;
-  }
-  if (!geometry_state) {
-    Node* tn = topology->node() ? topology->node() : node();
-    geometry_state.set(tn->get_mechanical_state());
-  }
-  if (!geometry_state || geometry_state->state_type() != s.state_type()) {
-    msg_error("no state compatible with the mass was found for the topology's geometry");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  if (!meshgeo::bind_mesh_mass(*this, topology, geometry_state)) return;
   const MeshTopologyBase& t = *topology;
   const MassElement k = meshgeo::mass_element(t);
   if (k == MassElement::none) {
