@@ -163,11 +163,13 @@ bool BeamLinearMapping::jacobian(std::vector<JacobianEntry>& out) {
       const double w = side == 0 ? 1 - h : h;
       const double* r = side == 0 ? &r0_[i * 3] : &r1_[i * 3];
       const std::uint32_t col = static_cast<std::uint32_t>((j + side) * 6);
+      // Off-diagonal entries are emitted even when zero: the pattern must not
+      // depend on the values (assembled systems reuse it from step to step).
       const double m[3][3] = {{0, r[2], -r[1]}, {-r[2], 0, r[0]}, {r[1], -r[0], 0}};  // ω ↦ ω × r
       for (std::uint32_t a = 0; a < 3; ++a) {
         out.push_back({0, row + a, col + a, w});
         for (std::uint32_t b = 0; b < 3; ++b)
-          if (m[a][b] != 0.0) out.push_back({0, row + a, col + 3 + b, m[a][b] * w});
+          if (a != b) out.push_back({0, row + a, col + 3 + b, m[a][b] * w});
       }
     }
   }

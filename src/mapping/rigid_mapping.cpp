@@ -217,11 +217,13 @@ bool RigidMapping::jacobian(std::vector<JacobianEntry>& out) {
     const std::uint32_t row = static_cast<std::uint32_t>(i * dim_);
     if (rigid3()) {
       const double* p = &rotated_[i * 3];
+      // Off-diagonal entries are emitted even when zero: the pattern must not
+      // depend on the values (assembled systems reuse it from step to step).
       const double m[3][3] = {{0, p[2], -p[1]}, {-p[2], 0, p[0]}, {p[1], -p[0], 0}};  // ω ↦ ω × p
       for (std::uint32_t a = 0; a < 3; ++a) {
         out.push_back({0, row + a, col + a, 1.0});
         for (std::uint32_t b = 0; b < 3; ++b)
-          if (m[a][b] != 0.0) out.push_back({0, row + a, col + 3 + b, m[a][b]});
+          if (a != b) out.push_back({0, row + a, col + 3 + b, m[a][b]});
       }
     } else {
       const double* p = &rotated_[i * 2];

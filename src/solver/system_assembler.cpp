@@ -1,7 +1,6 @@
 #include "solver/system_assembler.h"
 
 #include <algorithm>
-#include <map>
 
 #include "core/component.h"
 
@@ -162,86 +161,13 @@ void SystemAssembler::scatter_triplets() {
   ++pattern_builds_;
 }
 
-bool SystemAssembler::chain(MechanicalOps& ops, const MechanicalState* s, std::vector<TopJacobian>& out,
-                            const Component& owner, int depth) {
-  out.clear();
-  if (!s) return false;
-  const std::size_t ns = s->size() * static_cast<std::size_t>(s->info().deriv_width);
-  if (find_block(s)) {
-    RowSparse I(static_cast<int>(ns), static_cast<int>(ns));
-    I.setIdentity();
-    out.push_back({s, std::move(I)});
-    return true;
-  }
-  if (depth > 64) return false;
-  Mapping* mapping = nullptr;
-  for (Mapping* mp : ops.mappings())
-    if (mp->output() == s) mapping = mp;
-  if (!mapping) return false;
-  std::vector<JacobianEntry> entries;
-  if (!mapping->jacobian(entries)) {
-    report_once(owner, mapping,
-                mapping->describe() + " provides no Jacobian; contributions on its output are not assembled");
-    return false;
-  }
-  const auto inputs = mapping->inputs();
-  for (std::size_t k = 0; k < inputs.size(); ++k) {
-    const MechanicalState* in = inputs[k];
-    if (!in) continue;
-    const std::size_t nin = in->size() * static_cast<std::size_t>(in->info().deriv_width);
-    std::vector<Eigen::Triplet<double, int>> tr;
-    for (const JacobianEntry& e : entries)
-      if (e.input == k && e.row < ns && e.col < nin)
-        tr.emplace_back(static_cast<int>(e.row), static_cast<int>(e.col), e.value);
-    RowSparse Jk(static_cast<int>(ns), static_cast<int>(nin));
-    Jk.setFromTriplets(tr.begin(), tr.end());
-    std::vector<TopJacobian> up;
-    if (!chain(ops, in, up, owner, depth + 1)) return false;
-    for (TopJacobian& t : up) {
-      RowSparse J = Jk * t.J;
-      auto it = std::find_if(out.begin(), out.end(), [&](const TopJacobian& o) { return o.top == t.top; });
-      if (it == out.end()) out.push_back({t.top, std::move(J)});
-      else it->J += J;
-    }
-  }
-  return true;
-}
-
 void SystemAssembler::assemble_mapped(MechanicalOps& ops, const Component& owner) {
-  const auto& t = sink_.triplets();
-  const std::size_t count = t.size();  // entries appended below are not re-read
-  for (std::size_t p = 0; p < mapped_pairs_.size(); ++p) {
-    const int target = 1 + static_cast<int>(p);
-    const MechanicalState* a = mapped_pairs_[p].first;
-    const MechanicalState* b = mapped_pairs_[p].second;
-    if (!a || !b) continue;
-    const int na = static_cast<int>(a->size() * a->info().deriv_width);
-    const int nb = static_cast<int>(b->size() * b->info().deriv_width);
-    std::vector<Eigen::Triplet<double, int>> tr;
-    for (std::size_t i = 0; i < count; ++i) {
-      const auto& e = sink_.triplets()[i];
-      if (e.target == target && static_cast<int>(e.row) < na && static_cast<int>(e.col) < nb)
-        tr.emplace_back(static_cast<int>(e.row), static_cast<int>(e.col), e.value);
-    }
-    RowSparse K(na, nb);
-    K.setFromTriplets(tr.begin(), tr.end());  // duplicates summed
-    std::vector<TopJacobian> ja, jb;
-    if (!chain(ops, a, ja, owner) || !chain(ops, b, jb, owner)) continue;
-    for (const TopJacobian& A : ja) {
-      const StateBlock* oa = find_block(A.top);
-      for (const TopJacobian& B : jb) {
-        const StateBlock* ob = find_block(B.top);
-        if (!oa || !ob) continue;
-        const RowSparse KJ = K * B.J;
-        const RowSparse JtKJ = RowSparse(A.J.transpose()) * KJ;
-        for (int r = 0; r < JtKJ.outerSize(); ++r)
-          for (RowSparse::InnerIterator it(JtKJ, r); it; ++it)
-            sink_.add_raw(0, static_cast<std::uint32_t>(oa->offset + it.row()),
-                          static_cast<std::uint32_t>(ob->offset + it.col()), it.value());
-      }
-    }
-  }
-  (void)t;
+  mapped_.project(ops, mapped_pairs_, sink_, [this](const MechanicalState* s) -> std::ptrdiff_t {
+    const StateBlock* b = find_block(s);
+    return b ? static_cast<std::ptrdiff_t>(b->offset) : -1;
+  });
+  for (Mapping* m : mapped_.missing())
+    report_once(owner, m, m->describe() + " provides no Jacobian; contributions on its output are not assembled");
 }
 
 void SystemAssembler::gather(int id, Eigen::VectorXd& out) const {

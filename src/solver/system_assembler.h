@@ -14,13 +14,13 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/SparseCore>
 #include <set>
 #include <vector>
 
 #include "core/matrix_sink.h"
 #include "core/mechanical_ops.h"
 #include "math/block_csr.h"
+#include "solver/mapped_assembly.h"
 
 namespace sinew {
 
@@ -46,8 +46,10 @@ class SystemAssembler final : public MatrixSink::Layout {
   const BlockCsrMatrix& matrix() const { return matrix_; }
   std::size_t size() const { return n_; }
   const std::vector<StateBlock>& layout() const { return layout_; }
-  // Number of times the pattern was (re)built.
+  // Number of times the pattern of the global matrix, and of the mapped
+  // products, was (re)built.
   long pattern_builds() const { return pattern_builds_; }
+  long mapped_pattern_builds() const { return mapped_.pattern_builds(); }
 
   // Copies vector `id` of the independent states into `out` (resized to size()), and back.
   void gather(int id, Eigen::VectorXd& out) const;
@@ -56,15 +58,7 @@ class SystemAssembler final : public MatrixSink::Layout {
   MatrixSink::Binding bind(const MechanicalState* rs, const MechanicalState* cs) override;
 
  private:
-  using RowSparse = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
-  struct TopJacobian {
-    const MechanicalState* top;
-    RowSparse J;  // rows: mapped state scalars, cols: top state scalars
-  };
   const StateBlock* find_block(const MechanicalState* s) const;
-  // J from the independent states to state s (false when a mapping has no Jacobian).
-  bool chain(MechanicalOps& ops, const MechanicalState* s, std::vector<TopJacobian>& out, const Component& owner,
-             int depth = 0);
   void assemble_mapped(MechanicalOps& ops, const Component& owner);
   void scatter_triplets();
   void report_once(const Component& owner, const void* who, const std::string& text);
@@ -75,7 +69,8 @@ class SystemAssembler final : public MatrixSink::Layout {
   std::size_t n_ = 0;
   BlockCsrMatrix matrix_;
   MatrixSink sink_;
-  std::vector<std::pair<const MechanicalState*, const MechanicalState*>> mapped_pairs_;
+  std::vector<MappedAssembly::Pair> mapped_pairs_;
+  MappedAssembly mapped_;
   // Recorded insertion sequence of the global target and its value slots.
   std::vector<std::uint64_t> keys_;
   std::vector<std::int64_t> slots_;
