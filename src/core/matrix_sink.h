@@ -7,15 +7,19 @@
 // Indices are scalar indices inside a state: dof·deriv_width + component.
 // Non-virtual and inline: called once per element block in hot loops.
 //
-// Two modes:
+// Modes:
 // * standalone (no layout): entries are kept with their states (entries()),
 //   for tests and tools;
-// * assembly (a Layout is bound by the assembler): each state pair is mapped
-//   once to a target matrix and offsets, and entries are recorded as
+// * recording (a Layout is bound by the assembler): each state pair is
+//   mapped once to a target matrix and offsets, and entries are recorded as
 //   (target, global row, global col, factor·value) triplets in a buffer that
-//   keeps its capacity, so a steady assembly does not allocate. The assembler
-//   scatters them into a fixed pattern through slots computed on the first
-//   assembly (solver/system_assembler.h).
+//   keeps its capacity. The assembler builds the pattern from them;
+// * replaying (steady assembly): entries of the global matrix (target 0) are
+//   checked against the recorded sequence of (row, col) keys and added
+//   straight into the matrix values through the recorded slots, with no
+//   intermediate buffer; entries of other targets (mapped states) are still
+//   recorded. A sequence that differs from the recording sets replay_ok()
+//   false and the assembler records again (solver/system_assembler.h).
 #pragma once
 
 #include <cstddef>
@@ -62,8 +66,10 @@ class MatrixSink {
       return;
     }
     if (rs != rs_ || cs != cs_) rebind(rs, cs);
-    triplets_.push_back({binding_.target, static_cast<std::uint32_t>(binding_.row_offset + r),
-                         static_cast<std::uint32_t>(binding_.col_offset + c), v * factor_});
+    const auto gr = static_cast<std::uint32_t>(binding_.row_offset + r);
+    const auto gc = static_cast<std::uint32_t>(binding_.col_offset + c);
+    if (replay_keys_ && binding_.target == 0) replay(gr, gc, v * factor_);
+    else triplets_.push_back({binding_.target, gr, gc, v * factor_});
   }
   // A 3×3 block whose top-left entry is at scalar indices (r, c).
   void add_block(const MechanicalState* rs, std::size_t r, const MechanicalState* cs, std::size_t c, const Mat3& b) {
@@ -83,13 +89,40 @@ class MatrixSink {
     layout_ = layout;
     rs_ = cs_ = nullptr;
     factor_ = 1.0;
+    replay_keys_ = nullptr;
     clear();
   }
+  // Replaying: target-0 entries must come as keys[i] = (row << 32) | col,
+  // i < count, and go to values[slots[i]] (skipped when slots[i] < 0).
+  void begin_replay(Layout* layout, const std::uint64_t* keys, const std::int64_t* slots, std::size_t count,
+                    double* values) {
+    begin(layout);
+    replay_keys_ = keys;
+    replay_slots_ = slots;
+    replay_count_ = count;
+    replay_values_ = values;
+    cursor_ = 0;
+    replay_ok_ = true;
+  }
+  // After a replay: every entry matched the recording, and all of it was met.
+  bool replay_ok() const { return replay_ok_ && cursor_ == replay_count_; }
   // Adds an entry already expressed in target indices (no factor applied).
-  void add_raw(int target, std::uint32_t r, std::uint32_t c, double v) { triplets_.push_back({target, r, c, v}); }
+  void add_raw(int target, std::uint32_t r, std::uint32_t c, double v) {
+    if (replay_keys_ && target == 0) replay(r, c, v);
+    else triplets_.push_back({target, r, c, v});
+  }
   const std::vector<Triplet>& triplets() const { return triplets_; }
 
  private:
+  void replay(std::uint32_t r, std::uint32_t c, double v) {
+    if (cursor_ < replay_count_ && replay_keys_[cursor_] == ((static_cast<std::uint64_t>(r) << 32) | c)) {
+      const std::int64_t s = replay_slots_[cursor_++];
+      if (s >= 0) replay_values_[s] += v;
+    } else {
+      replay_ok_ = false;
+      cursor_ = replay_count_;  // nothing further matches: the assembler records again
+    }
+  }
   void rebind(const MechanicalState* rs, const MechanicalState* cs) {
     rs_ = rs;
     cs_ = cs;
@@ -103,6 +136,11 @@ class MatrixSink {
   const MechanicalState* cs_ = nullptr;
   Binding binding_;
   std::vector<Triplet> triplets_;
+  const std::uint64_t* replay_keys_ = nullptr;  // non-null while replaying
+  const std::int64_t* replay_slots_ = nullptr;
+  double* replay_values_ = nullptr;
+  std::size_t replay_count_ = 0, cursor_ = 0;
+  bool replay_ok_ = false;
 };
 
 // One entry of a mapping Jacobian: ∂out[row] / ∂in_k[col] where in_k is

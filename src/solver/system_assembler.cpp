@@ -65,9 +65,39 @@ void SystemAssembler::report_once(const Component& owner, const void* who, const
 void SystemAssembler::assemble(MechanicalOps& ops, double m, double b, double k, const Options& o,
                                const Component& owner) {
   update_layout(ops);
-  sink_.begin(this);
-  mapped_pairs_.clear();
+  // Steady state: replay the recorded sequence straight into the values.
+  if (pattern_valid_) {
+    matrix_.set_zero();
+    sink_.begin_replay(this, keys_.data(), slots_.data(), keys_.size(), matrix_.values().data());
+    add_contributions(ops, m, b, k, o, owner);
+    if (!sink_.replay_ok()) pattern_valid_ = false;
+  }
+  // First assembly, or the sequence of entries changed: record, new pattern.
+  if (!pattern_valid_) {
+    sink_.begin(this);
+    add_contributions(ops, m, b, k, o, owner);
+    build_pattern();
+  }
 
+  if (o.projective)
+    for (ProjectiveConstraint* c : ops.projective_constraints()) {
+      const StateBlock* blk = find_block(c->mstate.get());
+      if (!blk) continue;  // constraints on mapped states have no meaningful global position
+      dirichlet_.clear();
+      if (!c->dirichlet_indices(dirichlet_)) {
+        // As SOFA's default applyConstraint(ZeroDirichletCondition): nothing applied, one warning.
+        if (reported_.insert(c).second)
+          owner.msg_warning(c->describe() + " provides no Dirichlet indices; it is not applied on the assembled matrix");
+        continue;
+      }
+      for (std::size_t i : dirichlet_)
+        if (i < blk->size) matrix_.clear_row_col_set_diag(blk->offset + i, 1.0);
+    }
+}
+
+void SystemAssembler::add_contributions(MechanicalOps& ops, double m, double b, double k, const Options& o,
+                                        const Component& owner) {
+  mapped_pairs_.clear();
   const auto& ffs = ops.force_fields();
   if (o.stiffness)
     for (ForceField* ff : ffs) {
@@ -99,45 +129,13 @@ void SystemAssembler::assemble(MechanicalOps& ops, double m, double b, double k,
         report_once(owner, mp, mp->describe() + " cannot assemble its geometric stiffness; it is missing from the system");
     }
   if (o.mapped && !mapped_pairs_.empty()) assemble_mapped(ops, owner);
-
-  scatter_triplets();
-
-  if (o.projective)
-    for (ProjectiveConstraint* c : ops.projective_constraints()) {
-      const StateBlock* blk = find_block(c->mstate.get());
-      if (!blk) continue;  // constraints on mapped states have no meaningful global position
-      dirichlet_.clear();
-      if (!c->dirichlet_indices(dirichlet_)) {
-        // As SOFA's default applyConstraint(ZeroDirichletCondition): nothing applied, one warning.
-        if (reported_.insert(c).second)
-          owner.msg_warning(c->describe() + " provides no Dirichlet indices; it is not applied on the assembled matrix");
-        continue;
-      }
-      for (std::size_t i : dirichlet_)
-        if (i < blk->size) matrix_.clear_row_col_set_diag(blk->offset + i, 1.0);
-    }
 }
 
-void SystemAssembler::scatter_triplets() {
+// Builds the pattern from the recorded target-0 entries, keeps their key
+// sequence and slots for the replays, and adds their values.
+void SystemAssembler::build_pattern() {
   const auto& t = sink_.triplets();
   auto key_of = [](const MatrixSink::Triplet& e) { return (static_cast<std::uint64_t>(e.row) << 32) | e.col; };
-  auto& values = matrix_.values();
-  if (pattern_valid_) {
-    matrix_.set_zero();
-    std::size_t j = 0;
-    bool ok = true;
-    for (const auto& e : t) {
-      if (e.target != 0) continue;
-      if (j >= keys_.size() || keys_[j] != key_of(e)) {
-        ok = false;
-        break;
-      }
-      const std::int64_t s = slots_[j++];
-      if (s >= 0) values[s] += e.value;
-    }
-    if (ok && j == keys_.size()) return;
-  }
-  // First assembly, or the insertion sequence changed: new pattern.
   keys_.clear();
   for (const auto& e : t)
     if (e.target == 0 && e.row < n_ && e.col < n_) keys_.push_back(key_of(e));

@@ -10,7 +10,8 @@
 //   independent states as Jᵀ·(K·J), J the chained mapping Jacobians.
 // * Projective constraints: Dirichlet rows/columns cleared, diagonal set to 1.
 // The pattern is built on the first assembly (and whenever the sequence of
-// insertions changes); later assemblies refill the values in place.
+// insertions changes); later assemblies replay the recorded sequence of
+// entries straight into the values (MatrixSink replay mode).
 #pragma once
 
 #include <Eigen/Core>
@@ -60,7 +61,8 @@ class SystemAssembler final : public MatrixSink::Layout {
  private:
   const StateBlock* find_block(const MechanicalState* s) const;
   void assemble_mapped(MechanicalOps& ops, const Component& owner);
-  void scatter_triplets();
+  void add_contributions(MechanicalOps& ops, double m, double b, double k, const Options& o, const Component& owner);
+  void build_pattern();
   void report_once(const Component& owner, const void* who, const std::string& text);
 
   int bs_ = 1;

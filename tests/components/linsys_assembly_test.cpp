@@ -13,6 +13,7 @@
 #include "solver/constant_sparsity_pattern_system.h"
 #include "solver/matrix_linear_solver.h"
 #include "solver/matrix_linear_system.h"
+#include "forcefield/spring_force_field.h"
 #include "solver/sparse_ldl_solver.h"
 #include "test_scene.h"
 
@@ -128,6 +129,33 @@ TEST(LinsysAssembly, DirichletRowsAreIdentityAndPatternIsBuiltOnce) {
   }
   EXPECT_EQ(fixed, 16);
   EXPECT_LT((A - A.transpose()).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(LinsysAssembly, AChangedSequenceOfEntriesRebuildsThePattern) {
+  auto s = load(fembar("<SparseLDLSolver/>"));
+  ASSERT_TRUE(s.root);
+  Node& root = *s.root;
+  // A spring between two far points, added after the first assembly: its
+  // entries are not in the recorded sequence, the replay must notice.
+  auto springs = std::make_unique<SpringForceField>();
+  SpringForceField* sp = springs.get();
+  sp->name.set("late");
+  MechanicalOps ops0(root);
+  MatrixLinearSolver* solver = matrix_solver(root);
+  solver->build_system(ops0, 1, 0, -1);
+  EXPECT_EQ(solver->system()->assembler().pattern_builds(), 1);
+  solver->build_system(ops0, 1, 0, -1);
+  EXPECT_EQ(solver->system()->assembler().pattern_builds(), 1);  // replayed
+  sp->spring.set(std::vector<double>{100, 300, 1000, 0, 4});
+  root.add_object(std::move(springs));
+  sp->init();
+  animate(root, 0.0);  // the step's assembly meets the new entries (and the spring gets its stiffness)
+  EXPECT_EQ(solver->system()->assembler().pattern_builds(), 2);
+  MechanicalOps ops(root);
+  solver->build_system(ops, 1, 0, -1);
+  EXPECT_EQ(solver->system()->assembler().pattern_builds(), 2);  // replayed again
+  expect_assembled_equals_matrix_free(root, 1, 0, -1, 5);
+  EXPECT_NE(solver->system()->matrix().coeff(301, 902), 0.0);  // y–z coupling along the spring
 }
 
 // ---------------------------------------------------------------- whole steps

@@ -246,8 +246,9 @@ TEST(LinsysOrdering, NaturalIsIdentityAndOthersArePermutations) {
     std::vector<int> sorted = perm;
     std::sort(sorted.begin(), sorted.end());
     for (int i = 0; i < 40; ++i) EXPECT_EQ(sorted[i], i) << o;
-    if (std::string(o) == "Natural")
+    if (std::string(o) == "Natural") {
       for (int i = 0; i < 40; ++i) EXPECT_EQ(perm[i], i);
+    }
   }
 }
 
