@@ -14,10 +14,13 @@
 //  - other meshes (MeshTopology, loaders' meshes): tetrahedra and hexahedra,
 //    else triangles and quads, else edges (MeshMapper rules and summation order).
 // Coordinates are computed at init from the current (or, with
-// useRestPosition, rest) positions of input and output. J is constant: apply_j
-// uses the same weights, apply_jt scatters weight·f.
+// useRestPosition, rest) positions of input and output (barycentric_coords.h).
+// Whatever the mapper, the result is one table of vertices and weights per
+// output point (barycentric_table.h): J is constant, apply and apply_j gather
+// with it, apply_jt scatters weight·f.
 #pragma once
 
+#include "mapping/barycentric_coords.h"
 #include "mapping/mapping_base.h"
 
 namespace sinew {
@@ -47,14 +50,9 @@ class BarycentricMapping final : public MappingBase {
   bool init_regular_grid(const std::vector<double>& out);
   bool init_sparse_grid(const std::vector<double>& out);
   bool init_mesh(const std::vector<double>& out, const std::vector<double>& in, bool set_container);
-  void add_point(std::initializer_list<std::pair<unsigned, double>> terms);
-  void report_outside(const std::vector<std::size_t>& outside);
-  void report_degenerate(const char* what, const std::vector<std::size_t>& bad, std::size_t total);
+  bool report(const BaryReport& r, const char* element, std::size_t n_elements);
 
-  // Output point i = Σ_{k in [start_i, start_{i+1})} w_k · in[idx_k], summed in this order.
-  std::vector<std::uint32_t> start_{0};
-  std::vector<unsigned> idx_;
-  std::vector<double> w_;
+  BaryTable table_;
   std::string mapper_;
 };
 
