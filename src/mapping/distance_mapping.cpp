@@ -1,10 +1,10 @@
 #include "mapping/distance_mapping.h"
 
-#include <cmath>
-#include <limits>
+#include <algorithm>
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "mapping/edge_kernels.h"
 
 namespace sinew {
 
@@ -44,12 +44,8 @@ bool DistanceMapping::init_mapping() {
     rest.resize(edges_.size(), 0.0);
     if (!compute_distance.value()) {
       const std::vector<double>& x = in_coord(kPosition);
-      for (std::size_t e = 0; e < edges_.size(); ++e) {
-        const double* a = &x[edges_[e][0] * cw_];
-        const double* b = &x[edges_[e][1] * cw_];
-        const double d0 = a[0] - b[0], d1 = a[1] - b[1], d2 = a[2] - b[2];
-        rest[e] = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
-      }
+      for (std::size_t e = 0; e < edges_.size(); ++e)
+        rest[e] = edge::edge_length(&x[edges_[e][0] * cw_], &x[edges_[e][1] * cw_]);
     }
     rest_lengths.set(rest);
   }
@@ -64,25 +60,10 @@ void DistanceMapping::apply(int x) {
   const std::vector<double>& in = in_coord(x);
   out.resize(edges_.size());
   // Every apply (rest positions included, as in SOFA) refreshes the directions J uses.
-  static const double p = 1.0 / std::sqrt(3.0);
   for (std::size_t e = 0; e < edges_.size(); ++e) {
     const double* a = &in[edges_[e][0] * cw_];
     const double* b = &in[edges_[e][1] * cw_];
-    double* d = &dir_[e * 3];
-    d[0] = b[0] - a[0];
-    d[1] = b[1] - a[1];
-    d[2] = b[2] - a[2];
-    const double dist = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    out[e] = dist - rest_[e];
-    if (dist > std::numeric_limits<double>::epsilon()) {
-      invlen_[e] = 1 / dist;
-      d[0] *= invlen_[e];
-      d[1] *= invlen_[e];
-      d[2] *= invlen_[e];
-    } else {
-      invlen_[e] = 0;
-      d[0] = d[1] = d[2] = p;
-    }
+    out[e] = edge::unit_direction(a, b, &dir_[e * 3], invlen_[e]) - rest_[e];
   }
 }
 
@@ -93,18 +74,8 @@ void DistanceMapping::apply_j(int v, int role) {
   const std::vector<double>& in = in_deriv(v, role);
   out.resize(edges_.size());
   for (std::size_t e = 0; e < edges_.size(); ++e) {
-    const double* n = &dir_[e * 3];
     const unsigned i0 = edges_[e][0], i1 = edges_[e][1];
-    // Sparse row in increasing column order: the lower point index first.
-    double s = 0;
-    if (i1 < i0) {
-      for (int k = 0; k < 3; ++k) s += n[k] * in[i1 * dw_ + k];
-      for (int k = 0; k < 3; ++k) s += -n[k] * in[i0 * dw_ + k];
-    } else {
-      for (int k = 0; k < 3; ++k) s += -n[k] * in[i0 * dw_ + k];
-      for (int k = 0; k < 3; ++k) s += n[k] * in[i1 * dw_ + k];
-    }
-    out[e] = s;
+    out[e] = edge::row_dot(&dir_[e * 3], &in[i0 * dw_], &in[i1 * dw_], i1 < i0);
   }
 }
 
@@ -115,25 +86,9 @@ void DistanceMapping::apply_jt(int f, int role) {
   std::vector<double>& in = in_deriv(f, role);
   const std::size_t n = std::min(edges_.size(), out.size());
   for (std::size_t e = 0; e < n; ++e) {
-    const double* d = &dir_[e * 3];
-    const double fe = out[e];
-    const unsigned i0 = edges_[e][0], i1 = edges_[e][1];
-    for (int k = 0; k < 3; ++k) in[i0 * dw_ + k] += -d[k] * fe;
-    for (int k = 0; k < 3; ++k) in[i1 * dw_ + k] += d[k] * fe;
+    edge::add_end_force(&in[edges_[e][0] * dw_], -1.0, &dir_[e * 3], out[e]);
+    edge::add_end_force(&in[edges_[e][1] * dw_], 1.0, &dir_[e * 3], out[e]);
   }
-}
-
-bool DistanceMapping::gs_block(std::size_t e, const std::vector<double>& child_force, double scale,
-                               double b[3][3]) const {
-  const double lambda = child_force[e];
-  if (!(lambda < 0 || gs_ == 1)) return false;
-  const double* d = &dir_[e * 3];
-  for (int j = 0; j < 3; ++j)
-    for (int k = 0; k < 3; ++k) b[j][k] = 1.0 * (j == k) - d[j] * d[k];
-  const double s = lambda * invlen_[e] * scale;
-  for (int j = 0; j < 3; ++j)
-    for (int k = 0; k < 3; ++k) b[j][k] *= s;
-  return true;
 }
 
 void DistanceMapping::apply_djt(int df, int dx, double k) {
@@ -143,29 +98,16 @@ void DistanceMapping::apply_djt(int df, int dx, double k) {
   const std::vector<double>& d = in_deriv(dx, kDx);
   double b[3][3];
   for (std::size_t e = 0; e < edges_.size() && e < child_force.size(); ++e) {
-    if (!gs_block(e, child_force, k, b)) continue;
+    if (!edge::has_geometric_stiffness(gs_, child_force[e])) continue;
+    edge::distance_gs_block(&dir_[e * 3], child_force[e], invlen_[e], k, b);
     const unsigned i0 = edges_[e][0], i1 = edges_[e][1];
-    double u[3];
-    for (int c = 0; c < 3; ++c) u[c] = d[i1 * dw_ + c] - d[i0 * dw_ + c];
-    double r[3] = {0, 0, 0};
-    for (int j = 0; j < 3; ++j)
-      for (int c = 0; c < 3; ++c) r[j] += b[j][c] * u[c];
-    for (int j = 0; j < 3; ++j) {
-      f[i0 * dw_ + j] -= r[j];
-      f[i1 * dw_ + j] += r[j];
-    }
+    edge::add_block_product(b, &d[i0 * dw_], &d[i1 * dw_], &f[i0 * dw_], &f[i1 * dw_]);
   }
 }
 
 bool DistanceMapping::jacobian(std::vector<JacobianEntry>& out) {
-  for (std::size_t e = 0; e < edges_.size(); ++e) {
-    const double* d = &dir_[e * 3];
-    const auto row = static_cast<std::uint32_t>(e);
-    for (int k = 0; k < 3; ++k) {
-      out.push_back({0, row, static_cast<std::uint32_t>(edges_[e][0] * dw_ + k), -d[k]});
-      out.push_back({0, row, static_cast<std::uint32_t>(edges_[e][1] * dw_ + k), d[k]});
-    }
-  }
+  for (std::size_t e = 0; e < edges_.size(); ++e)
+    edge::append_edge_row(out, static_cast<std::uint32_t>(e), edges_[e][0] * dw_, edges_[e][1] * dw_, &dir_[e * 3]);
   return true;
 }
 
@@ -175,15 +117,9 @@ bool DistanceMapping::build_geometric_stiffness(MatrixSink& K) {
   const MechanicalState* s = in_[0];
   double b[3][3];
   for (std::size_t e = 0; e < edges_.size() && e < child_force.size(); ++e) {
-    if (!gs_block(e, child_force, 1.0, b)) continue;
-    const std::size_t i0 = edges_[e][0] * dw_, i1 = edges_[e][1] * dw_;
-    for (int j = 0; j < 3; ++j)
-      for (int c = 0; c < 3; ++c) {
-        K.add(s, i0 + j, s, i0 + c, b[j][c]);
-        K.add(s, i0 + j, s, i1 + c, -b[j][c]);
-        K.add(s, i1 + j, s, i0 + c, -b[j][c]);
-        K.add(s, i1 + j, s, i1 + c, b[j][c]);
-      }
+    if (!edge::has_geometric_stiffness(gs_, child_force[e])) continue;
+    edge::distance_gs_block(&dir_[e * 3], child_force[e], invlen_[e], 1.0, b);
+    edge::add_edge_block(K, s, edges_[e][0] * dw_, s, edges_[e][1] * dw_, b);
   }
   return true;
 }

@@ -43,9 +43,6 @@ class DistanceMapping final : public MappingBase {
   bool init_mapping() override;
 
  private:
-  // Geometric stiffness block of edge e (scaled by `scale`), or false when the edge has none.
-  bool gs_block(std::size_t e, const std::vector<double>& child_force, double scale, double b[3][3]) const;
-
   std::vector<Edge> edges_;
   std::vector<double> rest_;
   std::vector<double> dir_;      // 3 per edge

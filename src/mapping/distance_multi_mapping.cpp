@@ -1,10 +1,8 @@
 #include "mapping/distance_multi_mapping.h"
 
-#include <cmath>
-#include <limits>
-
 #include "core/node.h"
 #include "core/registry.h"
+#include "mapping/edge_kernels.h"
 
 namespace sinew {
 
@@ -67,8 +65,7 @@ bool DistanceMultiMapping::init_mapping() {
       }
       const double* a = &in_coord(kPosition, ends_[e][0].input)[ends_[e][0].point * cw_];
       const double* b = &in_coord(kPosition, ends_[e][1].input)[ends_[e][1].point * cw_];
-      const double d0 = a[0] - b[0], d1 = a[1] - b[1], d2 = a[2] - b[2];
-      rest.push_back(std::sqrt(d0 * d0 + d1 * d1 + d2 * d2));
+      rest.push_back(edge::edge_length(a, b));
     }
     rest_lengths.set(rest);
   }
@@ -82,25 +79,10 @@ void DistanceMultiMapping::apply(int x) {
   std::vector<double>& out = *outp;
   for (std::size_t k = 0; k < in_.size(); ++k) in_ptr_[k] = &in_coord(x, k);
   out.resize(ends_.size());
-  static const double p = 1.0 / std::sqrt(3.0);
   for (std::size_t e = 0; e < ends_.size(); ++e) {
     const double* a = &(*in_ptr_[ends_[e][0].input])[ends_[e][0].point * cw_];
     const double* b = &(*in_ptr_[ends_[e][1].input])[ends_[e][1].point * cw_];
-    double* d = &dir_[e * 3];
-    d[0] = b[0] - a[0];
-    d[1] = b[1] - a[1];
-    d[2] = b[2] - a[2];
-    const double dist = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    out[e] = dist - rest_[e];
-    if (dist > std::numeric_limits<double>::epsilon()) {
-      invlen_[e] = 1 / dist;
-      d[0] *= invlen_[e];
-      d[1] *= invlen_[e];
-      d[2] *= invlen_[e];
-    } else {
-      invlen_[e] = 0;
-      d[0] = d[1] = d[2] = p;
-    }
+    out[e] = edge::unit_direction(a, b, &dir_[e * 3], invlen_[e]) - rest_[e];
   }
 }
 
@@ -114,14 +96,10 @@ void DistanceMultiMapping::apply_j(int v, int role) {
   for (std::size_t k = 0; k < in_.size(); ++k) {
     const std::vector<double>& in = *in_ptr_[k];
     for (std::size_t e = 0; e < ends_.size(); ++e) {
-      const double* n = &dir_[e * 3];
       double s = 0;
-      for (int side = 0; side < 2; ++side) {
-        if (ends_[e][side].input != k) continue;
-        const double sign = side == 0 ? -1.0 : 1.0;
-        const std::size_t base = ends_[e][side].point * dw_;
-        for (int c = 0; c < 3; ++c) s += (sign * n[c]) * in[base + c];
-      }
+      for (int side = 0; side < 2; ++side)
+        if (ends_[e][side].input == k)
+          s = edge::add_end_dot(s, side == 0 ? -1.0 : 1.0, &dir_[e * 3], &in[ends_[e][side].point * dw_]);
       out[e] = k == 0 ? s : out[e] + s;
     }
   }
@@ -133,15 +111,10 @@ void DistanceMultiMapping::apply_jt(int f, int role) {
   const std::vector<double>& out = *outp;
   for (std::size_t k = 0; k < in_.size(); ++k) {
     std::vector<double>& in = in_deriv(f, role, k);
-    for (std::size_t e = 0; e < ends_.size() && e < out.size(); ++e) {
-      const double* n = &dir_[e * 3];
-      for (int side = 0; side < 2; ++side) {
-        if (ends_[e][side].input != k) continue;
-        const double sign = side == 0 ? -1.0 : 1.0;
-        const std::size_t base = ends_[e][side].point * dw_;
-        for (int c = 0; c < 3; ++c) in[base + c] += (sign * n[c]) * out[e];
-      }
-    }
+    for (std::size_t e = 0; e < ends_.size() && e < out.size(); ++e)
+      for (int side = 0; side < 2; ++side)
+        if (ends_[e][side].input == k)
+          edge::add_end_force(&in[ends_[e][side].point * dw_], side == 0 ? -1.0 : 1.0, &dir_[e * 3], out[e]);
   }
 }
 
@@ -152,33 +125,19 @@ void DistanceMultiMapping::apply_djt(int df, int dx, double k) {
     inw_ptr_[i] = &in_deriv(df, kDforce, i);
     in_ptr_[i] = &in_deriv(dx, kDx, i);
   }
+  double b[3][3];
   for (std::size_t e = 0; e < ends_.size() && e < child_force.size(); ++e) {
-    const double lambda = child_force[e];
-    if (!(lambda < 0 || gs_ == 1)) continue;
-    const double* d = &dir_[e * 3];
-    double b[3][3];
-    for (int j = 0; j < 3; ++j)
-      for (int c = 0; c < 3; ++c) b[j][c] = 1.0 * (j == c) - d[j] * d[c];
-    const double s = lambda * invlen_[e] * k;
-    for (int j = 0; j < 3; ++j)
-      for (int c = 0; c < 3; ++c) b[j][c] *= s;
+    if (!edge::has_geometric_stiffness(gs_, child_force[e])) continue;
+    edge::distance_gs_block(&dir_[e * 3], child_force[e], invlen_[e], k, b);
     const End e0 = ends_[e][0], e1 = ends_[e][1];
-    const double* d0 = &(*in_ptr_[e0.input])[e0.point * dw_];
-    const double* d1 = &(*in_ptr_[e1.input])[e1.point * dw_];
-    double u[3], r[3] = {0, 0, 0};
-    for (int c = 0; c < 3; ++c) u[c] = d1[c] - d0[c];
-    for (int j = 0; j < 3; ++j)
-      for (int c = 0; c < 3; ++c) r[j] += b[j][c] * u[c];
-    double* f0 = &(*inw_ptr_[e0.input])[e0.point * dw_];
-    double* f1 = &(*inw_ptr_[e1.input])[e1.point * dw_];
-    for (int j = 0; j < 3; ++j) {
-      f0[j] -= r[j];
-      f1[j] += r[j];
-    }
+    edge::add_block_product(b, &(*in_ptr_[e0.input])[e0.point * dw_], &(*in_ptr_[e1.input])[e1.point * dw_],
+                            &(*inw_ptr_[e0.input])[e0.point * dw_], &(*inw_ptr_[e1.input])[e1.point * dw_]);
   }
 }
 
 bool DistanceMultiMapping::jacobian(std::vector<JacobianEntry>& out) {
+  // Ends may sit on different inputs, so each end's 3 entries go together (unlike
+  // edge::append_edge_row, which interleaves them); the pattern is relied upon, keep it.
   for (std::size_t e = 0; e < ends_.size(); ++e) {
     const double* n = &dir_[e * 3];
     for (int side = 0; side < 2; ++side) {
@@ -194,23 +153,13 @@ bool DistanceMultiMapping::jacobian(std::vector<JacobianEntry>& out) {
 bool DistanceMultiMapping::build_geometric_stiffness(MatrixSink& K) {
   if (gs_ == 0 || !out_) return true;
   const std::vector<double>& child_force = out_->vec(kForce);
+  double b[3][3];
   for (std::size_t e = 0; e < ends_.size() && e < child_force.size(); ++e) {
-    const double lambda = child_force[e];
-    if (!(lambda < 0 || gs_ == 1)) continue;
-    const double* d = &dir_[e * 3];
-    double b[3][3];
-    for (int j = 0; j < 3; ++j)
-      for (int c = 0; c < 3; ++c) b[j][c] = (1.0 * (j == c) - d[j] * d[c]) * (lambda * invlen_[e]);
-    const MechanicalState* s0 = in_[ends_[e][0].input];
-    const MechanicalState* s1 = in_[ends_[e][1].input];
-    const std::size_t i0 = ends_[e][0].point * dw_, i1 = ends_[e][1].point * dw_;
-    for (int j = 0; j < 3; ++j)
-      for (int c = 0; c < 3; ++c) {
-        K.add(s0, i0 + j, s0, i0 + c, b[j][c]);
-        K.add(s0, i0 + j, s1, i1 + c, -b[j][c]);
-        K.add(s1, i1 + j, s0, i0 + c, -b[j][c]);
-        K.add(s1, i1 + j, s1, i1 + c, b[j][c]);
-      }
+    if (!edge::has_geometric_stiffness(gs_, child_force[e])) continue;
+    // Scale 1: (λ/L)·1 is λ/L exactly, the same bits as scaling by λ/L directly.
+    edge::distance_gs_block(&dir_[e * 3], child_force[e], invlen_[e], 1.0, b);
+    const End e0 = ends_[e][0], e1 = ends_[e][1];
+    edge::add_edge_block(K, in_[e0.input], e0.point * dw_, in_[e1.input], e1.point * dw_, b);
   }
   return true;
 }

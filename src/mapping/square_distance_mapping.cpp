@@ -1,7 +1,10 @@
 #include "mapping/square_distance_mapping.h"
 
+#include <algorithm>
+
 #include "core/node.h"
 #include "core/registry.h"
+#include "mapping/edge_kernels.h"
 
 namespace sinew {
 
@@ -44,13 +47,8 @@ void SquareDistanceMapping::apply(int x) {
   const std::vector<double>& in = in_coord(x);
   out.resize(edges_.size());
   for (std::size_t e = 0; e < edges_.size(); ++e) {
-    const double* a = &in[edges_[e][0] * cw_];
-    const double* b = &in[edges_[e][1] * cw_];
     double* g = &grad_[e * 3];
-    g[0] = b[0] - a[0];
-    g[1] = b[1] - a[1];
-    g[2] = b[2] - a[2];
-    out[e] = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+    out[e] = edge::edge_vector(&in[edges_[e][0] * cw_], &in[edges_[e][1] * cw_], g);
     g[0] *= 2;
     g[1] *= 2;
     g[2] *= 2;
@@ -64,17 +62,8 @@ void SquareDistanceMapping::apply_j(int v, int role) {
   const std::vector<double>& in = in_deriv(v, role);
   out.resize(edges_.size());
   for (std::size_t e = 0; e < edges_.size(); ++e) {
-    const double* g = &grad_[e * 3];
     const unsigned i0 = edges_[e][0], i1 = edges_[e][1];
-    double s = 0;
-    if (i1 < i0) {
-      for (int k = 0; k < 3; ++k) s += g[k] * in[i1 * dw_ + k];
-      for (int k = 0; k < 3; ++k) s += -g[k] * in[i0 * dw_ + k];
-    } else {
-      for (int k = 0; k < 3; ++k) s += -g[k] * in[i0 * dw_ + k];
-      for (int k = 0; k < 3; ++k) s += g[k] * in[i1 * dw_ + k];
-    }
-    out[e] = s;
+    out[e] = edge::row_dot(&grad_[e * 3], &in[i0 * dw_], &in[i1 * dw_], i1 < i0);
   }
 }
 
@@ -85,11 +74,8 @@ void SquareDistanceMapping::apply_jt(int f, int role) {
   std::vector<double>& in = in_deriv(f, role);
   const std::size_t n = std::min(edges_.size(), out.size());
   for (std::size_t e = 0; e < n; ++e) {
-    const double* g = &grad_[e * 3];
-    const double fe = out[e];
-    const unsigned i0 = edges_[e][0], i1 = edges_[e][1];
-    for (int k = 0; k < 3; ++k) in[i0 * dw_ + k] += -g[k] * fe;
-    for (int k = 0; k < 3; ++k) in[i1 * dw_ + k] += g[k] * fe;
+    edge::add_end_force(&in[edges_[e][0] * dw_], -1.0, &grad_[e * 3], out[e]);
+    edge::add_end_force(&in[edges_[e][1] * dw_], 1.0, &grad_[e * 3], out[e]);
   }
 }
 
@@ -100,7 +86,8 @@ void SquareDistanceMapping::apply_djt(int df, int dx, double k) {
   const std::vector<double>& d = in_deriv(dx, kDx);
   for (std::size_t e = 0; e < edges_.size() && e < child_force.size(); ++e) {
     const double lambda = child_force[e];
-    if (!(lambda < 0 || gs_ == 1)) continue;
+    if (!edge::has_geometric_stiffness(gs_, lambda)) continue;
+    // G = 2λ·[I −I; −I I]: only diagonal entries, so no 3×3 block.
     const double tmp = 2 * lambda * k;
     const unsigned i0 = edges_[e][0], i1 = edges_[e][1];
     for (int c = 0; c < 3; ++c) {
@@ -112,14 +99,8 @@ void SquareDistanceMapping::apply_djt(int df, int dx, double k) {
 }
 
 bool SquareDistanceMapping::jacobian(std::vector<JacobianEntry>& out) {
-  for (std::size_t e = 0; e < edges_.size(); ++e) {
-    const double* g = &grad_[e * 3];
-    const auto row = static_cast<std::uint32_t>(e);
-    for (int k = 0; k < 3; ++k) {
-      out.push_back({0, row, static_cast<std::uint32_t>(edges_[e][0] * dw_ + k), -g[k]});
-      out.push_back({0, row, static_cast<std::uint32_t>(edges_[e][1] * dw_ + k), g[k]});
-    }
-  }
+  for (std::size_t e = 0; e < edges_.size(); ++e)
+    edge::append_edge_row(out, static_cast<std::uint32_t>(e), edges_[e][0] * dw_, edges_[e][1] * dw_, &grad_[e * 3]);
   return true;
 }
 
@@ -129,7 +110,7 @@ bool SquareDistanceMapping::build_geometric_stiffness(MatrixSink& K) {
   const MechanicalState* s = in_[0];
   for (std::size_t e = 0; e < edges_.size() && e < child_force.size(); ++e) {
     const double lambda = child_force[e];
-    if (!(lambda < 0 || gs_ == 1)) continue;
+    if (!edge::has_geometric_stiffness(gs_, lambda)) continue;
     const double tmp = 2 * lambda;
     const std::size_t i0 = edges_[e][0] * dw_, i1 = edges_[e][1] * dw_;
     for (int c = 0; c < 3; ++c) {
