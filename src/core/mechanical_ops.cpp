@@ -158,9 +158,9 @@ bool MechanicalOps::all_finite(int id) const {
 
 namespace {
 // Ids as seen by a single-state component (dynamic ids only exist on independent states).
-MechParams resolved(const MechParams& p, const std::vector<MechanicalState*>& states) {
-  if (states.size() != 1 || !states[0]) return p;  // multi-state components resolve per state
-  const MechanicalState& s = *states[0];
+MechParams resolved(const MechParams& p, const MechanicalState* state) {
+  if (!state) return p;  // multi-state components resolve per state
+  const MechanicalState& s = *state;
   MechParams q = p;
   q.x = vec_for(s, p.x, kPosition);
   q.v = vec_for(s, p.v, kVelocity);
@@ -182,7 +182,7 @@ void MechanicalOps::compute_force(int f, bool clear, bool accumulate, int x, int
     const auto& ext = s->vec(kExternalForce);
     for (std::size_t i = 0; i < std::min(ext.size(), fv.size()); ++i) fv[i] += ext[i];
   }
-  for (ForceField* ff : force_fields_) ff->add_force(resolved(p, ff->states()));
+  for (ForceField* ff : force_fields_) ff->add_force(resolved(p, ff->single_state()));
   if (accumulate)
     for (auto it = mappings_.rbegin(); it != mappings_.rend(); ++it)
       if ((*it)->map_forces.value()) (*it)->apply_jt(f, kForce);
@@ -201,7 +201,7 @@ void MechanicalOps::add_mbk_dx(int df, double m, double b, double k, int dx, boo
       std::fill(v.begin(), v.end(), 0.0);
     }
   for (ForceField* ff : force_fields_) {
-    const MechParams q = resolved(p, ff->states());
+    const MechParams q = resolved(p, ff->single_state());
     const double kf = ff->k_factor(q);
     if (kf != 0.0 || q.b != 0.0) ff->add_dforce(q, kf);
     if (auto* mass = dynamic_cast<Mass*>(ff)) {

@@ -100,6 +100,9 @@ class ForceField : public Component {
   virtual bool is_interaction() const { return false; }
   // States this force field reads and writes (one for single-state force fields).
   virtual std::vector<MechanicalState*> states() const { return {mstate.get()}; }
+  // The state when states() holds exactly one, else nullptr. Read by the
+  // mechanical operations on every force evaluation, so it must not allocate.
+  virtual MechanicalState* single_state() const { return mstate.get(); }
 
   // Assembled systems: add the raw entries of K = ∂f/∂x (resp. B = ∂f/∂v).
   // Return false when this component cannot assemble (the assembler reports it).

@@ -40,6 +40,7 @@ class InteractionEllipsoidForceField final : public ForceField {
   void add_dforce(const MechParams& p, double kfactor) override;
   bool is_interaction() const override { return true; }
   std::vector<MechanicalState*> states() const override { return {s1_, s2_}; }
+  MechanicalState* single_state() const override { return nullptr; }
   bool build_stiffness(MatrixSink& K) override;
 
   const std::vector<Contact>& contacts() const { return contacts_; }

@@ -43,6 +43,7 @@ class SpringForceField : public ForceField {
   void add_dforce(const MechParams& p, double kfactor) override;
   bool is_interaction() const override { return true; }
   std::vector<MechanicalState*> states() const override;
+  MechanicalState* single_state() const override { return s1_ && s1_ == s2_ ? s1_ : nullptr; }
   bool build_stiffness(MatrixSink& K) override;
 
   // The springs in use after init (explicit list, then generated grid springs).

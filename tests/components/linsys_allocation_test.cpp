@@ -3,7 +3,9 @@
 // exports the real allocator as __libc_*); operator new and Eigen's aligned
 // allocations both go through malloc. Also checks mapped assembly (JᵀKJ
 // through a chain of three mappings, with geometric stiffness) against the
-// matrix-free product while the values change from step to step.
+// matrix-free product while the values change from step to step, and that
+// whole implicit steps (matrix-free CG, assembled CG, SparseLDL) allocate
+// nothing once settled.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -173,4 +175,33 @@ TEST(LinsysAllocation, MappedAssemblyDoesNotAllocateAfterTheFirstStepAndMatchesT
     previous = dense;
   }
   EXPECT_EQ(solver->system()->assembler().mapped_pattern_builds(), 1);
+}
+
+// Whole implicit steps, once the pattern of the assembled matrix has settled
+// (the first steps of a corotational beam turn exact zeros into non-zeros,
+// which changes the filtered pattern SparseLDL factorises, as in SOFA).
+TEST(LinsysAllocation, SteadyImplicitStepsDoNotAllocate) {
+  for (const char* solver :
+       {R"(<CGLinearSolver iterations="25" tolerance="1e-9" threshold="1e-9"/>)",
+        R"(<CGLinearSolver template="CompressedRowSparseMatrixMat3x3d" iterations="25" tolerance="1e-9" threshold="1e-9"/>)",
+        R"(<SparseLDLSolver template="CompressedRowSparseMatrixMat3x3d"/>)"}) {
+    auto s = load(std::string(R"(<Node name="root" dt="0.02" gravity="0 -10 0">
+      <DefaultAnimationLoop/>
+      <EulerImplicitSolver rayleighStiffness="0.1" rayleighMass="0.1"/>)") +
+                  solver + R"(
+      <MechanicalObject/>
+      <UniformMass totalMass="320"/>
+      <RegularGridTopology nx="4" ny="4" nz="20" xmin="-9" xmax="-6" ymin="0" ymax="3" zmin="0" zmax="19"/>
+      <BoxROI name="box" box="-10 -1 -0.0001  -5 4 0.0001"/>
+      <FixedProjectiveConstraint indices="@box.indices"/>
+      <HexahedronFEMForceField youngModulus="4000" poissonRatio="0.3" method="large"/>
+    </Node>)");
+    ASSERT_TRUE(s.root);
+    for (int step = 0; step < 10; ++step) animate(*s.root, 0.0);
+    for (int step = 10; step < 15; ++step) {
+      const long before = g_allocations.load();
+      animate(*s.root, 0.0);
+      EXPECT_EQ(g_allocations.load() - before, 0) << solver << " step " << step;
+    }
+  }
 }
