@@ -1,0 +1,127 @@
+// Hyperelastic materials of SOFA's TetrahedronHyperelasticityFEMForceField
+// (spec/mechanics.md §2.8), as plain free functions per material:
+//   energy  W(C)          strain energy density (not used by SOFA, for tests)
+//   stress  S = 2 ∂W/∂C   second Piola–Kirchhoff stress
+//   dstress dS = ∂S/∂C : H  for a symmetric variation H of C (SOFA's
+//                         applyElasticityTensor)
+// The tangent needs quantities that only depend on C (C⁻¹, ln J, Ogden's
+// spectral tensor); they are gathered once per element in a TangentCache by
+// `prepare`, then dstress is applied 18 times per element.
+//
+// Every expression keeps SOFA's evaluation order (element-wise operations on
+// the 6 stored values, left to right) so that results agree to round-off.
+#pragma once
+
+#include <array>
+#include <string_view>
+
+#include "math/types.h"
+
+namespace sinew::hyper {
+
+// Symmetric 3×3 matrix stored as SOFA's MatSym: (0,0) (0,1) (1,1) (0,2) (1,2) (2,2).
+struct Sym3 {
+  std::array<double, 6> v{};
+
+  static constexpr int index(int i, int j) { return i >= j ? i * (i + 1) / 2 + j : j * (j + 1) / 2 + i; }
+  double operator()(int i, int j) const { return v[index(i, j)]; }
+  double& operator()(int i, int j) { return v[index(i, j)]; }
+  double operator[](int k) const { return v[k]; }
+  double& operator[](int k) { return v[k]; }
+  static Sym3 identity() { return Sym3{{1, 0, 1, 0, 0, 1}}; }
+  double trace() const { return v[0] + v[2] + v[5]; }
+  Mat3 full() const;
+};
+inline Sym3 operator+(const Sym3& a, const Sym3& b) {
+  Sym3 r;
+  for (int k = 0; k < 6; ++k) r.v[k] = a.v[k] + b.v[k];
+  return r;
+}
+inline Sym3 operator-(const Sym3& a, const Sym3& b) {
+  Sym3 r;
+  for (int k = 0; k < 6; ++k) r.v[k] = a.v[k] - b.v[k];
+  return r;
+}
+inline Sym3 operator*(const Sym3& a, double f) {
+  Sym3 r;
+  for (int k = 0; k < 6; ++k) r.v[k] = a.v[k] * f;
+  return r;
+}
+inline Sym3 operator/(const Sym3& a, double f) {
+  Sym3 r;
+  for (int k = 0; k < 6; ++k) r.v[k] = a.v[k] / f;
+  return r;
+}
+
+// S·w with each row summed left to right.
+Vec3 mul(const Sym3& s, const Vec3& w);
+// SOFA's closed-form inverse (cofactors over the determinant); false when |det| <= 1e-100
+// (then `out` is left unchanged, as SOFA does).
+bool invert(const Sym3& m, Sym3& out);
+// Symmetric part of A·H·A (both symmetric), products evaluated as SOFA's A·(H·A).
+Sym3 sandwich(const Sym3& a, const Sym3& h);
+// A:H counting off-diagonal entries twice, in SOFA's order.
+double contract(const Sym3& a, const Sym3& h);
+
+enum class Material { arruda_boyce, stvenant_kirchhoff, neo_hookean, mooney_rivlin, ogden };
+
+// SOFA's option names, in the order of its OptionsGroup (the unsupported ones
+// are listed to give a precise error message).
+struct MaterialName {
+  std::string_view name;
+  bool supported;
+  Material material;
+  int nb_params;  // required ParameterSet size
+  std::string_view params;  // meaning of the parameters
+};
+const std::array<MaterialName, 8>& material_names();
+const MaterialName* find_material(std::string_view name);
+
+// Strain state of an element: C = FᵀF, J = det F, I1 = tr C.
+struct Strain {
+  Sym3 C;
+  double J = 1, I1 = 3;
+};
+
+// Quantities of the tangent depending only on C (computed once per element).
+struct TangentCache {
+  Sym3 inv_c;
+  double log_j = 0;
+  // Powers of J and I1 used by the tangent (Arruda–Boyce, Mooney–Rivlin):
+  // J^{-2/3}, J^{-4/3}, J^{-2}, J^{-8/3}, J^{-10/3}, I1³, I1⁴, I1⁵.
+  double pj[5] = {}, pi3 = 0, pi4 = 0, pi5 = 0;
+  double ogden[6][6] = {};  // Ogden: elasticity tensor acting on stored H values (already halved)
+};
+
+// ---- per material (p = ParameterSet)
+// St Venant–Kirchhoff: μ = p0, λ = p1.
+double stvk_energy(const Strain& s, const double* p);
+void stvk_stress(const Strain& s, const double* p, Sym3& S);
+void stvk_dstress(const Strain& s, const double* p, const TangentCache& c, const Sym3& H, Sym3& out);
+
+// Compressible neo-Hookean: μ = p0, λ = p1.
+double neo_hookean_energy(const Strain& s, const double* p);
+void neo_hookean_stress(const Strain& s, const double* p, Sym3& S);
+void neo_hookean_dstress(const Strain& s, const double* p, const TangentCache& c, const Sym3& H, Sym3& out);
+
+// Arruda–Boyce (5-term series): μ = p0, bulk k0 = p1.
+double arruda_boyce_energy(const Strain& s, const double* p);
+void arruda_boyce_stress(const Strain& s, const double* p, Sym3& S);
+void arruda_boyce_dstress(const Strain& s, const double* p, const TangentCache& c, const Sym3& H, Sym3& out);
+
+// Mooney–Rivlin: c1 = p0, c2 = p1, bulk k0 = p2.
+double mooney_rivlin_energy(const Strain& s, const double* p);
+void mooney_rivlin_stress(const Strain& s, const double* p, Sym3& S);
+void mooney_rivlin_dstress(const Strain& s, const double* p, const TangentCache& c, const Sym3& H, Sym3& out);
+
+// One-term Ogden: μ1 = p0, α1 = p1, bulk k0 = p2.
+double ogden_energy(const Strain& s, const double* p);
+void ogden_stress(const Strain& s, const double* p, Sym3& S);
+void ogden_dstress(const Strain& s, const double* p, const TangentCache& c, const Sym3& H, Sym3& out);
+// Fills c.ogden (the spectral elasticity tensor); false when the eigen solver fails.
+bool ogden_prepare(const Strain& s, const double* p, TangentCache& c);
+
+// Fills the cache for any material (inverse of C, ln J, Ogden's tensor).
+bool prepare_tangent(Material m, const Strain& s, const double* p, TangentCache& c);
+
+}  // namespace sinew::hyper

@@ -1,0 +1,41 @@
+// TetrahedronHyperelasticityFEMForceField: hyperelastic linear tetrahedra
+// (total Lagrangian) with one of SOFA's materials: ArrudaBoyce (default),
+// StVenantKirchhoff, NeoHookean, MooneyRivlin, Ogden (spec/mechanics.md §2.8).
+// The kernel lives in forcefield/hyperelastic_tetra.h, the materials in
+// forcefield/hyperelastic_materials.h.
+#pragma once
+
+#include "core/roles.h"
+#include "forcefield/hyperelastic_tetra.h"
+
+namespace sinew {
+
+class TetrahedronHyperelasticityFEMForceField final : public ForceField {
+ public:
+  Field<std::string> material_name{
+      this, "materialName", "ArrudaBoyce",
+      "material: ArrudaBoyce (mu k0), StVenantKirchhoff (mu lambda), NeoHookean (mu lambda), MooneyRivlin "
+      "(c1 c2 k0) or Ogden (mu1 alpha1 k0); VerondaWestman, Costa and StableNeoHookean are not supported",
+      "Material"};
+  Field<std::vector<double>> parameter_set{this, "ParameterSet", {},
+                                           "the material parameters (see materialName)", "Material"};
+  Field<std::vector<Vec3>> anisotropy_directions{
+      this, "AnisotropyDirections", {}, "directions of anisotropy (unused by the supported materials)", "Material"};
+  Field<bool> matrix_regularization{this, "matrixRegularization", false,
+                                    "regularisation of the stiffness matrix (unused, as in SOFA)", "Material"};
+  Link<MeshTopologyBase> topology{this, "topology", "topology holding the tetrahedra (default: the node's)"};
+
+  void init() override;
+  void reinit() override { init(); }
+  void add_force(const MechParams& p) override;
+  void add_dforce(const MechParams& p, double kfactor) override;
+  bool build_stiffness(MatrixSink& K) override;
+
+  const hyper::TetraHyperelasticity& kernel() const { return fem_; }
+
+ private:
+  hyper::TetraHyperelasticity fem_;
+  bool reported_inversion_ = false;
+};
+
+}  // namespace sinew
