@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/init_checks.h"
 #include "core/node.h"
 #include "core/registry.h"
 
@@ -10,17 +11,8 @@ namespace sinew {
 void EdgePressureForceField::init() {
   ForceField::init();
   if (state() != ComponentState::valid) return;
-  if (mstate->state_type() != StateType::vec3) {
-    msg_error("only Vec3d states are supported");
-    state_ = ComponentState::invalid;
-    return;
-  }
-  if (!topology) topology.set(node()->get_mesh_topology_link());
-  if (!topology) {
-    msg_error("no topology found (an edge topology is required)");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  if (!require_vec3_state(*this)) return;
+  if (!bind_node_topology(*this, topology, "an edge topology is required")) return;
   const Vec3 P = pressure.get();
   if (!(P[0] * P[0] + P[1] * P[1] + P[2] * P[2] > 0)) {
     msg_error("a non-zero 'pressure' is required (the p_intensity/normal mode is not supported)");

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/init_checks.h"
 #include "core/node.h"
 
 namespace sinew {
@@ -28,10 +29,8 @@ void ElementFEMForceFieldBase::init() {
     msg_error(m);
     state_ = ComponentState::invalid;
   };
+  if (!require_vec3_state(*this) || !bind_node_topology(*this, topology, "link one with topology=\"@...\"")) return;
   MechanicalState& s = *mstate;
-  if (s.state_type() != StateType::vec3) return fail("only Vec3d states are supported");
-  if (!topology) topology.set(node()->get_mesh_topology_link());
-  if (!topology) return fail("no topology found (link one with topology=\"@...\")");
 
   bool par_f = true, par_df = true;
   if (!read_strategy(compute_force_strategy, par_f) || !read_strategy(compute_force_deriv_strategy, par_df))

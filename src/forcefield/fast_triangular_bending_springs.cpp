@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/init_checks.h"
 #include "core/node.h"
 #include "core/registry.h"
 
@@ -20,17 +21,8 @@ inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 void FastTriangularBendingSprings::init() {
   ForceField::init();
   if (state() != ComponentState::valid) return;
-  if (mstate->state_type() != StateType::vec3) {
-    msg_error("only Vec3d states are supported");
-    state_ = ComponentState::invalid;
-    return;
-  }
-  if (!topology) topology.set(node()->get_mesh_topology_link());
-  if (!topology) {
-    msg_error("no topology found (a triangular mesh is required)");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  if (!require_vec3_state(*this)) return;
+  if (!bind_node_topology(*this, topology, "a triangular mesh is required")) return;
   if (topology->triangles().empty()) msg_warning("no triangles found in the topology " + topology->describe());
   if (!rebuild()) state_ = ComponentState::invalid;
 }
@@ -47,13 +39,7 @@ bool FastTriangularBendingSprings::rebuild() {
   n_edges_ = topology->edges().size();
   const std::vector<double>& x0 = mstate->vec(kRestPosition);
   const std::size_t np = mstate->size();
-  for (std::size_t i = 0; i < tris.size(); ++i)
-    for (unsigned v : tris[i])
-      if (v >= np) {
-        msg_error("triangle " + std::to_string(i) + " refers to point " + std::to_string(v) + " but the state has " +
-                  std::to_string(np) + " points");
-        return false;
-      }
+  if (!element_points_in_state(*this, tris, "triangle", np)) return false;
   springs_.assign(adj.edges.size(), EdgeSpring{});
   double eps2 = min_dist_validity.get();
   eps2 *= eps2;

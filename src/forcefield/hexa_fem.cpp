@@ -11,6 +11,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "forcefield/sofa_mat3.h"
 #include "math/decompose.h"
 
 namespace sinew::fem {
@@ -26,10 +27,6 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 // Small 3D helpers with SOFA's evaluation order (left-to-right sums).
 inline double norm3(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
-inline Vec3 cross3(const Vec3& a, const Vec3& b) {
-  return Vec3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
-}
-
 // SOFA's normalize: divides by the norm, leaves the vector untouched when the
 // norm is ≤ DBL_EPSILON.
 inline void normalize3(Vec3& a) {
@@ -41,36 +38,10 @@ inline void normalize3(Vec3& a) {
   }
 }
 
-// R·v and Rᵀ·v.
-inline Vec3 mul(const Mat3& R, const Vec3& v) {
-  return Vec3(R(0, 0) * v[0] + R(0, 1) * v[1] + R(0, 2) * v[2], R(1, 0) * v[0] + R(1, 1) * v[1] + R(1, 2) * v[2],
-              R(2, 0) * v[0] + R(2, 1) * v[1] + R(2, 2) * v[2]);
-}
+// Rᵀ·v (R·v is fem::mul, forcefield/sofa_mat3.h).
 inline Vec3 mul_t(const Mat3& R, double v0, double v1, double v2) {
   return Vec3(R(0, 0) * v0 + R(1, 0) * v1 + R(2, 0) * v2, R(0, 1) * v0 + R(1, 1) * v1 + R(2, 1) * v2,
               R(0, 2) * v0 + R(1, 2) * v1 + R(2, 2) * v2);
-}
-
-// Determinant as SOFA expands it (sum of the six triple products, in this order).
-inline double det3(const Mat3& m) {
-  return m(0, 0) * m(1, 1) * m(2, 2) + m(1, 0) * m(2, 1) * m(0, 2) + m(2, 0) * m(0, 1) * m(1, 2) -
-         m(0, 0) * m(2, 1) * m(1, 2) - m(1, 0) * m(0, 1) * m(2, 2) - m(2, 0) * m(1, 1) * m(0, 2);
-}
-
-// Inverse by cofactors divided by det. Like SOFA, refuses (and leaves `inv`
-// untouched) when |det| ≤ DBL_EPSILON — an absolute threshold.
-inline bool invert3(const Mat3& a, double det, Mat3& inv) {
-  if (std::fabs(det) <= kEps) return false;
-  inv(0, 0) = (a(1, 1) * a(2, 2) - a(2, 1) * a(1, 2)) / det;
-  inv(1, 0) = (a(1, 2) * a(2, 0) - a(2, 2) * a(1, 0)) / det;
-  inv(2, 0) = (a(1, 0) * a(2, 1) - a(2, 0) * a(1, 1)) / det;
-  inv(0, 1) = (a(2, 1) * a(0, 2) - a(0, 1) * a(2, 2)) / det;
-  inv(1, 1) = (a(2, 2) * a(0, 0) - a(0, 2) * a(2, 0)) / det;
-  inv(2, 1) = (a(2, 0) * a(0, 1) - a(0, 0) * a(2, 1)) / det;
-  inv(0, 2) = (a(0, 1) * a(1, 2) - a(1, 1) * a(0, 2)) / det;
-  inv(1, 2) = (a(0, 2) * a(1, 0) - a(1, 2) * a(0, 0)) / det;
-  inv(2, 2) = (a(0, 0) * a(1, 1) - a(1, 0) * a(0, 1)) / det;
-  return true;
 }
 
 // Averaged edges of the element along the three cell axes. SOFA writes each as

@@ -4,27 +4,20 @@
 #include <map>
 #include <utility>
 
+#include "core/init_checks.h"
 #include "core/node.h"
 #include "core/registry.h"
+#include "forcefield/spring_stiffness.h"
 
 namespace sinew {
 
 void QuadularBendingSprings::init() {
   ForceField::init();
   if (state() != ComponentState::valid) return;
-  if (mstate->state_type() != StateType::vec3) {
-    msg_error("only Vec3d states are supported");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  if (!require_vec3_state(*this)) return;
   ks_ = stiffness.get();
   kd_ = damping.get();
-  if (!topology) topology.set(node()->get_mesh_topology_link());
-  if (!topology) {
-    msg_error("no topology found (a quad mesh is required)");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  if (!bind_node_topology(*this, topology, "a quad mesh is required")) return;
   if (topology->quads().empty()) msg_warning("no quads found in the topology " + topology->describe());
   if (!rebuild()) state_ = ComponentState::invalid;
 }
@@ -37,13 +30,7 @@ bool QuadularBendingSprings::rebuild() {
   const auto& quads = topology->quads();
   n_quads_ = quads.size();
   const std::size_t np = mstate->size();
-  for (std::size_t i = 0; i < quads.size(); ++i)
-    for (unsigned v : quads[i])
-      if (v >= np) {
-        msg_error("quad " + std::to_string(i) + " refers to point " + std::to_string(v) + " but the state has " +
-                  std::to_string(np) + " points");
-        return false;
-      }
+  if (!element_points_in_state(*this, quads, "quad", np)) return false;
   // Edges: the topology's list, else derived from the quads (first occurrence).
   std::vector<Edge> edges = topology->edges();
   std::map<std::pair<unsigned, unsigned>, unsigned> index;
@@ -155,17 +142,7 @@ void QuadularBendingSprings::add_dforce(const MechParams& p, double kfactor) {
 
 bool QuadularBendingSprings::build_stiffness(MatrixSink& K) {
   const MechanicalState* s = mstate.get();
-  for (const Spring& sp : springs_) {
-    const std::size_t a = 3 * sp.e0, b = 3 * sp.e1;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        const double k = sp.dfdx[i * 3 + j];
-        K.add(s, a + i, s, a + j, -k);
-        K.add(s, a + i, s, b + j, k);
-        K.add(s, b + i, s, a + j, k);
-        K.add(s, b + i, s, b + j, -k);
-      }
-  }
+  for (const Spring& sp : springs_) add_spring_stiffness(K, s, sp.e0, sp.e1, sp.dfdx.data());
   return true;
 }
 

@@ -12,6 +12,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "forcefield/sofa_mat3.h"
 #include "math/decompose.h"
 
 namespace sinew::fem {
@@ -21,9 +22,6 @@ namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 inline Vec3 sub(const Vec3& a, const Vec3& b) { return Vec3(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
-inline Vec3 cross3(const Vec3& a, const Vec3& b) {
-  return Vec3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
-}
 // SOFA's normalize: divide by the norm when it is above DBL_EPSILON.
 inline Vec3 normalized(Vec3 a) {
   const double n = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
@@ -34,36 +32,12 @@ inline Vec3 normalized(Vec3 a) {
   }
   return a;
 }
-// M·v, rows summed left to right.
-inline Vec3 mul(const Mat3& M, const Vec3& v) {
-  return Vec3(M(0, 0) * v[0] + M(0, 1) * v[1] + M(0, 2) * v[2], M(1, 0) * v[0] + M(1, 1) * v[1] + M(1, 2) * v[2],
-              M(2, 0) * v[0] + M(2, 1) * v[1] + M(2, 2) * v[2]);
-}
 // Plain 3×3 product (SOFA's Mat operator*).
 inline Mat3 mul(const Mat3& A, const Mat3& B) {
   Mat3 r;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) r(i, j) = A(i, 0) * B(0, j) + A(i, 1) * B(1, j) + A(i, 2) * B(2, j);
   return r;
-}
-inline double det3(const Mat3& m) {
-  return m(0, 0) * m(1, 1) * m(2, 2) + m(1, 0) * m(2, 1) * m(0, 2) + m(2, 0) * m(0, 1) * m(1, 2) -
-         m(0, 0) * m(2, 1) * m(1, 2) - m(1, 0) * m(0, 1) * m(2, 2) - m(2, 0) * m(1, 1) * m(0, 2);
-}
-// SOFA's invertMatrix (cofactors / det); false when det is (almost) zero.
-inline bool invert3(const Mat3& a, Mat3& inv) {
-  const double det = det3(a);
-  if (std::fabs(det) <= kEps) return false;
-  inv(0, 0) = (a(1, 1) * a(2, 2) - a(2, 1) * a(1, 2)) / det;
-  inv(1, 0) = (a(1, 2) * a(2, 0) - a(2, 2) * a(1, 0)) / det;
-  inv(2, 0) = (a(1, 0) * a(2, 1) - a(2, 0) * a(1, 1)) / det;
-  inv(0, 1) = (a(2, 1) * a(0, 2) - a(0, 1) * a(2, 2)) / det;
-  inv(1, 1) = (a(2, 2) * a(0, 0) - a(0, 2) * a(2, 0)) / det;
-  inv(2, 1) = (a(2, 0) * a(0, 1) - a(0, 0) * a(2, 1)) / det;
-  inv(0, 2) = (a(0, 1) * a(1, 2) - a(1, 1) * a(0, 2)) / det;
-  inv(1, 2) = (a(0, 2) * a(1, 0) - a(1, 2) * a(0, 0)) / det;
-  inv(2, 2) = (a(0, 0) * a(1, 1) - a(1, 0) * a(0, 1)) / det;
-  return true;
 }
 
 // Cofactor expression of SOFA's peudo_determinant_for_coef for the 2×3 matrix
@@ -368,7 +342,7 @@ std::vector<TetraIssue> TetraFEM::init(std::span<const Vec3> X, std::span<const 
       case TetraMethod::svd: {
         const Mat3 A = edge_rows(a, b, c, d);
         if (m == TetraMethod::svd) {
-          if (!invert3(A, T0[e])) {
+          if (!invert3(A, det3(A), T0[e])) {  // SOFA's invertMatrix
             issues.push_back({static_cast<int>(e), true, "degenerate element (singular rest edges)"});
             continue;
           }

@@ -94,4 +94,20 @@ bool setup_tetra_fem(ForceField& c, const TetraFEMSetup& in, fem::TetraFEM& fem)
   return !fatal;
 }
 
+void add_tetra_fem_force(fem::TetraFEM& fem, MechanicalState& s, const MechParams& p) {
+  const std::vector<double>& x = s.vec(p.x);
+  std::vector<double>& f = s.vec(p.f);
+  fem.add_force(as_vec3(x), as_vec3(f));
+}
+
+void add_tetra_fem_dforce(const fem::TetraFEM& fem, MechanicalState& s, const MechParams& p, double kfactor) {
+  const std::vector<double>& dx = s.vec(p.dx);
+  std::vector<double>& df = s.vec(p.df);
+  fem.add_dforce(as_vec3(dx), as_vec3(df), kfactor);
+}
+
+void add_tetra_fem_stiffness(const fem::TetraFEM& fem, const MechanicalState* s, MatrixSink& K) {
+  fem.add_stiffness_blocks([&](int i, int j, const Mat3& b) { K.add_block(s, 3 * i, s, 3 * j, b); });
+}
+
 }  // namespace sinew

@@ -11,16 +11,8 @@ TetrahedralCorotationalFEMForceField::TetrahedralCorotationalFEMForceField() { a
 void TetrahedralCorotationalFEMForceField::init() {
   ForceField::init();
   if (state() != ComponentState::valid) return;
-  if (!topology) topology.set(node()->get_mesh_topology_link());
-
   bool known = true;
-  TetraFEMSetup in;
-  in.topology = topology.get();
-  in.allow_hexa_split = false;
-  in.young = young_modulus.get();
-  in.poisson = poisson_ratio.get();
-  in.local_stiffness_factor = local_stiffness_factor.get();
-  in.method = parse_tetra_method(method.get(), false, known);
+  TetraFEMSetup in = read_tetra_fem_fields(*this, false, known);
   if (!known) msg_warning("unknown method '" + method.get() + "' (expected small, large or polar): large is used");
 
   fem_.update_stiffness_matrix = update_stiffness_matrix.get();
@@ -38,24 +30,18 @@ void TetrahedralCorotationalFEMForceField::init() {
 
 void TetrahedralCorotationalFEMForceField::add_force(const MechParams& p) {
   MechanicalState& s = *mstate;
-  const std::vector<double>& x = s.vec(p.x);
-  std::vector<double>& f = s.vec(p.f);
-  fem_.add_force(as_vec3(x), as_vec3(f));
+  add_tetra_fem_force(fem_, s, p);
   // SOFA computes it after each addForce, from the state's current positions.
   if (compute_von_mises_stress.value() && state() == ComponentState::valid)
     fem_.von_mises(as_vec3(s.vec(kPosition)), 3, von_mises_per_element.edit(), von_mises_per_node.edit());
 }
 
 void TetrahedralCorotationalFEMForceField::add_dforce(const MechParams& p, double kfactor) {
-  MechanicalState& s = *mstate;
-  const std::vector<double>& dx = s.vec(p.dx);
-  std::vector<double>& df = s.vec(p.df);
-  fem_.add_dforce(as_vec3(dx), as_vec3(df), kfactor);
+  add_tetra_fem_dforce(fem_, *mstate, p, kfactor);
 }
 
 bool TetrahedralCorotationalFEMForceField::build_stiffness(MatrixSink& K) {
-  const MechanicalState* s = mstate.get();
-  fem_.add_stiffness_blocks([&](int i, int j, const Mat3& b) { K.add_block(s, 3 * i, s, 3 * j, b); });
+  add_tetra_fem_stiffness(fem_, mstate.get(), K);
   return true;
 }
 

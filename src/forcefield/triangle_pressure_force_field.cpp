@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/init_checks.h"
 #include "core/node.h"
 #include "core/registry.h"
 
@@ -10,17 +11,8 @@ namespace sinew {
 void TrianglePressureForceField::init() {
   ForceField::init();
   if (state() != ComponentState::valid) return;
-  if (mstate->state_type() != StateType::vec3) {
-    msg_error("only Vec3d states are supported");
-    state_ = ComponentState::invalid;
-    return;
-  }
-  if (!topology) topology.set(node()->get_mesh_topology_link());
-  if (!topology) {
-    msg_error("no topology found (a triangular mesh is required)");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  if (!require_vec3_state(*this)) return;
+  if (!bind_node_topology(*this, topology, "a triangular mesh is required")) return;
   if (cauchy_stress.get().size() != 6) {
     msg_error("cauchyStress must hold 6 values (xx xy yy xz yz zz)");
     state_ = ComponentState::invalid;

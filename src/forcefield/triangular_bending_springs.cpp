@@ -2,8 +2,10 @@
 
 #include <cmath>
 
+#include "core/init_checks.h"
 #include "core/node.h"
 #include "core/registry.h"
+#include "forcefield/spring_stiffness.h"
 #include "forcefield/triangle_adjacency.h"
 
 namespace sinew {
@@ -11,11 +13,7 @@ namespace sinew {
 void TriangularBendingSprings::init() {
   ForceField::init();
   if (state() != ComponentState::valid) return;
-  if (mstate->state_type() != StateType::vec3) {
-    msg_error("only Vec3d states are supported");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  if (!require_vec3_state(*this)) return;
   // SOFA keeps its defaults when a negative value is given (with a warning).
   ks_ = stiffness.get();
   kd_ = damping.get();
@@ -27,12 +25,7 @@ void TriangularBendingSprings::init() {
     msg_warning("damping " + parse::format_double(kd_) + " is negative: using 1");
     kd_ = 1.0;
   }
-  if (!topology) topology.set(node()->get_mesh_topology_link());
-  if (!topology) {
-    msg_error("no topology found (a triangular mesh is required)");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  if (!bind_node_topology(*this, topology, "a triangular mesh is required")) return;
   if (topology->triangles().empty()) {
     msg_error("the topology " + topology->describe() + " has no triangles (a triangular set topology is required)");
     state_ = ComponentState::invalid;
@@ -52,13 +45,7 @@ bool TriangularBendingSprings::rebuild() {
   n_triangles_ = tris.size();
   n_edges_ = topology->edges().size();
   const std::size_t np = mstate->size();
-  for (std::size_t i = 0; i < tris.size(); ++i)
-    for (unsigned v : tris[i])
-      if (v >= np) {
-        msg_error("triangle " + std::to_string(i) + " refers to point " + std::to_string(v) + " but the state has " +
-                  std::to_string(np) + " points");
-        return false;
-      }
+  if (!element_points_in_state(*this, tris, "triangle", np)) return false;
   const std::vector<double>& x0 = mstate->vec(kRestPosition);
   // SOFA's triangle-creation pass: the first triangle (in order) holding an
   // edge initialises its spring: m1 opposite in the other triangle, m2 in this one.
@@ -116,18 +103,8 @@ void TriangularBendingSprings::add_dforce(const MechParams& p, double kfactor) {
 
 bool TriangularBendingSprings::build_stiffness(MatrixSink& K) {
   const MechanicalState* s = mstate.get();
-  for (std::size_t e = 0; e < springs_.size(); ++e) {
-    const springs::Block& m = dfdx_[e];
-    const std::size_t a = 3 * springs_[e].m1, b = 3 * springs_[e].m2;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        const double k = m[i * 3 + j];
-        K.add(s, a + i, s, a + j, -k);
-        K.add(s, a + i, s, b + j, k);
-        K.add(s, b + i, s, a + j, k);
-        K.add(s, b + i, s, b + j, -k);
-      }
-  }
+  for (std::size_t e = 0; e < springs_.size(); ++e)
+    add_spring_stiffness(K, s, springs_[e].m1, springs_[e].m2, dfdx_[e].data());
   return true;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/init_checks.h"
 #include "core/node.h"
 #include "core/parse.h"
 #include "core/registry.h"
@@ -91,11 +92,7 @@ inline void kernel(const std::array<double, 18>& J, const std::array<double, 9>&
 void TriangularFEMForceField::init() {
   ForceField::init();
   if (state() != ComponentState::valid) return;
-  if (mstate->state_type() != StateType::vec3) {
-    msg_error("only Vec3d states are supported");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  if (!require_vec3_state(*this)) return;
   if (method.value() == "small") {
     small_ = true;
   } else {
@@ -113,12 +110,7 @@ void TriangularFEMForceField::init() {
     state_ = ComponentState::invalid;
     return;
   }
-  if (!topology) topology.set(node()->get_mesh_topology_link());
-  if (!topology) {
-    msg_error("no topology found (a triangular mesh is required)");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  if (!bind_node_topology(*this, topology, "a triangular mesh is required")) return;
   if (topology->triangles().empty()) msg_warning("no triangles found in the topology " + topology->describe());
   if (!rebuild()) state_ = ComponentState::invalid;
 }
@@ -146,11 +138,7 @@ bool TriangularFEMForceField::rebuild() {
   el_.assign(tris.size(), Element{});
   for (std::size_t i = 0; i < tris.size(); ++i) {
     const Triangle& t = tris[i];
-    if (t[0] >= np || t[1] >= np || t[2] >= np) {
-      msg_error("triangle " + std::to_string(i) + " refers to a point >= " + std::to_string(np) +
-                " (the number of points of the state)");
-      return false;
-    }
+    if (!triangle_in_state(*this, i, t, np)) return false;
     Element& e = el_[i];
     e.a = t[0];
     e.b = t[1];

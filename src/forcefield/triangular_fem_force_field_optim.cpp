@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/init_checks.h"
 #include "core/node.h"
 #include "core/parse.h"
 #include "core/registry.h"
@@ -44,17 +45,8 @@ void TriangularFEMForceFieldOptim::parse(AttributeMap& attrs, Diagnostics& diag)
 void TriangularFEMForceFieldOptim::init() {
   ForceField::init();
   if (state() != ComponentState::valid) return;
-  if (mstate->state_type() != StateType::vec3) {
-    msg_error("only Vec3d states are supported");
-    state_ = ComponentState::invalid;
-    return;
-  }
-  if (!topology) topology.set(node()->get_mesh_topology_link());
-  if (!topology) {
-    msg_error("no topology found (a triangular mesh is required)");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  if (!require_vec3_state(*this)) return;
+  if (!bind_node_topology(*this, topology, "a triangular mesh is required")) return;
   if (topology->triangles().empty()) {
     msg_warning("no triangles found in the topology " + topology->describe());
     if (!topology->quads().empty()) msg_warning("the topology only contains quads; this force field needs triangles");
@@ -93,11 +85,7 @@ bool TriangularFEMForceFieldOptim::rebuild() {
   tstate_.assign(nt, TriangleState{});
   for (std::size_t i = 0; i < nt; ++i) {
     const Triangle& t = tris[i];
-    if (t[0] >= np || t[1] >= np || t[2] >= np) {
-      msg_error("triangle " + std::to_string(i) + " refers to a point >= " + std::to_string(np) +
-                " (the number of points of the state)");
-      return false;
-    }
+    if (!triangle_in_state(*this, i, t, np)) return false;
     TriangleInfo& ti = info_[i];
     ti.a = t[0];
     ti.b = t[1];

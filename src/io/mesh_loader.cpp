@@ -1,6 +1,7 @@
 #include "io/mesh_loader.h"
 
 #include <sstream>
+#include <type_traits>
 
 #include "core/parse.h"
 
@@ -10,63 +11,51 @@ namespace sinew {
 
 namespace io {
 
-std::string to_text(const std::vector<std::vector<unsigned>>& v) {
+namespace {
+
+// Ragged index lists as SOFA writes them: each list is its length followed by
+// its entries. One template serves the unsigned lists (polygons, polylines)
+// and the signed ones (OBJ face index lists).
+template <class T>
+std::string ragged_to_text(const std::vector<std::vector<T>>& v) {
   std::string s;
   for (const auto& e : v) {
     if (!s.empty()) s += ' ';
     s += std::to_string(e.size());
-    for (unsigned i : e) s += ' ' + std::to_string(i);
+    for (T i : e) s += ' ' + std::to_string(i);
   }
   return s;
 }
 
-bool read_text(std::string_view text, std::vector<std::vector<unsigned>>& v) {
+// Reads the form above; false on a bad count or entry. Unsigned lists also
+// refuse negative entries, which would wrap around to huge indices.
+template <class T>
+bool ragged_read_text(std::string_view text, std::vector<std::vector<T>>& v) {
   v.clear();
   const auto toks = parse::tokens(text);
   std::size_t i = 0;
   while (i < toks.size()) {
     long long n = 0;
     if (!parse::read_int(toks[i], n) || n < 0 || i + 1 + static_cast<std::size_t>(n) > toks.size()) return false;
-    std::vector<unsigned> e;
-    for (long long k = 0; k < n; ++k) {
-      long long x = 0;
-      if (!parse::read_int(toks[i + 1 + static_cast<std::size_t>(k)], x) || x < 0) return false;
-      e.push_back(static_cast<unsigned>(x));
-    }
-    v.push_back(std::move(e));
-    i += 1 + static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
-std::string to_text(const std::vector<std::vector<int>>& v) {
-  std::string s;
-  for (const auto& e : v) {
-    if (!s.empty()) s += ' ';
-    s += std::to_string(e.size());
-    for (int i : e) s += ' ' + std::to_string(i);
-  }
-  return s;
-}
-
-bool read_text(std::string_view text, std::vector<std::vector<int>>& v) {
-  v.clear();
-  const auto toks = parse::tokens(text);
-  std::size_t i = 0;
-  while (i < toks.size()) {
-    long long n = 0;
-    if (!parse::read_int(toks[i], n) || n < 0 || i + 1 + static_cast<std::size_t>(n) > toks.size()) return false;
-    std::vector<int> e;
+    std::vector<T> e;
     for (long long k = 0; k < n; ++k) {
       long long x = 0;
       if (!parse::read_int(toks[i + 1 + static_cast<std::size_t>(k)], x)) return false;
-      e.push_back(static_cast<int>(x));
+      if (std::is_unsigned_v<T> && x < 0) return false;
+      e.push_back(static_cast<T>(x));
     }
     v.push_back(std::move(e));
     i += 1 + static_cast<std::size_t>(n);
   }
   return true;
 }
+
+}  // namespace
+
+std::string to_text(const std::vector<std::vector<unsigned>>& v) { return ragged_to_text(v); }
+bool read_text(std::string_view text, std::vector<std::vector<unsigned>>& v) { return ragged_read_text(text, v); }
+std::string to_text(const std::vector<std::vector<int>>& v) { return ragged_to_text(v); }
+bool read_text(std::string_view text, std::vector<std::vector<int>>& v) { return ragged_read_text(text, v); }
 
 std::string to_text(const std::vector<PrimitiveGroup>& v) {
   std::string s;

@@ -59,26 +59,10 @@ void DiagonalMass::init() {
     return;
   }
   if (!meshgeo::bind_mesh_mass(*this, topology, geometry_state)) return;
-  const MassElement k = meshgeo::mass_element(*topology);
-  const int dim = s.info().spatial_dim;
-  if (k == MassElement::none) {
-    msg_error("the topology " + topology->describe() + " is empty");
-    state_ = ComponentState::invalid;
-    return;
-  }
-  if ((k == MassElement::tetra || k == MassElement::hexa) && dim < 3) {
-    msg_error("volume elements need a 3D state");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  const MassElement k = meshgeo::checked_mass_element(*this, *topology);
+  if (k == MassElement::none) return;
   kind_ = static_cast<int>(k);
-  const std::size_t need = meshgeo::max_index_plus_one(*topology, k);
-  if (need > s.size() || need > geometry_state->size()) {
-    msg_error("an element of " + topology->describe() + " uses point " + std::to_string(need - 1) +
-              " but the state has " + std::to_string(std::min(s.size(), geometry_state->size())) + " points");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  if (!meshgeo::mass_elements_in_states(*this, *topology, k, s.size(), geometry_state->size())) return;
 
   // A short vertexMass list is padded with its last value.
   {
@@ -94,10 +78,7 @@ void DiagonalMass::init() {
   }
 
   auto init_from_total = [&] {
-    if (total_mass.value() < 0) {
-      msg_warning("totalMass can not be negative: switching back to totalMass = 1");
-      total_mass.set(1.0);
-    }
+    meshgeo::reset_negative_total_mass(*this, total_mass);
     const double total = total_mass.value();
     const double sum = compute_vertex_mass(1.0);
     const double rho = sum < std::numeric_limits<double>::epsilon() ? 1.0 : total / sum;
@@ -120,10 +101,7 @@ void DiagonalMass::init() {
     }
   } else if (vm_set) {
     const std::vector<double> vm = vertex_mass.value();
-    bool ok = vm.size() == s.size();
-    for (double v : vm)
-      if (v < 0) ok = false;
-    if (!ok) {
+    if (!meshgeo::one_nonnegative_mass_per_point(vm, s.size())) {
       msg_warning("vertexMass must have one non-negative value per point: the totalMass path is used");
       init_from_total();
     } else {
@@ -177,14 +155,7 @@ void DiagonalMass::acc_from_f(const MechParams&, int a, int f) {
 }
 
 void DiagonalMass::add_gravity_to_v(int v, double dt) {
-  MechanicalState& s = *mstate;
-  std::vector<double>& vv = s.vec(v);
-  const Vec3 g = node()->gravity.value();
-  const int w = s.info().deriv_width;
-  double hg[3];
-  for (int c = 0; c < w; ++c) hg[c] = g[c] * dt;
-  for (std::size_t i = 0; i < s.size(); ++i)
-    for (int c = 0; c < w; ++c) vv[i * w + c] += hg[c];
+  meshgeo::add_gravity_velocity(*mstate, v, node()->gravity.value(), dt);
 }
 
 bool DiagonalMass::build_mass(MatrixSink& M) {

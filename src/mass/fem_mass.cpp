@@ -4,6 +4,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "core/init_checks.h"
 #include "core/node.h"
 #include "core/registry.h"
 #include "math/finite_element.h"
@@ -54,10 +55,8 @@ void FEMMass::init() {
     msg_error(m);
     state_ = ComponentState::invalid;
   };
+  if (!require_vec3_state(*this) || !bind_node_topology(*this, topology, "link one with topology=\"@...\"")) return;
   MechanicalState& s = *mstate;
-  if (s.state_type() != StateType::vec3) return fail("only Vec3d states are supported");
-  if (!topology) topology.set(node()->get_mesh_topology_link());
-  if (!topology) return fail("no topology found (link one with topology=\"@...\")");
   if (!nodal_mass_density) nodal_mass_density.set(node()->find_up<NodalMassDensity>());
   if (!nodal_mass_density)
     return fail("No nodal mass density component found (add a NodalMassDensity or link nodalMassDensity=\"@...\")");

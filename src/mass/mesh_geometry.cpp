@@ -46,4 +46,52 @@ bool bind_mesh_mass(Mass& mass, Link<MeshTopologyBase>& topology, Link<Mechanica
   return true;
 }
 
+MassElement checked_mass_element(Mass& mass, const MeshTopologyBase& t) {
+  const MassElement k = mass_element(t);
+  if (k == MassElement::none) {
+    mass.msg_error("the topology " + t.describe() + " is empty");
+    mass.set_state(ComponentState::invalid);
+    return MassElement::none;
+  }
+  if ((k == MassElement::tetra || k == MassElement::hexa) && mass.mstate->info().spatial_dim < 3) {
+    mass.msg_error("volume elements need a 3D state");
+    mass.set_state(ComponentState::invalid);
+    return MassElement::none;
+  }
+  return k;
+}
+
+bool mass_elements_in_states(Mass& mass, const MeshTopologyBase& t, MassElement k, std::size_t state_size,
+                             std::size_t geometry_size) {
+  const std::size_t need = max_index_plus_one(t, k);
+  if (need <= state_size && need <= geometry_size) return true;
+  mass.msg_error("an element of " + t.describe() + " uses point " + std::to_string(need - 1) +
+                 " but the state has " + std::to_string(std::min(state_size, geometry_size)) + " points");
+  mass.set_state(ComponentState::invalid);
+  return false;
+}
+
+void reset_negative_total_mass(Mass& mass, Field<double>& total_mass) {
+  if (total_mass.value() < 0) {
+    mass.msg_warning("totalMass can not be negative: switching back to totalMass = 1");
+    total_mass.set(1.0);
+  }
+}
+
+bool one_nonnegative_mass_per_point(const std::vector<double>& vertex_mass, std::size_t n_points) {
+  bool ok = vertex_mass.size() == n_points;
+  for (double v : vertex_mass)
+    if (v < 0) ok = false;
+  return ok;
+}
+
+void add_gravity_velocity(MechanicalState& s, int v, const Vec3& g, double dt) {
+  std::vector<double>& vv = s.vec(v);
+  const int w = s.info().deriv_width;
+  double hg[3];
+  for (int c = 0; c < w; ++c) hg[c] = g[c] * dt;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    for (int c = 0; c < w; ++c) vv[i * w + c] += hg[c];
+}
+
 }  // namespace sinew::meshgeo

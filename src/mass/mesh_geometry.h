@@ -1,7 +1,8 @@
 // Element measures used by the mesh-based masses (DiagonalMass,
 // MeshMatrixMass), with SOFA's expressions (sofa::geometry::Edge/Triangle/
 // Quad/Tetrahedron/Hexahedron) on flat coordinate arrays of width `w`
-// (1, 2 or 3 spatial components per point).
+// (1, 2 or 3 spatial components per point), and the init steps both masses
+// share (binding, checks, SOFA's fallbacks for bad mass input).
 #pragma once
 
 #include <array>
@@ -87,5 +88,27 @@ std::size_t max_index_plus_one(const MeshTopologyBase& t, MassElement k);
 // (link, else the state of the topology's node). Reports and returns false
 // (component invalid) when one is missing.
 bool bind_mesh_mass(Mass& mass, Link<MeshTopologyBase>& topology, Link<MechanicalState>& geometry_state);
+
+// The element kind the mass will use, checked against the state: an empty
+// topology, or volume elements on a 1D/2D state, are reported and mark the
+// mass invalid (the result is then MassElement::none).
+MassElement checked_mass_element(Mass& mass, const MeshTopologyBase& t);
+
+// The elements of kind k must only use points present in both the mass's state
+// and the geometry state; otherwise reports the largest index and marks the
+// mass invalid.
+bool mass_elements_in_states(Mass& mass, const MeshTopologyBase& t, MassElement k, std::size_t state_size,
+                             std::size_t geometry_size);
+
+// SOFA resets a negative totalMass to 1 (with a warning) before deriving the
+// density from it.
+void reset_negative_total_mass(Mass& mass, Field<double>& total_mass);
+
+// A vertexMass list is usable when it has one non-negative value per point.
+bool one_nonnegative_mass_per_point(const std::vector<double>& vertex_mass, std::size_t n_points);
+
+// v += dt·g on every point (add_gravity_to_v of the diagonal masses: gravity
+// does not depend on the mass there).
+void add_gravity_velocity(MechanicalState& s, int v, const Vec3& g, double dt);
 
 }  // namespace sinew::meshgeo

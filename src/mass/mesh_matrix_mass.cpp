@@ -86,27 +86,12 @@ void MeshMatrixMass::init() {
   MechanicalState& s = *mstate;
   if (!meshgeo::bind_mesh_mass(*this, topology, geometry_state)) return;
   const MeshTopologyBase& t = *topology;
-  const MassElement k = meshgeo::mass_element(t);
-  if (k == MassElement::none) {
-    msg_error("the topology " + t.describe() + " is empty");
-    state_ = ComponentState::invalid;
-    return;
-  }
-  if ((k == MassElement::tetra || k == MassElement::hexa) && s.info().spatial_dim < 3) {
-    msg_error("volume elements need a 3D state");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  const MassElement k = meshgeo::checked_mass_element(*this, t);
+  if (k == MassElement::none) return;
   if (k == MassElement::edge) msg_warning("edge topologies get no mass (as in SOFA)");
   kind_ = static_cast<int>(k);
   lumped_ = lumping.get();
-  const std::size_t need = meshgeo::max_index_plus_one(t, k);
-  if (need > s.size() || need > geometry_state->size()) {
-    msg_error("an element of " + t.describe() + " uses point " + std::to_string(need - 1) + " but the state has " +
-              std::to_string(std::min(s.size(), geometry_state->size())) + " points");
-    state_ = ComponentState::invalid;
-    return;
-  }
+  if (!meshgeo::mass_elements_in_states(*this, t, k, s.size(), geometry_state->size())) return;
 
   // Edge list and edges of each element.
   edges_ = t.edges();
@@ -160,10 +145,7 @@ void MeshMatrixMass::init() {
   }
 
   auto init_from_total = [&] {
-    if (total_mass.value() < 0) {
-      msg_warning("totalMass can not be negative: switching back to totalMass = 1");
-      total_mass.set(1.0);
-    }
+    meshgeo::reset_negative_total_mass(*this, total_mass);
     const double total_in = total_mass.value();
     const double sum = compute_mass(std::vector<double>(n_elements_, 1.0));
     const double md = sum > std::numeric_limits<double>::epsilon() ? total_in / sum : 1.0;
@@ -217,9 +199,7 @@ void MeshMatrixMass::init() {
     }
   } else if (vm_set) {
     const std::vector<double> vm = vertex_mass.value();
-    bool ok = vm.size() == s.size();
-    for (double v : vm)
-      if (v < 0) ok = false;
+    const bool ok = meshgeo::one_nonnegative_mass_per_point(vm, s.size());
     if (em_set && !lumped_) {
       const std::vector<double> em = edge_mass.value();
       bool eok = em.size() == edges_.size();
@@ -304,14 +284,7 @@ void MeshMatrixMass::acc_from_f(const MechParams&, int a, int f) {
 }
 
 void MeshMatrixMass::add_gravity_to_v(int v, double dt) {
-  MechanicalState& s = *mstate;
-  std::vector<double>& vv = s.vec(v);
-  const Vec3 g = node()->gravity.value();
-  const int w = s.info().deriv_width;
-  double hg[3];
-  for (int c = 0; c < w; ++c) hg[c] = g[c] * dt;
-  for (std::size_t i = 0; i < s.size(); ++i)
-    for (int c = 0; c < w; ++c) vv[i * w + c] += hg[c];
+  meshgeo::add_gravity_velocity(*mstate, v, node()->gravity.value(), dt);
 }
 
 bool MeshMatrixMass::build_mass(MatrixSink& M) {

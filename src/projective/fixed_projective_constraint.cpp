@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/registry.h"
+#include "projective/indices_in_state.h"
 
 namespace sinew {
 
@@ -11,16 +12,7 @@ FixedProjectiveConstraint::FixedProjectiveConstraint() {}
 void FixedProjectiveConstraint::init() {
   ProjectiveConstraint::init();
   if (state() != ComponentState::valid) return;
-  const std::size_t n = mstate->size();
-  active_.clear();
-  for (unsigned i : indices.get()) {
-    if (i >= n) {
-      msg_warning("index " + std::to_string(i) + " is out of range (the state has " + std::to_string(n) +
-                  " DoFs); ignored");
-      continue;
-    }
-    active_.push_back(i);
-  }
+  keep_indices_in_state(*this, indices.get(), mstate->size(), active_);
 }
 
 void FixedProjectiveConstraint::zero(int id) {

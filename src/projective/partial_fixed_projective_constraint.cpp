@@ -5,6 +5,7 @@
 
 #include "core/registry.h"
 #include "core/roles.h"
+#include "projective/indices_in_state.h"
 
 namespace sinew {
 
@@ -32,15 +33,7 @@ class PartialFixedProjectiveConstraint final : public ProjectiveConstraint {
     mask_.assign(w, true);
     const auto& fd = fixed_directions.get();
     for (int c = 0; c < w && c < static_cast<int>(fd.size()); ++c) mask_[c] = fd[c] != 0;
-    active_.clear();
-    for (unsigned i : indices.get()) {
-      if (i >= mstate->size()) {
-        msg_warning("index " + std::to_string(i) + " is out of range (the state has " +
-                    std::to_string(mstate->size()) + " DoFs); ignored");
-        continue;
-      }
-      active_.push_back(i);
-    }
+    keep_indices_in_state(*this, indices.get(), mstate->size(), active_);
   }
   void project_response(int dx) override { zero(dx); }
   void project_velocity(int v, double) override {
