@@ -1094,16 +1094,16 @@ void TetraFEM::von_mises(std::span<const Vec3> x, int mode, std::vector<double>&
     vme[e] = v;
   }
   vmn.assign(x.size(), 0.0);
-  std::vector<int> count(x.size(), 0);
+  vm_count.assign(x.size(), 0);
   for (std::size_t e = 0; e < ne; ++e)
     for (int k = 0; k < 4; ++k) {
       const std::size_t i = static_cast<std::size_t>(tetra[e][k]);
       if (i >= vmn.size()) continue;
       vmn[i] += vme[e];
-      ++count[i];
+      ++vm_count[i];
     }
   for (std::size_t i = 0; i < vmn.size(); ++i)
-    if (count[i] > 0) vmn[i] /= static_cast<double>(count[i]);
+    if (vm_count[i] > 0) vmn[i] /= static_cast<double>(vm_count[i]);
 }
 
 std::vector<std::array<int, 4>> split_hexahedra(std::span<const std::array<unsigned, 8>> hexa, int nx, int ny) {

@@ -108,6 +108,7 @@ struct TetraFEM {
   std::vector<std::array<double, 6>> plastic;  // plastic strain per element
   double rest_volume = 0;                      // Σ V0
   std::vector<double> lame_lambda, lame_mu;    // von Mises only
+  std::vector<int> vm_count;                   // von Mises: elements per point (scratch, kept)
   std::vector<Eigen::Matrix4d> shape_inv;      // von Mises only: inverse of rows (1, X0_k)
 
   // Precompute everything from rest positions X0 and per-element E, ν

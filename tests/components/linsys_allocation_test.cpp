@@ -181,27 +181,33 @@ TEST(LinsysAllocation, MappedAssemblyDoesNotAllocateAfterTheFirstStepAndMatchesT
 // (the first steps of a corotational beam turn exact zeros into non-zeros,
 // which changes the filtered pattern SparseLDL factorises, as in SOFA).
 TEST(LinsysAllocation, SteadyImplicitStepsDoNotAllocate) {
-  for (const char* solver :
-       {R"(<CGLinearSolver iterations="25" tolerance="1e-9" threshold="1e-9"/>)",
-        R"(<CGLinearSolver template="CompressedRowSparseMatrixMat3x3d" iterations="25" tolerance="1e-9" threshold="1e-9"/>)",
-        R"(<SparseLDLSolver template="CompressedRowSparseMatrixMat3x3d"/>)"}) {
-    auto s = load(std::string(R"(<Node name="root" dt="0.02" gravity="0 -10 0">
+  const std::string cg = R"(<CGLinearSolver iterations="25" tolerance="1e-9" threshold="1e-9"/>)";
+  const std::string hexa = R"(<HexahedronFEMForceField youngModulus="4000" poissonRatio="0.3" method="large"/>)";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {cg, hexa},
+      {R"(<CGLinearSolver template="CompressedRowSparseMatrixMat3x3d" iterations="25" tolerance="1e-9" threshold="1e-9"/>)",
+       hexa},
+      {R"(<SparseLDLSolver template="CompressedRowSparseMatrixMat3x3d"/>)", hexa},
+      // von Mises stresses are recomputed at the end of every step.
+      {cg, R"(<TetrahedronFEMForceField youngModulus="4000" poissonRatio="0.3" computeVonMisesStress="1"/>)"}};
+  for (const auto& [solver, forcefield] : cases) {
+    auto s = load(R"(<Node name="root" dt="0.02" gravity="0 -10 0">
       <DefaultAnimationLoop/>
-      <EulerImplicitSolver rayleighStiffness="0.1" rayleighMass="0.1"/>)") +
+      <EulerImplicitSolver rayleighStiffness="0.1" rayleighMass="0.1"/>)" +
                   solver + R"(
       <MechanicalObject/>
       <UniformMass totalMass="320"/>
       <RegularGridTopology nx="4" ny="4" nz="20" xmin="-9" xmax="-6" ymin="0" ymax="3" zmin="0" zmax="19"/>
       <BoxROI name="box" box="-10 -1 -0.0001  -5 4 0.0001"/>
       <FixedProjectiveConstraint indices="@box.indices"/>
-      <HexahedronFEMForceField youngModulus="4000" poissonRatio="0.3" method="large"/>
+      )" + forcefield + R"(
     </Node>)");
     ASSERT_TRUE(s.root);
     for (int step = 0; step < 10; ++step) animate(*s.root, 0.0);
     for (int step = 10; step < 15; ++step) {
       const long before = g_allocations.load();
       animate(*s.root, 0.0);
-      EXPECT_EQ(g_allocations.load() - before, 0) << solver << " step " << step;
+      EXPECT_EQ(g_allocations.load() - before, 0) << solver << forcefield << " step " << step;
     }
   }
 }
