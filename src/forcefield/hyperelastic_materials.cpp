@@ -86,10 +86,10 @@ const std::array<MaterialName, 8>& material_names() {
       {"StVenantKirchhoff", true, Material::stvenant_kirchhoff, 2, "mu lambda"},
       {"NeoHookean", true, Material::neo_hookean, 2, "mu lambda"},
       {"MooneyRivlin", true, Material::mooney_rivlin, 3, "c1 c2 k0"},
-      {"VerondaWestman", false, Material::arruda_boyce, 0, ""},
-      {"Costa", false, Material::arruda_boyce, 0, ""},
+      {"VerondaWestman", true, Material::veronda_westman, 3, "c1 c2 k0"},
+      {"Costa", true, Material::costa, 8, "a k0 bff bfs bss bfn bsn bnn"},
       {"Ogden", true, Material::ogden, 3, "mu1 alpha1 k0"},
-      {"StableNeoHookean", false, Material::arruda_boyce, 0, ""},
+      {"StableNeoHookean", true, Material::stable_neo_hookean, 2, "mu lambda"},
   }};
   return names;
 }
@@ -353,14 +353,142 @@ void ogden_dstress(const Strain&, const double*, const TangentCache& c, const Sy
   }
 }
 
+// ------------------------------------------------------------ Veronda–Westman
+double veronda_westman_energy(const Strain& s, const double* p) {
+  const double I1 = s.I1, J = s.J, c1 = p[0], c2 = p[1], k0 = p[2];
+  const double I2 = (std::pow(I1, 2.0) - trace_c2(s.C)) / 2;
+  return c1 * (std::exp(c2 * (std::pow(J, -2.0 / 3.0) * I1 - 3)) - 1) -
+         c1 * c2 * (std::pow(J, -4.0 / 3.0) * I2 - 3) / 2 + k0 * std::log(J) * std::log(J) / 2;
+}
+
+void veronda_westman_stress(const Strain& s, const double* p, Sym3& S) {
+  Sym3 ic;
+  invert(s.C, ic);
+  const double I1 = s.I1, J = s.J, c1 = p[0], c2 = p[1], k0 = p[2];
+  const double I2 = (std::pow(I1, 2.0) - trace_c2(s.C)) / 2;
+  // Exponential isochoric I1 term, then the (negative) I2 term that cancels
+  // the initial shear stiffness excess, then the volumetric term.
+  S = (kId - ic * I1 / 3.0) * 2.0 * c1 * c2 * std::pow(J, -2.0 / 3.0) *
+          std::exp(c2 * (std::pow(J, -2.0 / 3.0) * I1 - 3)) +
+      (kId * I1 - s.C - ic * I2 * 2.0 / 3.0) * (-c1 * c2 * std::pow(J, -4.0 / 3.0)) + ic * k0 * std::log(J);
+}
+
+void veronda_westman_dstress(const Strain& s, const double* p, const TangentCache& c, const Sym3& H, Sym3& out) {
+  const Sym3& ic = c.inv_c;
+  const Sym3& C = s.C;
+  const double I1 = s.I1, I2 = c.i2, c1 = p[0], c2 = p[1], k0 = p[2];
+  const double tr_ich = contract(ic, H);  // C⁻¹:H
+  const Sym3 chc = sandwich(ic, H);       // C⁻¹HC⁻¹
+  const double tr_ch = contract(C, H);    // C:H
+  const double trH = H[0] + H[2] + H[5];
+  // Three parts: the exponential term at fixed exponent, the variation of its
+  // exponent, and the I2 term; then the volumetric term.
+  out = (ic * I1 * tr_ich / 9.0 - ic * trH / 3.0 + chc / 3.0 * I1 - kId * tr_ich / 3.0) * 2.0 * c1 * c2 * c.pj[0] *
+            c.ex +
+        (kId - ic * I1 / 3.0) * c.ex * 2.0 * c1 * c2 * c2 * c.pj[1] * (-I1 * tr_ich / 3.0 + trH) +
+        (ic * -4.0 * tr_ich * I2 / 9.0 + ic * 2.0 * I1 * trH / 3.0 - ic * 2.0 * tr_ch / 3.0 - chc * 2.0 * I2 / 3.0 +
+         kId * tr_ich * I1 * (2.0 / 3.0) - kId * trH - C * tr_ich * (2.0 / 3.0) + H) *
+            c1 * c2 * c.pj[1] +
+        chc * -k0 * c.log_j + ic * k0 * tr_ich / 2.0;
+}
+
+// ------------------------------------------------------------ Costa
+namespace {
+
+// E = (C − I)/2, Q = Σ b_ij E_ij² and U∘E (each stored entry of E times its b).
+void costa_strain(const Strain& s, const double* p, double& Q, Sym3& ue) {
+  const double bff = p[2], bfs = p[3], bss = p[4], bfn = p[5], bsn = p[6], bnn = p[7];
+  const Sym3 E = (s.C - kId) / 2.0;
+  Q = bff * E[0] * E[0] + 2 * bfs * E[1] * E[1] + bss * E[2] * E[2] + 2 * bfn * E[3] * E[3] +
+      2 * bsn * E[4] * E[4] + bnn * E[5] * E[5];
+  ue = Sym3{{bff * E[0], bfs * E[1], bss * E[2], bfn * E[3], bsn * E[4], bnn * E[5]}};
+}
+
+}  // namespace
+
+double costa_energy(const Strain& s, const double* p) {
+  const double a = p[0], k0 = p[1], J = s.J;
+  double Q;
+  Sym3 ue;
+  costa_strain(s, p, Q, ue);
+  const double qbar = std::pow(J, -4.0 / 3.0) * Q;
+  return a * (std::exp(qbar) - 1) / 2 + k0 * (J * std::log(J) - J - 1);
+}
+
+void costa_stress(const Strain& s, const double* p, Sym3& S) {
+  Sym3 ic;
+  invert(s.C, ic);
+  const double a = p[0], k0 = p[1], J = s.J;
+  double Q;
+  Sym3 ue;
+  costa_strain(s, p, Q, ue);
+  const double qbar = std::pow(J, -4.0 / 3.0) * Q;
+  S = (ue - ic * (2.0 / 3.0) * Q) * (a * std::exp(qbar) * std::pow(J, -4.0 / 3.0)) + ic * k0 * J * std::log(J);
+}
+
+// SOFA's tangent drops k0 from the −J ln J C⁻¹HC⁻¹ volumetric term; kept so
+// that results match SOFA (exact derivative of the stress only when k0 = 1).
+void costa_dstress(const Strain& s, const double* p, const TangentCache& c, const Sym3& H, Sym3& out) {
+  const Sym3& ic = c.inv_c;
+  const double a = p[0], k0 = p[1], J = s.J, Q = c.q;
+  const double bff = p[2], bfs = p[3], bss = p[4], bfn = p[5], bsn = p[6], bnn = p[7];
+  const Sym3 uh{{bff * H[0], bfs * H[1], bss * H[2], bfn * H[3], bsn * H[4], bnn * H[5]}};
+  const double tr_hue = contract(c.ue, H);  // dQ = (U∘E):H
+  const double tr_ich = contract(ic, H);    // C⁻¹:H
+  const Sym3 chc = sandwich(ic, H);
+  out = ((c.ue - ic * (2.0 / 3.0) * Q) * ((-2.0 / 3.0) * tr_ich) + uh / 2.0 + chc * (2.0 / 3.0) * Q -
+         ic * (2.0 / 3.0) * tr_hue) *
+            (a * c.pj[1] * c.ex) +
+        (c.ue - ic * (2.0 / 3.0) * Q) * (a * c.pj[3] * (tr_hue - (2.0 / 3.0) * Q * tr_ich) * c.ex) +
+        ic * k0 / 2.0 * J * (c.log_j + 1) * tr_ich - chc * J * c.log_j;
+}
+
+// ------------------------------------------------------------ stable neo-Hookean
+double stable_neo_hookean_energy(const Strain& s, const double* p) {
+  const double mu = p[0], lambda = p[1];
+  const double alpha = 1 + mu / (lambda + mu);  // makes the rest state stress free
+  return 0.5 * (mu * (s.I1 - 3) + (lambda + mu) * std::pow(s.J - alpha, 2));
+}
+
+void stable_neo_hookean_stress(const Strain& s, const double* p, Sym3& S) {
+  Sym3 ic;
+  invert(s.C, ic);
+  const double mu = p[0], lambda = p[1], J = s.J;
+  const double alpha = 1 + mu / (lambda + mu);
+  S = kId * mu + ic * ((lambda + mu) * J * (J - alpha));
+}
+
+void stable_neo_hookean_dstress(const Strain& s, const double* p, const TangentCache& c, const Sym3& H, Sym3& out) {
+  const Sym3& ic = c.inv_c;
+  const double mu = p[0], lambda = p[1], J = s.J;
+  const double alpha = 1 + mu / (lambda + mu);
+  const double tr_ich = contract(ic, H);
+  const Sym3 chc = sandwich(ic, H);
+  out = (chc * (-2 * J * (J - alpha)) + ic * (J * (2 * J - alpha) * tr_ich)) * (0.5 * (lambda + mu));
+}
+
 bool prepare_tangent(Material m, const Strain& s, const double* p, TangentCache& c) {
   if (m == Material::stvenant_kirchhoff) return true;
+  // A singular C (J = 0, reachable only by the stable neo-Hookean, which keeps
+  // such elements) leaves a zero inverse rather than the previous element's.
+  c.inv_c = Sym3{};
   invert(s.C, c.inv_c);
+  if (m == Material::stable_neo_hookean) return true;
   c.log_j = std::log(s.J);
   // The same powers SOFA recomputes at each application of the tensor.
-  if (m == Material::arruda_boyce || m == Material::mooney_rivlin) {
+  if (m == Material::arruda_boyce || m == Material::mooney_rivlin || m == Material::veronda_westman ||
+      m == Material::costa) {
     c.pj[0] = std::pow(s.J, -2.0 / 3.0);
     c.pj[1] = std::pow(s.J, -4.0 / 3.0);
+  }
+  if (m == Material::veronda_westman) {
+    c.i2 = (std::pow(s.I1, 2.0) - trace_c2(s.C)) / 2;
+    c.ex = std::exp(p[1] * (s.I1 * c.pj[0] - 3.0));
+  }
+  if (m == Material::costa) {
+    c.pj[3] = std::pow(s.J, -8.0 / 3.0);
+    costa_strain(s, p, c.q, c.ue);
+    c.ex = std::exp(std::pow(s.J, -4.0 / 3.0) * c.q);
   }
   if (m == Material::arruda_boyce) {
     c.pj[2] = std::pow(s.J, -2.0);

@@ -63,13 +63,23 @@ Sym3 sandwich(const Sym3& a, const Sym3& h);
 // A:H counting off-diagonal entries twice, in SOFA's order.
 double contract(const Sym3& a, const Sym3& h);
 
-enum class Material { arruda_boyce, stvenant_kirchhoff, neo_hookean, mooney_rivlin, ogden };
+enum class Material {
+  arruda_boyce,
+  stvenant_kirchhoff,
+  neo_hookean,
+  mooney_rivlin,
+  veronda_westman,
+  costa,
+  ogden,
+  stable_neo_hookean
+};
+// Largest ParameterSet (Costa).
+inline constexpr int kMaxParams = 8;
 
-// SOFA's option names, in the order of its OptionsGroup (the unsupported ones
-// are listed to give a precise error message).
+// SOFA's option names, in the order of its OptionsGroup.
 struct MaterialName {
   std::string_view name;
-  bool supported;
+  bool supported;  // all of SOFA's materials are; kept so a refused one gets a precise error
   Material material;
   int nb_params;  // required ParameterSet size
   std::string_view params;  // meaning of the parameters
@@ -91,6 +101,10 @@ struct TangentCache {
   // J^{-2/3}, J^{-4/3}, J^{-2}, J^{-8/3}, J^{-10/3}, I1³, I1⁴, I1⁵.
   double pj[5] = {}, pi3 = 0, pi4 = 0, pi5 = 0;
   double ogden[6][6] = {};  // Ogden: elasticity tensor acting on stored H values (already halved)
+  // Veronda–Westman: ex = exp(c2 (J^{-2/3} I1 − 3)), i2 = I2.
+  // Costa: ex = exp(Q̄), q = Q, ue = the stiffness-weighted Green strain U∘E.
+  double ex = 0, i2 = 0, q = 0;
+  Sym3 ue;
 };
 
 // ---- per material (p = ParameterSet)
@@ -121,7 +135,27 @@ void ogden_dstress(const Strain& s, const double* p, const TangentCache& c, cons
 // Fills c.ogden (the spectral elasticity tensor); false when the eigen solver fails.
 bool ogden_prepare(const Strain& s, const double* p, TangentCache& c);
 
-// Fills the cache for any material (inverse of C, ln J, Ogden's tensor).
+// Veronda–Westman: c1 = p0, c2 = p1, bulk k0 = p2.
+// W = c1 (exp(c2 (J^{-2/3} I1 − 3)) − 1) − c1 c2/2 (J^{-4/3} I2 − 3) + k0/2 (ln J)².
+double veronda_westman_energy(const Strain& s, const double* p);
+void veronda_westman_stress(const Strain& s, const double* p, Sym3& S);
+void veronda_westman_dstress(const Strain& s, const double* p, const TangentCache& c, const Sym3& H, Sym3& out);
+
+// Costa (orthotropic exponential, fibre/sheet/normal axes = global x/y/z as in
+// SOFA): a = p0, bulk k0 = p1, b_ff b_fs b_ss b_fn b_sn b_nn = p2..p7.
+// E = (C − I)/2, Q = Σ b_ij E_ij² (off-diagonal terms twice), Q̄ = J^{-4/3} Q,
+// W = a/2 (exp(Q̄) − 1) + k0 (J ln J − J − 1).
+double costa_energy(const Strain& s, const double* p);
+void costa_stress(const Strain& s, const double* p, Sym3& S);
+void costa_dstress(const Strain& s, const double* p, const TangentCache& c, const Sym3& H, Sym3& out);
+
+// Stable neo-Hookean (Smith, de Goes, Kim 2018): μ = p0, λ = p1, α = 1 + μ/(λ + μ).
+// W = ½ (μ (I1 − 3) + (λ + μ)(J − α)²); needs no ln J, so inverted elements keep their force.
+double stable_neo_hookean_energy(const Strain& s, const double* p);
+void stable_neo_hookean_stress(const Strain& s, const double* p, Sym3& S);
+void stable_neo_hookean_dstress(const Strain& s, const double* p, const TangentCache& c, const Sym3& H, Sym3& out);
+
+// Fills the cache for any material (inverse of C, ln J, powers of J, Ogden's tensor).
 bool prepare_tangent(Material m, const Strain& s, const double* p, TangentCache& c);
 
 }  // namespace sinew::hyper

@@ -30,7 +30,8 @@ Vec3 mat_vec(const Mat3& m, const Vec3& w) {
   return r;
 }
 
-bool needs_log_j(Material m) { return m != Material::stvenant_kirchhoff; }
+// StVK and the stable neo-Hookean are defined for J <= 0 (the latter is made for it).
+bool needs_log_j(Material m) { return m != Material::stvenant_kirchhoff && m != Material::stable_neo_hookean; }
 
 void stress(Material m, const Strain& s, const double* p, Sym3& S) {
   switch (m) {
@@ -38,7 +39,10 @@ void stress(Material m, const Strain& s, const double* p, Sym3& S) {
     case Material::stvenant_kirchhoff: stvk_stress(s, p, S); break;
     case Material::neo_hookean: neo_hookean_stress(s, p, S); break;
     case Material::mooney_rivlin: mooney_rivlin_stress(s, p, S); break;
+    case Material::veronda_westman: veronda_westman_stress(s, p, S); break;
+    case Material::costa: costa_stress(s, p, S); break;
     case Material::ogden: ogden_stress(s, p, S); break;
+    case Material::stable_neo_hookean: stable_neo_hookean_stress(s, p, S); break;
   }
 }
 
@@ -48,7 +52,10 @@ double energy_density(Material m, const Strain& s, const double* p) {
     case Material::stvenant_kirchhoff: return stvk_energy(s, p);
     case Material::neo_hookean: return neo_hookean_energy(s, p);
     case Material::mooney_rivlin: return mooney_rivlin_energy(s, p);
+    case Material::veronda_westman: return veronda_westman_energy(s, p);
+    case Material::costa: return costa_energy(s, p);
     case Material::ogden: return ogden_energy(s, p);
+    case Material::stable_neo_hookean: return stable_neo_hookean_energy(s, p);
   }
   return 0;
 }
@@ -61,7 +68,7 @@ std::vector<TetraHyperelasticity::Issue> TetraHyperelasticity::init(
     Material material, const std::vector<double>& params) {
   std::vector<Issue> issues;
   material_ = material;
-  for (int k = 0; k < 3; ++k) p_[k] = k < static_cast<int>(params.size()) ? params[k] : 0.0;
+  for (int k = 0; k < kMaxParams; ++k) p_[k] = k < static_cast<int>(params.size()) ? params[k] : 0.0;
   tets_ = tets;
   edges_ = edges;
   edges_in_tet_ = edges_in_tet;
@@ -192,7 +199,10 @@ void TetraHyperelasticity::update_tangent() {
           case Material::stvenant_kirchhoff: stvk_dstress(c.strain, p_, cache, H[m], out); break;
           case Material::neo_hookean: neo_hookean_dstress(c.strain, p_, cache, H[m], out); break;
           case Material::mooney_rivlin: mooney_rivlin_dstress(c.strain, p_, cache, H[m], out); break;
+          case Material::veronda_westman: veronda_westman_dstress(c.strain, p_, cache, H[m], out); break;
+          case Material::costa: costa_dstress(c.strain, p_, cache, H[m], out); break;
           case Material::ogden: ogden_dstress(c.strain, p_, cache, H[m], out); break;
+          case Material::stable_neo_hookean: stable_neo_hookean_dstress(c.strain, p_, cache, H[m], out); break;
         }
         const Vec3 v = mat_vec(F, mul(out, svk));
         N(m, 0) = v[0];

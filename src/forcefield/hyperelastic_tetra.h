@@ -36,7 +36,8 @@ class TetraHyperelasticity {
                           const std::vector<double>& params);
 
   // f += forces at x. Elements with J <= 0 (inverted or flat) are skipped for
-  // materials that need ln J; the first one is kept in bad_element().
+  // materials that need ln J (all but StVenantKirchhoff and StableNeoHookean);
+  // the first one is kept in bad_element().
   void add_force(std::span<const Vec3> x, std::span<Vec3> f);
   // df += k·K·dx with K = ∂f/∂x at the positions of the last add_force.
   void add_dforce(std::span<const Vec3> dx, std::span<Vec3> df, double k);
@@ -78,7 +79,7 @@ class TetraHyperelasticity {
   void update_tangent();
 
   Material material_ = Material::arruda_boyce;
-  double p_[3] = {0, 0, 0};
+  double p_[kMaxParams] = {};
   std::vector<std::array<unsigned, 4>> tets_;
   std::vector<std::array<unsigned, 2>> edges_;
   std::vector<std::array<unsigned, 6>> edges_in_tet_;

@@ -91,7 +91,8 @@ void register_tetrahedron_hyperelasticity_fem_force_field(Registry& r) {
   info.name = "TetrahedronHyperelasticityFEMForceField";
   info.category = "ForceField/FEM";
   info.description =
-      "hyperelastic tetrahedral finite elements (ArrudaBoyce, StVenantKirchhoff, NeoHookean, MooneyRivlin, Ogden)";
+      "hyperelastic tetrahedral finite elements (ArrudaBoyce, StVenantKirchhoff, NeoHookean, MooneyRivlin, "
+      "VerondaWestman, Costa, Ogden, StableNeoHookean)";
   info.templates = {"Vec3d"};
   info.default_template = "Vec3d";
   info.requirement = Requirement::state;

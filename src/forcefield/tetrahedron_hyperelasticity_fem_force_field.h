@@ -1,6 +1,7 @@
 // TetrahedronHyperelasticityFEMForceField: hyperelastic linear tetrahedra
 // (total Lagrangian) with one of SOFA's materials: ArrudaBoyce (default),
-// StVenantKirchhoff, NeoHookean, MooneyRivlin, Ogden (spec/mechanics.md §2.8).
+// StVenantKirchhoff, NeoHookean, MooneyRivlin, VerondaWestman, Costa, Ogden,
+// StableNeoHookean (spec/mechanics.md §2.8).
 // The kernel lives in forcefield/hyperelastic_tetra.h, the materials in
 // forcefield/hyperelastic_materials.h.
 #pragma once
@@ -15,12 +16,16 @@ class TetrahedronHyperelasticityFEMForceField final : public ForceField {
   Field<std::string> material_name{
       this, "materialName", "ArrudaBoyce",
       "material: ArrudaBoyce (mu k0), StVenantKirchhoff (mu lambda), NeoHookean (mu lambda), MooneyRivlin "
-      "(c1 c2 k0) or Ogden (mu1 alpha1 k0); VerondaWestman, Costa and StableNeoHookean are not supported",
+      "(c1 c2 k0), VerondaWestman (c1 c2 k0), Costa (a k0 bff bfs bss bfn bsn bnn), Ogden (mu1 alpha1 k0) or "
+      "StableNeoHookean (mu lambda)",
       "Material"};
   Field<std::vector<double>> parameter_set{this, "ParameterSet", {},
                                            "the material parameters (see materialName)", "Material"};
   Field<std::vector<Vec3>> anisotropy_directions{
-      this, "AnisotropyDirections", {}, "directions of anisotropy (unused by the supported materials)", "Material"};
+      this, "AnisotropyDirections", {},
+      "directions of anisotropy; as in SOFA no material uses them (Costa's fibre, sheet and normal axes are the "
+      "global x, y, z axes)",
+      "Material"};
   Field<bool> matrix_regularization{this, "matrixRegularization", false,
                                     "regularisation of the stiffness matrix (unused, as in SOFA)", "Material"};
   Link<MeshTopologyBase> topology{this, "topology", "topology holding the tetrahedra (default: the node's)"};
