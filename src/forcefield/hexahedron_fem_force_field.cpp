@@ -2,6 +2,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "topology/sparse_grid_topology.h"
 
 namespace sinew {
 
@@ -66,7 +67,12 @@ void HexahedronFEMBase<Role>::init() {
     for (int k = 0; k < 8; ++k) h[i][k] = static_cast<int>(hexas[i][k]);
   rest_.assign(as_vec3(x0).begin(), as_vec3(x0).end());
   fem_.update_stiffness = update_stiffness_matrix.value();
-  const auto issues = fem_.init(as_vec3(x0), h, E, nu, m);
+  // On a sparse grid each element's stiffness is scaled by the grid's filling
+  // coefficient (0.5 on boundary cells, averaged over virtual finer levels).
+  std::vector<double> stiffness_coef;
+  if (const auto* grid = dynamic_cast<const SparseGridTopology*>(topology.get()))
+    for (std::size_t i = 0; i < ne; ++i) stiffness_coef.push_back(grid->stiffness_coef(i));
+  const auto issues = fem_.init(as_vec3(x0), h, E, nu, m, stiffness_coef);
   bool fatal = false;
   for (const auto& is : issues) {
     const std::string where = is.element >= 0 ? "element " + std::to_string(is.element) + ": " : "";
@@ -119,14 +125,19 @@ void HexahedronFEMForceFieldAndMass::init() {
       rho;
   element_mass_.assign(ne, 0.0);
   particle_mass_.assign(np, 0.0);
+  // On a sparse grid both masses are scaled by the grid's filling coefficient.
+  const auto* grid = dynamic_cast<const SparseGridTopology*>(topology.get());
   for (std::size_t e = 0; e < ne; ++e) {
+    const double coef = grid ? static_cast<double>(grid->mass_coef(e)) : 1.0;
     const auto& n = fem_.rest[e];  // rotated rest element
     const double vol = (n[1] - n[0]).norm() * (n[3] - n[0]).norm() * (n[4] - n[0]).norm();
     element_mass_[e] = vol * integral;
+    if (grid) element_mass_[e] *= coef;
     // Gravity uses the physical mass of the unrotated element, an eighth per corner.
     const auto& h = fem_.hexa[e];
-    const double v0 = (rest_[h[1]] - rest_[h[0]]).norm() * (rest_[h[3]] - rest_[h[0]]).norm() *
-                      (rest_[h[4]] - rest_[h[0]]).norm();
+    double v0 = (rest_[h[1]] - rest_[h[0]]).norm() * (rest_[h[3]] - rest_[h[0]]).norm() *
+                (rest_[h[4]] - rest_[h[0]]).norm();
+    if (grid) v0 *= coef;
     const double m = (v0 * rho) / 8.0;
     for (int w = 0; w < 8; ++w) particle_mass_[h[w]] += m;
   }

@@ -64,10 +64,8 @@ bool BarycentricMapping::init_mapping() {
   if (dynamic_cast<RegularGridTopology*>(&topo)) {
     ok = init_regular_grid(out);
   } else if (dynamic_cast<SparseGridTopology*>(&topo)) {
+    // Also SparseGridRamificationTopology: its cube look-ups are virtual.
     ok = init_sparse_grid(out);
-  } else if (topo.class_name() == "SparseGridRamificationTopology") {
-    msg_error("input topology " + topo.describe() + ": the SparseGridRamificationTopology mapper is not supported yet");
-    return false;
   } else {
     ok = init_mesh(out, in, is_set_container(topo));
   }

@@ -1,5 +1,6 @@
 #include "topology/sparse_grid_topology.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -207,19 +208,55 @@ void SparseGridTopology::init() {
 }
 
 void SparseGridTopology::generate() {
-  build_failed_ = false;
+  VecNi<3> dims;
+  std::vector<Vec3> vertices;
+  std::vector<std::vector<unsigned>> facets;
+  if (!prepare(dims, vertices, facets)) return;
+  Level level;
+  const int levels = nb_virtual_finer_levels.value();
+  if (levels == 0) {
+    if (!build_from_surface(level, dims, min.get(), max.get(), cell_width.value(), only_inside_cells.value(), vertices,
+                            facets)) {
+      build_failed_ = true;
+      return;
+    }
+  } else {
+    // Virtual finer levels: the finest grid has (n-1)·2^levels + 1 points per axis (same box),
+    // then it is coarsened `levels` times.
+    Level finest;
+    if (!build_from_surface(finest, finest_dims(dims, levels), min.get(), max.get(), 0.0, false, vertices, facets)) {
+      build_failed_ = true;
+      return;
+    }
+    for (int i = 0; i < levels; ++i) {
+      Level coarser;
+      coarsen(i == 0 ? finest : level, coarser);
+      level = std::move(coarser);
+    }
+  }
+  adopt(std::move(level));
+}
+
+VecNi<3> SparseGridTopology::finest_dims(VecNi<3> dims, int levels) {
+  for (int i = 0; i < levels; ++i)
+    for (int a = 0; a < 3; ++a) dims[a] = (dims[a] - 1) * 2 + 1;
+  return dims;
+}
+
+bool SparseGridTopology::prepare(VecNi<3>& dims, std::vector<Vec3>& vertices,
+                                 std::vector<std::vector<unsigned>>& facets) {
+  build_failed_ = true;  // until the input is read
   types_.clear();
   stiffness_coefs_.clear();
   mass_coefs_.clear();
-  VecNi<3> dims = n.get();
+  dims = n.get();
   for (int a = 0; a < 3; ++a)
     if (dims[a] < 2) dims[a] = 2;
   n.set(dims);
 
   if (nb_virtual_finer_levels.value() < 0) {
     msg_error("nbVirtualFinerLevels must be >= 0 (got " + std::to_string(nb_virtual_finer_levels.value()) + ")");
-    build_failed_ = true;
-    return;
+    return false;
   }
   const std::string& file = filename.value();
   auto ends_with = [&](const char* suffix) {
@@ -228,17 +265,15 @@ void SparseGridTopology::generate() {
   };
   if (ends_with(".raw") || ends_with(".voxel")) {
     msg_error("voxel files are not supported yet: '" + file + "'");
-    build_failed_ = true;
-    return;
+    return false;
   }
-  std::vector<Vec3> vertices;
-  std::vector<std::vector<unsigned>> facets;
+  vertices.clear();
+  facets.clear();
   if (file.empty()) {
     vertices = position.get();
     if (vertices.empty()) {
       msg_warning("no filename specified nor vertices given as parameters.");
-      build_failed_ = true;
-      return;
+      return false;
     }
     for (const Triangle& t : triangles_f.get()) facets.push_back({t[0], t[1], t[2]});
     for (const Quad& q : quads_f.get()) facets.push_back({q[0], q[1], q[2], q[3]});
@@ -251,8 +286,7 @@ void SparseGridTopology::generate() {
     else err = "unsupported mesh format";
     if (!mesh) {
       msg_error("Loading mesh " + file + " failed: " + err);
-      build_failed_ = true;
-      return;
+      return false;
     }
     if (!mesh->face_positions.empty()) {
       // OBJ: the faces as written, indexing the raw vertex list.
@@ -270,8 +304,7 @@ void SparseGridTopology::generate() {
     }
     if (vertices.empty()) {
       msg_error("Loading mesh " + file + " failed: no vertex");
-      build_failed_ = true;
-      return;
+      return false;
     }
   }
   for (std::size_t f = 0; f < facets.size(); ++f)
@@ -279,34 +312,13 @@ void SparseGridTopology::generate() {
       if (v >= vertices.size()) {
         msg_error("facet " + std::to_string(f) + " uses vertex " + std::to_string(v) + " but the mesh has " +
                   std::to_string(vertices.size()) + " vertices");
-        build_failed_ = true;
-        return;
+        return false;
       }
-  Level level;
-  const int levels = nb_virtual_finer_levels.value();
-  if (levels == 0) {
-    if (!build_from_surface(level, dims, min.get(), max.get(), cell_width.value(), only_inside_cells.value(), vertices,
-                            facets)) {
-      build_failed_ = true;
-      return;
-    }
-  } else {
-    // Virtual finer levels: the finest grid has (n-1)·2^levels + 1 points per axis (same box),
-    // then it is coarsened `levels` times.
-    VecNi<3> fine = dims;
-    for (int i = 0; i < levels; ++i)
-      for (int a = 0; a < 3; ++a) fine[a] = (fine[a] - 1) * 2 + 1;
-    Level finest;
-    if (!build_from_surface(finest, fine, min.get(), max.get(), 0.0, false, vertices, facets)) {
-      build_failed_ = true;
-      return;
-    }
-    for (int i = 0; i < levels; ++i) {
-      Level coarser;
-      coarsen(i == 0 ? finest : level, coarser);
-      level = std::move(coarser);
-    }
-  }
+  build_failed_ = false;
+  return true;
+}
+
+void SparseGridTopology::adopt(Level&& level) {
   min.set(level.min);
   max.set(level.max);
   n.set(level.grid.n);
@@ -568,13 +580,20 @@ unsigned SparseGridTopology::find_cube(const Vec3& p, double& fx, double& fy, do
 }
 
 unsigned SparseGridTopology::find_nearest_cube(const Vec3& p, double& fx, double& fy, double& fz) const {
-  const auto& hexas = hexahedra();
+  const std::vector<Hexa>& hexas = hexahedra();  // generates the grid first
+  return nearest_boundary_cube(position.get(), hexas, types_, p, fx, fy, fz);
+}
+
+unsigned SparseGridTopology::nearest_boundary_cube(const std::vector<Vec3>& pts, const std::vector<Hexa>& hexas,
+                                                   const std::vector<CellType>& types, const Vec3& p, double& fx,
+                                                   double& fy, double& fz) {
   if (hexas.empty()) return kInvalidIndex;
-  const auto& pts = position.get();
   std::size_t best = 0;
   float best_len = 99999999.0f;
-  for (std::size_t w = 0; w < hexas.size(); ++w) {
-    if (types_[w] != CellType::boundary) continue;
+  // A ramified finest level has more hexahedra than types (SOFA keeps the unramified types).
+  const std::size_t typed = std::min(hexas.size(), types.size());
+  for (std::size_t w = 0; w < typed; ++w) {
+    if (types[w] != CellType::boundary) continue;
     const Vec3 centre = (pts[hexas[w][0]] + pts[hexas[w][6]]) * .5;
     const float len = static_cast<float>((p - centre).norm());
     if (len < best_len) {

@@ -10,7 +10,7 @@
 
 namespace sinew {
 
-class SparseGridTopology final : public MeshTopology {
+class SparseGridTopology : public MeshTopology {
  public:
   enum class CellType { outside, inside, boundary };
 
@@ -36,14 +36,14 @@ class SparseGridTopology final : public MeshTopology {
   float mass_coef(std::size_t h) const { return h < mass_coefs_.size() ? mass_coefs_[h] : 1.0f; }
 
   // Grid look-ups (SOFA's findCube / findNearestCube): the hexahedron index and the local
-  // coordinates of `p` in it; kInvalidIndex when not found.
-  unsigned find_cube(const Vec3& p, double& fx, double& fy, double& fz) const;
-  unsigned find_nearest_cube(const Vec3& p, double& fx, double& fy, double& fz) const;
+  // coordinates of `p` in it; kInvalidIndex when not found. Virtual: SparseGridRamificationTopology
+  // answers through its finest level.
+  virtual unsigned find_cube(const Vec3& p, double& fx, double& fy, double& fz) const;
+  virtual unsigned find_nearest_cube(const Vec3& p, double& fx, double& fy, double& fz) const;
 
  protected:
   void generate() override;
 
- private:
   // The underlying regular grid (SOFA's _regularGrid).
   struct Grid {
     VecNi<3> n{2, 2, 2};
@@ -73,6 +73,20 @@ class SparseGridTopology final : public MeshTopology {
   static void coarsen(const Level& fine, Level& coarse);
   // Points = distinct corners of `cells` (grid coordinates) in lexicographic order; hexahedra.
   static void number_points(Level& level, const std::vector<std::array<int, 3>>& cells);
+  // The steps of generate() shared with SparseGridRamificationTopology.
+  // Resets the results, clamps n (returned in dims), checks nbVirtualFinerLevels and reads the
+  // surface (file or position + triangles/quads); false after an error (build_failed_ set).
+  bool prepare(VecNi<3>& dims, std::vector<Vec3>& vertices, std::vector<std::vector<unsigned>>& facets);
+  // Grid size of the finest level when nbVirtualFinerLevels > 0: (n-1)·2^levels + 1 per axis.
+  static VecNi<3> finest_dims(VecNi<3> dims, int levels);
+  // Makes `level` the component's grid: fields (n, min, max, position, hexahedra) and look-up data.
+  void adopt(Level&& level);
+  // SOFA's findNearestCube over one level: the boundary hexahedron (of those with a type) whose
+  // (c0+c6)/2 centre is nearest; hexahedron 0 when none is boundary (as SOFA), kInvalidIndex
+  // when there are no hexahedra.
+  static unsigned nearest_boundary_cube(const std::vector<Vec3>& points, const std::vector<Hexa>& hexas,
+                                        const std::vector<CellType>& types, const Vec3& p, double& fx, double& fy,
+                                        double& fz);
 
   Grid grid_;
   std::vector<CellType> types_;

@@ -2,6 +2,8 @@
 // node pair) and gravity on the physical lumped masses (ρ·vol/8 per corner).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/mechanical_ops.h"
 #include "forcefield/hexahedron_fem_force_field.h"
 #include "state/mechanical_object.h"
@@ -86,4 +88,67 @@ TEST(HexahedronFEMForceFieldAndMass, FallsUnderGravityWithoutDeforming) {
 }
 
 }  // namespace
+}  // namespace sinew
+
+namespace sinew {
+
+// On a SparseGridTopology the element masses (matrix and gravity) and the
+// element stiffnesses are scaled by the grid's filling coefficients
+// (spec/mechanics.md §2.3, §2.4): 26 boundary cells at 0.5, one inner cell at 1.
+TEST(HexahedronFEMForceFieldAndMass, SparseGridCoefficientsScaleMassAndStiffness) {
+  const char* grid = R"(<SparseGridTopology name="g" n="4 4 4"
+      position="-1 -1 -1  1 -1 -1  1 1 -1  -1 1 -1  -1 -1 1  1 -1 1  1 1 1  -1 1 1"
+      triangles="0 2 1  0 3 2  4 5 6  4 6 7  0 1 5  0 5 4  1 2 6  1 6 5  2 3 7  2 7 6  3 0 4  3 4 7"/>)";
+  auto with = [&](const char* topo) {
+    return test::load(std::string("<Node dt=\"0.01\" gravity=\"0 -10 0\"><DefaultAnimationLoop/>") + topo +
+                      "<MechanicalObject name=\"dofs\"/><HexahedronFEMForceFieldAndMass name=\"fem\" "
+                      "youngModulus=\"1000\" poissonRatio=\"0.3\" density=\"2\"/></Node>");
+  };
+  auto sparse = with(grid);
+  // The same 27 cells as a regular grid (no coefficients).
+  auto regular = with(R"(<RegularGridTopology n="4 4 4" min="-1.02 -1.02 -1.02" max="1.02 1.02 1.02"/>)");
+  auto* fs = test::get<HexahedronFEMForceFieldAndMass>(*sparse.root, "fem");
+  auto* fr = test::get<HexahedronFEMForceFieldAndMass>(*regular.root, "fem");
+  ASSERT_NE(fs, nullptr);
+  ASSERT_NE(fr, nullptr);
+  auto* ms = test::get<MechanicalObject>(*sparse.root, "dofs");
+  auto* mr = test::get<MechanicalObject>(*regular.root, "dofs");
+  ASSERT_EQ(ms->size(), mr->size());
+
+  // Gravity: ρ·V·g over coefficient-weighted cells, (26·0.5 + 1)/27 of the regular total.
+  MechParams p;
+  auto total_weight = [&](HexahedronFEMForceFieldAndMass& fem, MechanicalObject& mo) {
+    auto& f = mo.vec(kForce);
+    std::fill(f.begin(), f.end(), 0.0);
+    fem.add_force(p);
+    double sum = 0;
+    for (std::size_t i = 0; i < mo.size(); ++i) sum += f[3 * i + 1];
+    return sum;
+  };
+  const double ws = total_weight(*fs, *ms), wr = total_weight(*fr, *mr);
+  EXPECT_NEAR(wr, -10 * 2 * std::pow(2.04, 3), 1e-9);
+  EXPECT_NEAR(ws / wr, (26 * 0.5 + 1) / 27, 1e-12);
+
+  // Stiffness and element mass of a boundary cell: half the regular grid's.
+  const int dx = MechanicalOps::alloc_vec(), df = MechanicalOps::alloc_vec();
+  for (auto* mo : {ms, mr}) {
+    auto& d = mo->vec(dx);
+    d.assign(3 * mo->size(), 0.0);
+    d[0] = 1e-3;  // corner point 0: only in boundary cell 0
+    mo->vec(df).assign(3 * mo->size(), 0.0);
+  }
+  p.dx = dx;
+  p.df = df;
+  fs->add_dforce(p, 1.0);
+  fr->add_dforce(p, 1.0);
+  EXPECT_NEAR(ms->vec(df)[0] / mr->vec(df)[0], 0.5, 1e-12);
+  auto& rs = ms->vec(df);
+  auto& rr = mr->vec(df);
+  std::fill(rs.begin(), rs.end(), 0.0);
+  std::fill(rr.begin(), rr.end(), 0.0);
+  fs->add_mdx(p, df, dx, 1.0);
+  fr->add_mdx(p, df, dx, 1.0);
+  EXPECT_NEAR(rs[0] / rr[0], 0.5, 1e-12);
+}
+
 }  // namespace sinew
