@@ -6,6 +6,7 @@
 #include "core/node.h"
 #include "core/parse.h"
 #include "core/registry.h"
+#include "forcefield/hexahedron_fem_force_field.h"
 
 namespace sinew {
 
@@ -119,30 +120,9 @@ void HexahedralFEMForceField::init() {
     state_ = ComponentState::invalid;
     return;
   }
-  // Per-element material with SOFA's broadcast (value i, else value 0) and
-  // its replacement of out-of-range values.
   const std::size_t ne = hexas.size();
-  std::vector<double> E(ne), nu(ne);
-  const auto& ey = young_modulus.get();
-  const auto& pr = poisson_ratio.get();
-  for (std::size_t i = 0; i < ne; ++i) {
-    double e = ey.empty() ? 5000.0 : (i < ey.size() ? ey[i] : ey[0]);
-    double v = pr.empty() ? 0.45 : (i < pr.size() ? pr[i] : pr[0]);
-    if (e < 0) {
-      if (i < ey.size() || i == 0)
-        msg_warning("youngModulus of element " + std::to_string(i) + " is " + parse::format_double(e) +
-                    ": replaced by 5000");
-      e = 5000.0;
-    }
-    if (v < 0 || v >= 0.5) {
-      if (i < pr.size() || i == 0)
-        msg_warning("poissonRatio of element " + std::to_string(i) + " is " + parse::format_double(v) +
-                    " (must be in [0, 0.5)): replaced by 0.45");
-      v = 0.45;
-    }
-    E[i] = e;
-    nu[i] = v;
-  }
+  std::vector<double> E, nu;
+  hexa_element_materials(*this, young_modulus.get(), poisson_ratio.get(), ne, E, nu);
   const auto x0 = as_vec3(s.vec(kRestPosition));
   std::vector<std::array<int, 8>> h(ne);
   for (std::size_t i = 0; i < ne; ++i)

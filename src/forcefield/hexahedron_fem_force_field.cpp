@@ -6,6 +6,31 @@
 
 namespace sinew {
 
+void hexa_element_materials(const Component& c, const std::vector<double>& young,
+                            const std::vector<double>& poisson, std::size_t ne, std::vector<double>& E,
+                            std::vector<double>& nu) {
+  E.resize(ne);
+  nu.resize(ne);
+  for (std::size_t i = 0; i < ne; ++i) {
+    double e = young.empty() ? 5000.0 : (i < young.size() ? young[i] : young[0]);
+    double v = poisson.empty() ? 0.45 : (i < poisson.size() ? poisson[i] : poisson[0]);
+    if (!(e > 0)) {
+      if (i < young.size() || i == 0)
+        c.msg_warning("youngModulus of element " + std::to_string(i) + " is " + parse::format_double(e) +
+                      (e < 0 ? ": replaced by 5000" : ": the element has no stiffness"));
+      if (e < 0) e = 5000.0;
+    }
+    if (v < 0 || v >= 0.5) {
+      if (i < poisson.size() || i == 0)
+        c.msg_warning("poissonRatio of element " + std::to_string(i) + " is " + parse::format_double(v) +
+                      " (must be in [0, 0.5)): replaced by 0.45");
+      v = 0.45;
+    }
+    E[i] = e;
+    nu[i] = v;
+  }
+}
+
 template <class Role>
 void HexahedronFEMBase<Role>::init() {
   Role::init();
@@ -32,29 +57,8 @@ void HexahedronFEMBase<Role>::init() {
     return;
   }
   const std::size_t ne = hexas.size();
-  // Per-element material: value i if given, else value 0 (SOFA's broadcast);
-  // out-of-range values are replaced by SOFA's defaults with a message.
-  std::vector<double> E(ne), nu(ne);
-  const auto& ey = young_modulus.get();
-  const auto& pr = poisson_ratio.get();
-  for (std::size_t i = 0; i < ne; ++i) {
-    double e = ey.empty() ? 5000.0 : (i < ey.size() ? ey[i] : ey[0]);
-    double v = pr.empty() ? 0.45 : (i < pr.size() ? pr[i] : pr[0]);
-    if (!(e > 0)) {
-      if (i < ey.size() || i == 0)
-        this->msg_warning("youngModulus of element " + std::to_string(i) + " is " + parse::format_double(e) +
-                    (e < 0 ? ": replaced by 5000" : ": the element has no stiffness"));
-      if (e < 0) e = 5000.0;
-    }
-    if (v < 0 || v >= 0.5) {
-      if (i < pr.size() || i == 0)
-        this->msg_warning("poissonRatio of element " + std::to_string(i) + " is " + parse::format_double(v) +
-                    " (must be in [0, 0.5)): replaced by 0.45");
-      v = 0.45;
-    }
-    E[i] = e;
-    nu[i] = v;
-  }
+  std::vector<double> E, nu;
+  hexa_element_materials(*this, young_modulus.get(), poisson_ratio.get(), ne, E, nu);
   MechanicalState& s = *this->mstate;
   if (s.state_type() != StateType::vec3) {
     this->msg_error("only Vec3d states are supported");

@@ -12,6 +12,13 @@
 
 namespace sinew {
 
+// Per-element Young's modulus and Poisson ratio from the two fields, with
+// SOFA's broadcast (value i, else value 0) and its replacement of
+// out-of-range values (E < 0 → 5000, ν ∉ [0, 0.5) → 0.45), each reported on `c`.
+void hexa_element_materials(const Component& c, const std::vector<double>& young,
+                            const std::vector<double>& poisson, std::size_t ne, std::vector<double>& E,
+                            std::vector<double>& nu);
+
 // The force field on top of either role: ForceField, or Mass for the "AndMass" variant.
 template <class Role>
 class HexahedronFEMBase : public Role, public RotationFinder {
