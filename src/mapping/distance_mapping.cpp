@@ -11,30 +11,7 @@ namespace sinew {
 bool DistanceMapping::init_mapping() {
   cw_ = state_type_info(in_type()).coord_width;
   dw_ = state_type_info(in_type()).deriv_width;
-  gs_ = geometric_stiffness_id(geometric_stiffness.get(), 2);
-  if (gs_ < 0) {
-    msg_error("geometricStiffness must be None, Exact or Stabilized (0, 1 or 2), not \"" + geometric_stiffness.get() +
-              "\"");
-    return false;
-  }
-  if (!topology && node()) topology.set(node()->get_mesh_topology_link());
-  if (!topology) {
-    msg_error("no topology found (set topology=\"@...\" to a container with edges)");
-    return false;
-  }
-  edges_ = topology->edges();
-  if (edges_.empty()) {
-    msg_error("the topology " + topology->describe() + " has no edges");
-    return false;
-  }
-  const std::size_t n_in = in_size();
-  for (std::size_t e = 0; e < edges_.size(); ++e)
-    for (unsigned v : edges_[e])
-      if (v >= n_in) {
-        msg_error("edge " + std::to_string(e) + " uses point " + std::to_string(v) + " but the input has " +
-                  std::to_string(n_in) + " points");
-        return false;
-      }
+  if (!edge::init_edges(*this, geometric_stiffness.get(), topology, in_size(), gs_, edges_)) return false;
   resize_output(edges_.size());
   dir_.assign(edges_.size() * 3, 0.0);
   invlen_.assign(edges_.size(), 0.0);

@@ -1,5 +1,7 @@
 #include "mapping/edge_kernels.h"
 
+#include "core/node.h"
+
 namespace sinew::edge {
 
 void append_edge_row(std::vector<JacobianEntry>& out, std::uint32_t row, std::uint32_t col0, std::uint32_t col1,
@@ -19,6 +21,34 @@ void add_edge_block(MatrixSink& K, const MechanicalState* s0, std::size_t i0, co
       K.add(s1, i1 + j, s0, i0 + c, -b[j][c]);
       K.add(s1, i1 + j, s1, i1 + c, b[j][c]);
     }
+}
+
+bool init_edges(MappingBase& m, const std::string& geometric_stiffness, Link<MeshTopologyBase>& topology,
+                std::size_t n_in, int& gs, std::vector<Edge>& edges) {
+  gs = geometric_stiffness_id(geometric_stiffness, 2);
+  if (gs < 0) {
+    m.msg_error("geometricStiffness must be None, Exact or Stabilized (0, 1 or 2), not \"" + geometric_stiffness +
+                "\"");
+    return false;
+  }
+  if (!topology && m.node()) topology.set(m.node()->get_mesh_topology_link());
+  if (!topology) {
+    m.msg_error("no topology found (set topology=\"@...\" to a container with edges)");
+    return false;
+  }
+  edges = topology->edges();
+  if (edges.empty()) {
+    m.msg_error("the topology " + topology->describe() + " has no edges");
+    return false;
+  }
+  for (std::size_t e = 0; e < edges.size(); ++e)
+    for (unsigned v : edges[e])
+      if (v >= n_in) {
+        m.msg_error("edge " + std::to_string(e) + " uses point " + std::to_string(v) + " but the input has " +
+                    std::to_string(n_in) + " points");
+        return false;
+      }
+  return true;
 }
 
 }  // namespace sinew::edge

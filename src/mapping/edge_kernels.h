@@ -12,9 +12,11 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "core/matrix_sink.h"
+#include "mapping/mapping_base.h"
 
 namespace sinew::edge {
 
@@ -104,5 +106,12 @@ void append_edge_row(std::vector<JacobianEntry>& out, std::uint32_t row, std::ui
 // Adds [b −b; −b b] at rows/columns (s0, i0) and (s1, i1), row by row.
 void add_edge_block(MatrixSink& K, const MechanicalState* s0, std::size_t i0, const MechanicalState* s1,
                     std::size_t i1, const double b[3][3]);
+
+// The shared start of init_mapping for the edge mappings: the
+// geometricStiffness mode (into gs), the topology (linked, else the node's)
+// and its edges (into edges), each edge checked against the n_in input
+// points. False after an error reported on `m`.
+bool init_edges(MappingBase& m, const std::string& geometric_stiffness, Link<MeshTopologyBase>& topology,
+                std::size_t n_in, int& gs, std::vector<Edge>& edges);
 
 }  // namespace sinew::edge
