@@ -47,25 +47,13 @@ void DistanceMapping::apply(int x) {
 void DistanceMapping::apply_j(int v, int role) {
   std::vector<double>* outp = out_deriv(v, role);
   if (!outp) return;
-  std::vector<double>& out = *outp;
-  const std::vector<double>& in = in_deriv(v, role);
-  out.resize(edges_.size());
-  for (std::size_t e = 0; e < edges_.size(); ++e) {
-    const unsigned i0 = edges_[e][0], i1 = edges_[e][1];
-    out[e] = edge::row_dot(&dir_[e * 3], &in[i0 * dw_], &in[i1 * dw_], i1 < i0);
-  }
+  edge::apply_rows(edges_, dir_, in_deriv(v, role), dw_, *outp);
 }
 
 void DistanceMapping::apply_jt(int f, int role) {
   const std::vector<double>* outp = out_deriv(f, role);
   if (!outp) return;
-  const std::vector<double>& out = *outp;
-  std::vector<double>& in = in_deriv(f, role);
-  const std::size_t n = std::min(edges_.size(), out.size());
-  for (std::size_t e = 0; e < n; ++e) {
-    edge::add_end_force(&in[edges_[e][0] * dw_], -1.0, &dir_[e * 3], out[e]);
-    edge::add_end_force(&in[edges_[e][1] * dw_], 1.0, &dir_[e * 3], out[e]);
-  }
+  edge::apply_rows_transposed(edges_, dir_, *outp, dw_, in_deriv(f, role));
 }
 
 void DistanceMapping::apply_djt(int df, int dx, double k) {

@@ -1,5 +1,7 @@
 #include "mapping/edge_kernels.h"
 
+#include <algorithm>
+
 #include "core/node.h"
 
 namespace sinew::edge {
@@ -21,6 +23,24 @@ void add_edge_block(MatrixSink& K, const MechanicalState* s0, std::size_t i0, co
       K.add(s1, i1 + j, s0, i0 + c, -b[j][c]);
       K.add(s1, i1 + j, s1, i1 + c, b[j][c]);
     }
+}
+
+void apply_rows(const std::vector<Edge>& edges, const std::vector<double>& rows, const std::vector<double>& in,
+                int dw, std::vector<double>& out) {
+  out.resize(edges.size());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const unsigned i0 = edges[e][0], i1 = edges[e][1];
+    out[e] = row_dot(&rows[e * 3], &in[i0 * dw], &in[i1 * dw], i1 < i0);
+  }
+}
+
+void apply_rows_transposed(const std::vector<Edge>& edges, const std::vector<double>& rows,
+                           const std::vector<double>& out, int dw, std::vector<double>& in) {
+  const std::size_t n = std::min(edges.size(), out.size());
+  for (std::size_t e = 0; e < n; ++e) {
+    add_end_force(&in[edges[e][0] * dw], -1.0, &rows[e * 3], out[e]);
+    add_end_force(&in[edges[e][1] * dw], 1.0, &rows[e * 3], out[e]);
+  }
 }
 
 bool init_edges(MappingBase& m, const std::string& geometric_stiffness, Link<MeshTopologyBase>& topology,

@@ -107,6 +107,14 @@ void append_edge_row(std::vector<JacobianEntry>& out, std::uint32_t row, std::ui
 void add_edge_block(MatrixSink& K, const MechanicalState* s0, std::size_t i0, const MechanicalState* s1,
                     std::size_t i1, const double b[3][3]);
 
+// out[e] = J row e · in for every edge (J rows = `rows`, 3 per edge, −row on
+// the first end, +row on the second); out is resized to the edge count.
+void apply_rows(const std::vector<Edge>& edges, const std::vector<double>& rows, const std::vector<double>& in,
+                int dw, std::vector<double>& out);
+// in += Jᵀ·out for the edges out holds a value for.
+void apply_rows_transposed(const std::vector<Edge>& edges, const std::vector<double>& rows,
+                           const std::vector<double>& out, int dw, std::vector<double>& in);
+
 // The shared start of init_mapping for the edge mappings: the
 // geometricStiffness mode (into gs), the topology (linked, else the node's)
 // and its edges (into edges), each edge checked against the n_in input
