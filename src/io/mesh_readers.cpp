@@ -166,28 +166,30 @@ std::optional<MeshData> read_obj(const std::string& path, std::string* error, co
       }
   };
 
+  // SOFA reads every v, vn and vt line into one vector declared before its loop, with stream
+  // extractions that leave a value untouched once the line has ended: a line with fewer values
+  // keeps those of the previous v/vn/vt line (raptorTemperature.obj has only "v 0" lines).
+  Vec3 carry = Vec3::Zero();
   const auto lines = split_lines(text);
   for (std::size_t ln = 0; ln < lines.size(); ++ln) {
     std::string_view line = lines[ln];
     if (line.empty()) continue;
     Cursor c{line};
     const std::string_view tok = c.next();
-    if (tok == "v" || tok == "vn") {
-      Vec3 r = Vec3::Zero();
-      for (int k = 0; k < 3; ++k)
-        if (!to_number(c.next(), r[k])) {
-          if (error) *error = where(path, ln + 1) + "bad coordinate in '" + std::string(trim(line)) + "'";
+    if (tok == "v" || tok == "vn" || tok == "vt") {
+      const int count = tok == "vt" ? 2 : 3;
+      for (int k = 0; k < count; ++k) {
+        const std::string_view t = c.next();
+        if (t.empty()) break;
+        if (!to_number(t, carry[k])) {
+          if (error)
+            *error = where(path, ln + 1) + (tok == "vt" ? "bad texture coordinate in '" : "bad coordinate in '") +
+                     std::string(trim(line)) + "'";
           return std::nullopt;
         }
-      (tok == "v" ? positions : normals).push_back(r);
-    } else if (tok == "vt") {
-      Vec2 r = Vec2::Zero();
-      for (int k = 0; k < 2; ++k)
-        if (!to_number(c.next(), r[k])) {
-          if (error) *error = where(path, ln + 1) + "bad texture coordinate in '" + std::string(trim(line)) + "'";
-          return std::nullopt;
-        }
-      texcoords.push_back(r);
+      }
+      if (tok == "vt") texcoords.emplace_back(carry[0], carry[1]);
+      else (tok == "v" ? positions : normals).push_back(carry);
     } else if (tok == "mtllib") {
       for (std::string_view lib = c.next(); !lib.empty(); lib = c.next())
         read_mtl_names(dir_of(path) + std::string(lib), m.materials);

@@ -126,6 +126,41 @@ TEST(IoObj, BadIndexIsAnErrorWithLine) {
   EXPECT_NE(err.find("cannot open"), std::string::npos) << err;
 }
 
+// SOFA reads v, vn and vt into one vector shared by all three and never reset: values missing at
+// the end of a line keep those of the previous v/vn/vt line (zeros before the first).
+TEST(IoObj, MissingValuesKeepThePreviousLines) {
+  TempDir t;
+  std::string err;
+  auto m = io::read_obj(t.write("carry.obj", "v 0\n"
+                                             "v 1 2 3\n"
+                                             "v 4\n"
+                                             "vn 0 0 1\n"
+                                             "v 5 6\n"
+                                             "vt 0.5\n"
+                                             "vt 0.25 0.75 9\n"
+                                             "v\n"
+                                             "vn 7\r\n"),
+                        &err);
+  ASSERT_TRUE(m) << err;
+  EXPECT_EQ(m->positions_definition,
+            (std::vector<Vec3>{{0, 0, 0}, {1, 2, 3}, {4, 2, 3}, {5, 6, 1}, {0.25, 0.75, 1}}));
+  EXPECT_EQ(m->normals_definition, (std::vector<Vec3>{{0, 0, 1}, {7, 0.75, 1}}));
+  EXPECT_EQ(m->texcoords_definition, (std::vector<Vec2>{{0.5, 6}, {0.25, 0.75}}));
+  EXPECT_EQ(m->positions, m->positions_definition);
+}
+
+// A value that is there but is not a number stays an error, with the line.
+TEST(IoObj, UnparsableCoordinateIsAnErrorWithLine) {
+  TempDir t;
+  std::string err;
+  EXPECT_FALSE(io::read_obj(t.write("a.obj", "v 0 0 0\nv 1 abc 2\n"), &err));
+  EXPECT_NE(err.find("a.obj:2: bad coordinate in 'v 1 abc 2'"), std::string::npos) << err;
+  EXPECT_FALSE(io::read_obj(t.write("b.obj", "vt 0.5 x\n"), &err));
+  EXPECT_NE(err.find("b.obj:1: bad texture coordinate"), std::string::npos) << err;
+  EXPECT_FALSE(io::read_obj(t.write("c.obj", "vn 1 1e+\n"), &err));
+  EXPECT_NE(err.find("c.obj:1: bad coordinate"), std::string::npos) << err;
+}
+
 // ---------------------------------------------------------------- Gmsh
 
 // v1: node ids mapped to their ordinal; type 15 (point) ignored.
@@ -716,6 +751,10 @@ TEST(IoData, EveryMeshReferencedByTheScenesLoads) {
   m = io::read_mesh(resolve("mesh/liver.sph"), nullptr);  // 34 "sphe" lines
   ASSERT_TRUE(m);
   EXPECT_EQ(m->positions.size(), 34u);
+  m = io::read_mesh(resolve("mesh/raptorTemperature.obj"), nullptr);  // 2996 "v 0" lines
+  ASSERT_TRUE(m);
+  ASSERT_EQ(m->positions.size(), 2996u);
+  EXPECT_EQ(m->positions[2995], Vec3(0, 0, 0));
   m = io::read_mesh(resolve("mesh/cubeDof.msh"), nullptr);  // v2, 27 nodes numbered from 0, no element
   ASSERT_TRUE(m);
   EXPECT_EQ(m->positions.size(), 27u);
