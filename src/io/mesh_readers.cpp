@@ -1247,7 +1247,7 @@ bool base64_decode(std::string_view in, std::vector<unsigned char>& out) {
   return true;
 }
 
-bool xml_array(const XmlElem& da, const std::string& header_type, VtkArray& a, std::string& why,
+bool xml_array(const XmlElem& da, const std::string& header_type, bool swap, VtkArray& a, std::string& why,
                bool ascii_as_double = false) {
   const std::string type = da.attr("type");
   bool is_signed = true;
@@ -1276,11 +1276,11 @@ bool xml_array(const XmlElem& da, const std::string& header_type, VtkArray& a, s
     if (!base64_decode(da.text, bytes)) return (why = "bad base64 data"), false;
     const std::size_t hs = header_type == "UInt64" ? 8 : 4;
     if (bytes.size() < hs) return (why = "truncated binary DataArray"), false;
-    const auto nbytes = static_cast<std::size_t>(decode_value(bytes.data(), static_cast<int>(hs), false, false, false));
+    const auto nbytes = static_cast<std::size_t>(decode_value(bytes.data(), static_cast<int>(hs), false, false, swap));
     if (bytes.size() < hs + nbytes) return (why = "truncated binary DataArray"), false;
     const std::size_t n = nbytes / static_cast<std::size_t>(size);
     a.v.resize(n);
-    for (std::size_t k = 0; k < n; ++k) a.v[k] = decode_value(bytes.data() + hs + k * size, size, a.is_float, is_signed, false);
+    for (std::size_t k = 0; k < n; ++k) a.v[k] = decode_value(bytes.data() + hs + k * size, size, a.is_float, is_signed, swap);
   } else {
     return (why = "DataArray format '" + format + "' is not supported (ascii or binary)"), false;
   }
@@ -1302,7 +1302,11 @@ std::optional<MeshData> read_vtk_xml(const std::string& path, const std::string&
   };
   if (root.name != "VTKFile") return err("root element is <" + root.name + ">, <VTKFile> expected");
   if (!root.attr("compressor").empty()) return err("compressed VTK XML files are not supported");
-  if (root.attr("byte_order", "LittleEndian") != "LittleEndian") return err("big-endian VTK XML files are not supported");
+  // Binary arrays (and their byte-count headers) are in the file's byte order; ASCII arrays have none.
+  const std::string byte_order = root.attr("byte_order", "LittleEndian");
+  if (byte_order != "LittleEndian" && byte_order != "BigEndian")
+    return err("unknown byte_order '" + byte_order + "' (LittleEndian or BigEndian expected)");
+  const bool swap = byte_order == "BigEndian";
   const std::string header_type = root.attr("header_type", "UInt32");
   const std::string type = root.attr("type");
   const XmlElem* grid = root.child(type);
@@ -1316,7 +1320,7 @@ std::optional<MeshData> read_vtk_xml(const std::string& path, const std::string&
   if (!pts || !pts->child("DataArray")) return err("no <Points> data");
   VtkArray points;
   // SOFA stores XML point coordinates as Float64 (ASCII values are not rounded to float).
-  if (!xml_array(*pts->child("DataArray"), header_type, points, why, true)) return err("Points: " + why);
+  if (!xml_array(*pts->child("DataArray"), header_type, swap, points, why, true)) return err("Points: " + why);
   set_points(m, points);
   VtkCells vc;
   auto read_cells = [&](const XmlElem& cells, int fixed_type) -> bool {
@@ -1324,7 +1328,7 @@ std::optional<MeshData> read_vtk_xml(const std::string& path, const std::string&
     for (const auto& da : cells.children) {
       const std::string name = da.attr("Name");
       VtkArray* t = name == "connectivity" ? &conn : name == "offsets" ? &offs : name == "types" ? &types : nullptr;
-      if (t && !xml_array(da, header_type, *t, why)) return false;
+      if (t && !xml_array(da, header_type, swap, *t, why)) return false;
     }
     if (!conn.ok || !offs.ok) return (why = "missing connectivity or offsets"), false;
     if (fixed_type < 0 && !types.ok) return (why = "missing cell types"), false;
@@ -1355,7 +1359,7 @@ std::optional<MeshData> read_vtk_xml(const std::string& path, const std::string&
     if (!s) continue;
     for (const auto& da : s->children) {
       VtkArray a;
-      if (!xml_array(da, header_type, a, why)) return err(std::string(section) + ": " + why);
+      if (!xml_array(da, header_type, swap, a, why)) return err(std::string(section) + ": " + why);
       long long comps = 1;
       to_int_strict(da.attr("NumberOfComponents", "1"), comps);
       const std::string name = da.attr("Name");  // normals too stay point data (SOFA's XML reader)

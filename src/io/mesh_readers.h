@@ -89,7 +89,8 @@ struct ReadOptions {
 std::optional<MeshData> read_obj(const std::string& path, std::string* error, const ReadOptions& opt = {});
 // Gmsh ASCII v1 ($NOD), v2 and v4 ($MeshFormat).
 std::optional<MeshData> read_gmsh(const std::string& path, std::string* error, const ReadOptions& opt = {});
-// VTK legacy (.vtk, ASCII or BINARY) and XML (.vtu/.vtp, ascii or base64 "binary" arrays, uncompressed).
+// VTK legacy (.vtk, ASCII or BINARY) and XML (.vtu/.vtp, ascii or base64 "binary" arrays, uncompressed,
+// little- or big-endian).
 std::optional<MeshData> read_vtk(const std::string& path, std::string* error, const ReadOptions& opt = {});
 // STL ASCII or binary (auto-detected); duplicate vertices merged (exact equality, first occurrence order).
 std::optional<MeshData> read_stl(const std::string& path, std::string* error, const ReadOptions& opt = {});

@@ -1,7 +1,9 @@
 // Mesh readers and loader components (spec/mechanics.md §7.1–7.6, §0.2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -463,6 +465,151 @@ TEST(IoVtk, XmlPolyData) {
   EXPECT_EQ(m->polylines[0].size(), 5u);
 }
 
+namespace {
+// The bytes of `v` in the given byte order.
+template <class T>
+std::string bytes_of(T v, bool big_endian) {
+  std::string s(sizeof(T), '\0');
+  std::memcpy(s.data(), &v, sizeof(T));
+  if (big_endian) std::reverse(s.begin(), s.end());
+  return s;
+}
+
+// One "binary" DataArray body: base64 of (byte count, values), the count as UInt32 or UInt64. VTK
+// may encode the count and the values as one base64 block or as two; `split` picks the second form.
+template <class T>
+std::string vtk_binary(const std::vector<T>& values, bool big_endian, bool header64, bool split) {
+  std::string data;
+  for (T v : values) data += bytes_of(v, big_endian);
+  const std::string header = header64 ? bytes_of<uint64_t>(data.size(), big_endian)
+                                      : bytes_of<uint32_t>(static_cast<uint32_t>(data.size()), big_endian);
+  return split ? base64(header) + base64(data) : base64(header + data);
+}
+
+// Two tetrahedra and one triangle on 5 points, every array binary. Int is the connectivity and
+// offsets type (Int32 or Int64); the point data are Float32 to swap 4-byte floats too.
+template <class Int>
+std::string binary_vtu(bool big_endian, bool header64, bool split) {
+  const std::vector<double> points{0, 0, 0, 1.5, 0, 0, 0, -2.25, 0, 0, 0, 3.125, 1e-3, 7, -0.1};
+  const std::vector<Int> conn{0, 1, 2, 3, 1, 2, 3, 4, 4, 0, 1};
+  const std::vector<Int> offsets{4, 8, 11};
+  const std::vector<uint8_t> types{10, 10, 5};
+  const std::vector<float> temperature{0.5f, -1.0f, 2.75f, 1e-6f, 300.0f};
+  const char* int_type = sizeof(Int) == 8 ? "Int64" : "Int32";
+  return std::string(R"(<?xml version="1.0"?>
+<VTKFile type="UnstructuredGrid" version="1.0" byte_order=")") +
+         (big_endian ? "BigEndian" : "LittleEndian") + R"(" header_type=")" + (header64 ? "UInt64" : "UInt32") +
+         R"(">
+  <UnstructuredGrid>
+    <Piece NumberOfPoints="5" NumberOfCells="3">
+      <PointData>
+        <DataArray type="Float32" Name="temperature" format="binary">)" +
+         vtk_binary(temperature, big_endian, header64, split) + R"(</DataArray>
+      </PointData>
+      <Points>
+        <DataArray type="Float64" NumberOfComponents="3" format="binary">
+          )" + vtk_binary(points, big_endian, header64, split) + R"(
+        </DataArray>
+      </Points>
+      <Cells>
+        <DataArray type=")" + int_type + R"(" Name="connectivity" format="binary">)" +
+         vtk_binary(conn, big_endian, header64, split) + R"(</DataArray>
+        <DataArray type=")" + int_type + R"(" Name="offsets" format="binary">)" +
+         vtk_binary(offsets, big_endian, header64, split) + R"(</DataArray>
+        <DataArray type="UInt8" Name="types" format="binary">)" +
+         vtk_binary(types, big_endian, header64, split) + R"(</DataArray>
+      </Cells>
+    </Piece>
+  </UnstructuredGrid>
+</VTKFile>
+)";
+}
+
+void expect_binary_vtu_mesh(const io::MeshData& m) {
+  EXPECT_EQ(m.positions, (std::vector<Vec3>{{0, 0, 0}, {1.5, 0, 0}, {0, -2.25, 0}, {0, 0, 3.125}, {1e-3, 7, -0.1}}));
+  EXPECT_EQ(m.tetrahedra, (std::vector<Tetra>{{0, 1, 2, 3}, {1, 2, 3, 4}}));
+  EXPECT_EQ(m.triangles, (Tris{{4, 0, 1}}));
+  ASSERT_EQ(m.point_data.size(), 1u);
+  EXPECT_EQ(m.point_data[0].name, "temperature");
+  EXPECT_EQ(m.point_data[0].values,
+            (std::vector<double>{0.5, -1.0, 2.75, static_cast<double>(1e-6f), 300.0}));
+}
+}  // namespace
+
+// byte_order says how binary values are stored; ASCII arrays read the same either way.
+TEST(IoVtk, XmlBigEndianAsciiArrays) {
+  TempDir t;
+  auto vtu = [](const char* order) {
+    return std::string(R"(<VTKFile type="UnstructuredGrid" version="0.1" byte_order=")") + order + R"(">
+  <UnstructuredGrid><Piece NumberOfPoints="4" NumberOfCells="1">
+    <Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">
+      0.25 -1.5 3   1 0 0   0 1 0   0 0 1
+    </DataArray></Points>
+    <Cells>
+      <DataArray type="Int32" Name="connectivity" format="ascii">3 2 1 0</DataArray>
+      <DataArray type="Int32" Name="offsets" format="ascii">4</DataArray>
+      <DataArray type="UInt8" Name="types" format="ascii">10</DataArray>
+    </Cells>
+  </Piece></UnstructuredGrid>
+</VTKFile>
+)";
+  };
+  std::string err;
+  auto big = io::read_vtk(t.write("big.vtu", vtu("BigEndian")), &err);
+  ASSERT_TRUE(big) << err;
+  auto little = io::read_vtk(t.write("little.vtu", vtu("LittleEndian")), &err);
+  ASSERT_TRUE(little) << err;
+  EXPECT_EQ(big->positions, (std::vector<Vec3>{{0.25, -1.5, 3}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}));
+  EXPECT_EQ(big->tetrahedra, (std::vector<Tetra>{{3, 2, 1, 0}}));
+  EXPECT_EQ(big->positions, little->positions);
+  EXPECT_EQ(big->tetrahedra, little->tetrahedra);
+  EXPECT_FALSE(io::read_vtk(t.write("odd.vtu", vtu("MiddleEndian")), &err));
+  EXPECT_NE(err.find("unknown byte_order 'MiddleEndian'"), std::string::npos) << err;
+}
+
+// Big-endian base64 arrays are byte-swapped, their byte-count header too (UInt32 or UInt64), and
+// give the mesh of the little-endian file.
+TEST(IoVtk, XmlBigEndianBinaryArrays) {
+  TempDir t;
+  struct Case {
+    const char* name;
+    std::string big, little;
+  };
+  const Case cases[] = {
+      {"int32_header32", binary_vtu<int32_t>(true, false, false), binary_vtu<int32_t>(false, false, false)},
+      {"int64_header32", binary_vtu<int64_t>(true, false, true), binary_vtu<int64_t>(false, false, true)},
+      {"int32_header64", binary_vtu<int32_t>(true, true, true), binary_vtu<int32_t>(false, true, true)},
+      {"int64_header64", binary_vtu<int64_t>(true, true, false), binary_vtu<int64_t>(false, true, false)},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    std::string err;
+    auto big = io::read_vtk(t.write(std::string(c.name) + "_be.vtu", c.big), &err);
+    ASSERT_TRUE(big) << err;
+    auto little = io::read_vtk(t.write(std::string(c.name) + "_le.vtu", c.little), &err);
+    ASSERT_TRUE(little) << err;
+    expect_binary_vtu_mesh(*big);
+    expect_binary_vtu_mesh(*little);
+  }
+}
+
+// Raw appended data (<AppendedData>) is not read: a clear error, not a wrong mesh.
+TEST(IoVtk, XmlAppendedDataIsAnError) {
+  TempDir t;
+  std::string err;
+  EXPECT_FALSE(io::read_vtk(t.write("app.vtu", R"(<VTKFile type="UnstructuredGrid" version="0.1" byte_order="BigEndian">
+  <UnstructuredGrid><Piece NumberOfPoints="1" NumberOfCells="0">
+    <Points><DataArray type="Float32" NumberOfComponents="3" format="appended" offset="0"/></Points>
+  </Piece></UnstructuredGrid>
+  <AppendedData encoding="raw">_abcdefghijkl</AppendedData>
+</VTKFile>
+)"),
+                            &err));
+  EXPECT_NE(err.find("app.vtu: Points: DataArray format 'appended' is not supported (ascii or binary)"),
+            std::string::npos)
+      << err;
+}
+
 TEST(IoVtk, BadCellIndexIsAnError) {
   TempDir t;
   std::string err;
@@ -751,6 +898,11 @@ TEST(IoData, EveryMeshReferencedByTheScenesLoads) {
   m = io::read_mesh(resolve("mesh/liver.sph"), nullptr);  // 34 "sphe" lines
   ASSERT_TRUE(m);
   EXPECT_EQ(m->positions.size(), 34u);
+  m = io::read_mesh(resolve("mesh/raptorTetra_8418.vtu"), nullptr);  // BigEndian, ASCII: 2996 points, 8418 tets
+  ASSERT_TRUE(m);
+  EXPECT_EQ(m->positions.size(), 2996u);
+  EXPECT_EQ(m->positions[0], Vec3(-1.55191, 0.180325, -0.22213));
+  EXPECT_EQ(m->tetrahedra.size(), 8418u);
   m = io::read_mesh(resolve("mesh/raptorTemperature.obj"), nullptr);  // 2996 "v 0" lines
   ASSERT_TRUE(m);
   ASSERT_EQ(m->positions.size(), 2996u);
