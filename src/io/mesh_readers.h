@@ -10,6 +10,11 @@
 //
 // Errors: the readers return std::nullopt and write a one-line reason, with
 // the file name and line number for parse errors, to *error (when non-null).
+//
+// Files: one reader per format (obj_reader.cpp, gmsh_reader.cpp, vtk_legacy_reader.cpp,
+// vtk_xml_reader.cpp, stl_reader.cpp, sph_reader.cpp, off_reader.cpp), the choice by
+// extension in mesh_readers.cpp, the post-processing in mesh_finish.cpp; their shared
+// helpers are in reader_text.h and vtk_common.h.
 #pragma once
 
 #include <array>
