@@ -3,8 +3,8 @@
 #include "io/vtk_common.h"
 
 #include <array>
-#include <map>
 #include <optional>
+#include <tinyxml2.h>
 
 #include "io/reader_text.h"
 
@@ -12,104 +12,37 @@ namespace sinew::io::internal {
 
 namespace {
 
+namespace tx = tinyxml2;
+
 // How the binary arrays of a file are stored (attributes of <VTKFile>).
 struct BinaryLayout {
   std::size_t header_size = 4;  // the byte count before each array: header_type UInt32 or UInt64
   bool swap = false;            // byte_order is the other one than this machine's (BigEndian)
 };
 
-// --- minimal XML for VTK files
+// tinyxml2's ErrorStr() is "Error=<NAME> ErrorID=<n> (0x..) Line number=<n>[: <detail>]"; the line
+// goes in front of the message, so keep the name and the detail only.
+std::string xml_error_text(const tx::XMLDocument& doc) {
+  std::string text = std::string("XML error: ") + doc.ErrorName();
+  const std::string full = doc.ErrorStr() ? doc.ErrorStr() : "";
+  const std::size_t line_pos = full.find("Line number=");
+  const std::size_t detail = full.find(": ", line_pos == std::string::npos ? 0 : line_pos);
+  if (detail != std::string::npos) text += " (" + full.substr(detail + 2) + ")";
+  return text;
+}
 
-struct XmlElem {
-  std::string name;
-  std::map<std::string, std::string> attrs;
-  std::string text;
-  std::vector<XmlElem> children;
-  const XmlElem* child(const std::string& n) const {
-    for (const auto& c : children)
-      if (c.name == n) return &c;
-    return nullptr;
-  }
-  std::string attr(const std::string& n, const std::string& def = {}) const {
-    auto it = attrs.find(n);
-    return it == attrs.end() ? def : it->second;
-  }
-};
+std::string attr(const tx::XMLElement& e, const char* name, const char* def = "") {
+  const char* v = e.Attribute(name);
+  return v ? v : def;
+}
 
-struct XmlParser {
-  const std::string& s;
-  std::size_t i = 0;
-  std::string error;
-  void skip_ws() {
-    while (i < s.size() && is_space(s[i])) ++i;
-  }
-  void skip_misc() {
-    for (;;) {
-      skip_ws();
-      if (s.compare(i, 4, "<!--") == 0) {
-        auto e = s.find("-->", i);
-        i = e == std::string::npos ? s.size() : e + 3;
-      } else if (s.compare(i, 2, "<?") == 0) {
-        auto e = s.find("?>", i);
-        i = e == std::string::npos ? s.size() : e + 2;
-      } else {
-        return;
-      }
-    }
-  }
-  bool parse(XmlElem& e) {
-    skip_misc();
-    if (i >= s.size() || s[i] != '<') return (error = "element expected"), false;
-    ++i;
-    std::size_t b = i;
-    while (i < s.size() && !is_space(s[i]) && s[i] != '>' && s[i] != '/') ++i;
-    e.name = s.substr(b, i - b);
-    for (;;) {
-      skip_ws();
-      if (i >= s.size()) return (error = "unterminated tag <" + e.name + ">"), false;
-      if (s[i] == '/') {
-        if (s.compare(i, 2, "/>") != 0) return (error = "bad tag <" + e.name + ">"), false;
-        i += 2;
-        return true;
-      }
-      if (s[i] == '>') {
-        ++i;
-        break;
-      }
-      b = i;
-      while (i < s.size() && s[i] != '=' && !is_space(s[i])) ++i;
-      std::string key = s.substr(b, i - b);
-      skip_ws();
-      if (i >= s.size() || s[i] != '=') return (error = "bad attribute in <" + e.name + ">"), false;
-      ++i;
-      skip_ws();
-      if (i >= s.size() || (s[i] != '"' && s[i] != '\'')) return (error = "bad attribute in <" + e.name + ">"), false;
-      const char q = s[i++];
-      b = i;
-      while (i < s.size() && s[i] != q) ++i;
-      e.attrs[key] = s.substr(b, i - b);
-      ++i;
-    }
-    for (;;) {
-      b = i;
-      while (i < s.size() && s[i] != '<') ++i;
-      e.text += s.substr(b, i - b);
-      if (i >= s.size()) return (error = "unterminated element <" + e.name + ">"), false;
-      if (s.compare(i, 2, "</") == 0) {
-        auto end = s.find('>', i);
-        if (end == std::string::npos) return (error = "unterminated closing tag"), false;
-        i = end + 1;
-        return true;
-      }
-      if (s.compare(i, 4, "<!--") == 0 || s.compare(i, 2, "<?") == 0) {
-        skip_misc();
-        continue;
-      }
-      e.children.emplace_back();
-      if (!parse(e.children.back())) return false;
-    }
-  }
-};
+// The text of an element without that of its children (comments between numbers are skipped).
+std::string text_of(const tx::XMLElement& e) {
+  std::string s;
+  for (const tx::XMLNode* n = e.FirstChild(); n; n = n->NextSibling())
+    if (const tx::XMLText* t = n->ToText()) s += t->Value();
+  return s;
+}
 
 // Base64 with whitespace allowed and '=' padding inside: VTK may encode the byte-count header and
 // the values as two blocks, one after the other.
@@ -144,14 +77,14 @@ bool base64_decode(std::string_view in, std::vector<unsigned char>& out) {
 
 // The values of one <DataArray>, widened to double. ASCII Float32 values are rounded to float as
 // SOFA stores them, unless `ascii_as_double` (SOFA reads point coordinates as Float64).
-bool read_data_array(const XmlElem& da, const BinaryLayout& layout, std::vector<double>& out, std::string& why,
+bool read_data_array(const tx::XMLElement& da, const BinaryLayout& layout, std::vector<double>& out, std::string& why,
                      bool ascii_as_double = false) {
-  const std::string type = da.attr("type");
+  const std::string type = attr(da, "type");
   bool is_float = false, is_signed = true;
   const int size = vtk_type_size(type, &is_float, &is_signed);
   if (size == 0) return (why = "unsupported DataArray type '" + type + "'"), false;
-  const std::string format = da.attr("format", "ascii");
-  const std::string& text = da.text;
+  const std::string format = attr(da, "format", "ascii");
+  const std::string text = text_of(da);
   out.clear();
   if (format == "ascii") {
     Cursor c{text};
@@ -196,40 +129,46 @@ std::optional<MeshData> read_vtk_xml(const std::string& path, const std::string&
     if (error) *error = path + ": " + what;
     return std::nullopt;
   };
-  XmlParser p{text, 0, {}};
-  XmlElem root_elem;
-  if (!p.parse(root_elem)) return err("XML error: " + p.error);
-  const XmlElem* root = &root_elem;
-  const std::string root_name = root->name;
+  tx::XMLDocument doc;
+  if (doc.Parse(text.data(), text.size()) != tx::XML_SUCCESS) {
+    // Raw appended data is binary after '_': not XML text, so the parser stops in it.
+    if (text.find("<AppendedData") != std::string::npos)
+      return err("appended data (<AppendedData>) is not supported (ascii or binary DataArrays only)");
+    if (error) *error = where(path, doc.ErrorLineNum()) + xml_error_text(doc);
+    return std::nullopt;
+  }
+  const tx::XMLElement* root = doc.RootElement();
+  if (!root) return err("XML error: no root element");
+  const std::string root_name = root->Name();
   if (root_name != "VTKFile") return err("root element is <" + root_name + ">, <VTKFile> expected");
-  if (!root->attr("compressor").empty()) return err("compressed VTK XML files are not supported");
+  if (!attr(*root, "compressor").empty()) return err("compressed VTK XML files are not supported");
   // Binary arrays (and their byte-count headers) are in the file's byte order; ASCII arrays have none.
-  const std::string byte_order = root->attr("byte_order", "LittleEndian");
+  const std::string byte_order = attr(*root, "byte_order", "LittleEndian");
   if (byte_order != "LittleEndian" && byte_order != "BigEndian")
     return err("unknown byte_order '" + byte_order + "' (LittleEndian or BigEndian expected)");
-  const BinaryLayout layout{root->attr("header_type", "UInt32") == "UInt64" ? 8u : 4u, byte_order == "BigEndian"};
-  const std::string type = root->attr("type");
-  const XmlElem* grid = root->child(type);
+  const BinaryLayout layout{attr(*root, "header_type", "UInt32") == "UInt64" ? 8u : 4u, byte_order == "BigEndian"};
+  const std::string type = attr(*root, "type");
+  const tx::XMLElement* grid = root->FirstChildElement(type.c_str());
   if (!grid || (type != "UnstructuredGrid" && type != "PolyData"))
     return err("VTK XML type '" + type + "' is not supported (UnstructuredGrid or PolyData)");
-  const XmlElem* piece = grid->child("Piece");
+  const tx::XMLElement* piece = grid->FirstChildElement("Piece");
   if (!piece) return err("no <Piece> element");
   MeshData m;
   std::string why;
-  const XmlElem* pts = piece->child("Points");
-  if (!pts || !pts->child("DataArray")) return err("no <Points> data");
+  const tx::XMLElement* pts = piece->FirstChildElement("Points");
+  if (!pts || !pts->FirstChildElement("DataArray")) return err("no <Points> data");
   std::vector<double> points;
   // SOFA stores XML point coordinates as Float64 (ASCII values are not rounded to float).
-  if (!read_data_array(*pts->child("DataArray"), layout, points, why, true)) return err("Points: " + why);
+  if (!read_data_array(*pts->FirstChildElement("DataArray"), layout, points, why, true)) return err("Points: " + why);
   set_points(m, points);
   VtkCells vc;
   // Connectivity, offsets and (unless every cell has `fixed_type`) types, by Name.
-  auto read_cells = [&](const XmlElem& cells, int fixed_type) -> bool {
+  auto read_cells = [&](const tx::XMLElement& cells, int fixed_type) -> bool {
     std::optional<std::vector<double>> conn, offs, types;
-    for (const XmlElem& da : cells.children) {
-      const std::string name = da.attr("Name");
+    for (const tx::XMLElement* da = cells.FirstChildElement(); da; da = da->NextSiblingElement()) {
+      const std::string name = attr(*da, "Name");
       auto* t = name == "connectivity" ? &conn : name == "offsets" ? &offs : name == "types" ? &types : nullptr;
-      if (t && !read_data_array(da, layout, t->emplace(), why)) return false;
+      if (t && !read_data_array(*da, layout, t->emplace(), why)) return false;
     }
     if (!conn || !offs) return (why = "missing connectivity or offsets"), false;
     if (fixed_type < 0 && !types) return (why = "missing cell types"), false;
@@ -241,12 +180,12 @@ std::optional<MeshData> read_vtk_xml(const std::string& path, const std::string&
     return true;
   };
   if (type == "UnstructuredGrid") {
-    const XmlElem* cells = piece->child("Cells");
+    const tx::XMLElement* cells = piece->FirstChildElement("Cells");
     if (cells && !read_cells(*cells, -1)) return err("Cells: " + why);
     if (!vtk_to_mesh(m, vc, path, error, opt.flip_normals)) return std::nullopt;
   } else {
     // PolyData: only Polys are read (as SOFA): 2 vertices → line, 3 → triangle, 4 → quad, more → polyline.
-    if (const XmlElem* polys = piece->child("Polys")) {
+    if (const tx::XMLElement* polys = piece->FirstChildElement("Polys")) {
       if (!read_cells(*polys, 0)) return err("Polys: " + why);
       for (std::size_t c = 0; c < vc.offsets.size(); ++c) {
         const double n = c == 0 ? vc.offsets[0] : vc.offsets[c] - vc.offsets[c - 1];
@@ -256,14 +195,14 @@ std::optional<MeshData> read_vtk_xml(const std::string& path, const std::string&
     }
   }
   for (const char* section : {"PointData", "CellData"}) {
-    const XmlElem* s = piece->child(section);
+    const tx::XMLElement* s = piece->FirstChildElement(section);
     if (!s) continue;
-    for (const XmlElem& da : s->children) {
+    for (const tx::XMLElement* da = s->FirstChildElement(); da; da = da->NextSiblingElement()) {
       std::vector<double> values;
-      if (!read_data_array(da, layout, values, why)) return err(std::string(section) + ": " + why);
+      if (!read_data_array(*da, layout, values, why)) return err(std::string(section) + ": " + why);
       long long comps = 1;
-      to_number(da.attr("NumberOfComponents", "1"), comps);
-      const std::string name = da.attr("Name");  // normals too stay point data (SOFA's XML reader)
+      to_number(attr(*da, "NumberOfComponents", "1"), comps);
+      const std::string name = attr(*da, "Name");  // normals too stay point data (SOFA's XML reader)
       (std::string(section) == "PointData" ? m.point_data : m.cell_data)
           .push_back({name, static_cast<int>(comps), std::move(values)});
     }

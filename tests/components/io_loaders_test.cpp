@@ -608,6 +608,26 @@ TEST(IoVtk, XmlAppendedDataIsAnError) {
   EXPECT_NE(err.find("app.vtu: Points: DataArray format 'appended' is not supported (ascii or binary)"),
             std::string::npos)
       << err;
+  // Raw bytes that are not XML text ('<', '&', NUL): the file does not parse, the message says why.
+  std::string raw = R"(<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">
+  <UnstructuredGrid><Piece NumberOfPoints="1" NumberOfCells="0">
+    <Points><DataArray type="Float32" NumberOfComponents="3" format="appended" offset="0"/></Points>
+  </Piece></UnstructuredGrid>
+  <AppendedData encoding="raw">_)";
+  raw += std::string("\x0c\0\0\0<&\0\x3f\0\0\x80\x3f\0\0\0\x40", 16);
+  raw += "\n  </AppendedData>\n</VTKFile>\n";
+  EXPECT_FALSE(io::read_vtk(t.write("raw.vtu", raw), &err));
+  EXPECT_NE(err.find("raw.vtu: appended data (<AppendedData>) is not supported"), std::string::npos) << err;
+}
+
+// Malformed XML is an error with the line tinyxml2 stopped at.
+TEST(IoVtk, XmlSyntaxErrorHasTheLine) {
+  TempDir t;
+  std::string err;
+  EXPECT_FALSE(io::read_vtk(t.write("bad.vtu", "<VTKFile type=\"UnstructuredGrid\">\n<UnstructuredGrid>\n"
+                                               "<Piece></Peice>\n</UnstructuredGrid>\n</VTKFile>\n"),
+                            &err));
+  EXPECT_NE(err.find("bad.vtu:3: XML error: XML_ERROR_MISMATCHED_ELEMENT"), std::string::npos) << err;
 }
 
 TEST(IoVtk, BadCellIndexIsAnError) {
