@@ -10,6 +10,7 @@
 #include <regex>
 #include <set>
 
+#include "../components/test_scene.h"  // shared with the component tests
 #include "io/grid_mesh_creator.h"
 #include "io/mesh_gmsh_loader.h"
 #include "io/mesh_obj_loader.h"
@@ -19,7 +20,6 @@
 #include "io/sphere_loader.h"
 #include "io/string_mesh_creator.h"
 #include "state/mechanical_object.h"
-#include "test_scene.h"
 #include "topology/mesh_topology.h"
 
 using namespace sinew;
