@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "core/component.h"
@@ -108,6 +109,10 @@ class ForceField : public Component {
   // Return false when this component cannot assemble (the assembler reports it).
   virtual bool build_stiffness(MatrixSink& K) { return false; }
   virtual bool build_damping(MatrixSink& B) { return true; }  // no damping matrix by default
+  // Potential energy at the current positions (SOFA's getPotentialEnergy), so that
+  // add_force = −∂E/∂x. Like SOFA, some components compute it along with the force:
+  // read it after add_force at those positions. nullopt: not provided.
+  virtual std::optional<double> potential_energy() const { return std::nullopt; }
 
   void init() override;  // binds mstate to the node's state when not linked
   double k_factor(const MechParams& p) const { return p.k + p.b * rayleigh_stiffness.value(); }

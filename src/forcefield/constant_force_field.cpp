@@ -81,6 +81,20 @@ void ConstantForceField::add_force(const MechParams& p) {
   }
 }
 
+std::optional<double> ConstantForceField::potential_energy() const {
+  if (state() != ComponentState::valid) return std::nullopt;
+  const std::vector<double>& x = mstate->vec(kPosition);
+  const std::size_t n = x.size() / 3;
+  const bool from_end = index_from_end.value();
+  double e = 0;
+  for (std::size_t i = 0; i < idx_.size(); ++i) {
+    const std::size_t k = from_end ? n - idx_[i] - 1 : idx_[i];
+    if (k >= n) continue;
+    for (int c = 0; c < 3; ++c) e -= applied_[i][c] * x[3 * k + c];
+  }
+  return e;
+}
+
 void register_constant_force_field(Registry& r) {
   ComponentInfo info;
   info.name = "ConstantForceField";

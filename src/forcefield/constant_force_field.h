@@ -30,6 +30,8 @@ class ConstantForceField final : public ForceField {
   void add_force(const MechParams& p) override;
   void add_dforce(const MechParams&, double) override {}
   bool build_stiffness(MatrixSink&) override { return true; }
+  // SOFA's getPotentialEnergy: −Σ f_i·x_i over the loaded points.
+  std::optional<double> potential_energy() const override;
 
   // Per-index forces in use after init.
   const std::vector<Vec3>& applied() const { return applied_; }

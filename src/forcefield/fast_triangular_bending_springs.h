@@ -34,7 +34,8 @@ class FastTriangularBendingSprings final : public ForceField {
   bool build_stiffness(MatrixSink& K) override;
 
   const std::vector<EdgeSpring>& edge_springs() const { return springs_; }
-  double potential_energy() const { return energy_; }
+  // Energy of the last add_force (SOFA's m_potentialEnergy).
+  std::optional<double> potential_energy() const override { return energy_; }
 
  private:
   bool rebuild();

@@ -52,7 +52,12 @@ class HexahedronFEMBase : public Role, public RotationFinder {
   std::vector<Vec3> rest_;  // initial points (rest positions at init)
 };
 
-class HexahedronFEMForceField final : public HexahedronFEMBase<ForceField> {};
+class HexahedronFEMForceField final : public HexahedronFEMBase<ForceField> {
+ public:
+  // SOFA's m_potentialEnergy: ½·Σ ΔᵀKΔ over the elements (in their frames for
+  // large/polar), computed by the last add_force.
+  std::optional<double> potential_energy() const override { return fem_.potential_energy; }
+};
 
 // Element mass matrices (SOFA's closed form: every node pair gets
 // (8/27)·ρ·vol on its 3×3 identity block, vol from the rotated rest element)

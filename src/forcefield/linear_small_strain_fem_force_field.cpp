@@ -4,6 +4,19 @@
 
 namespace sinew {
 
+std::optional<double> LinearSmallStrainFEMForceField::potential_energy() const {
+  if (state() != ComponentState::valid) return std::nullopt;
+  const std::span<const Vec3> x = as_vec3(mstate->vec(kPosition));
+  const std::span<const Vec3> x0 = as_vec3(mstate->vec(kRestPosition));
+  if (x.size() != x0.size()) return std::nullopt;
+  // The blocks are those of ∂f/∂x = −K.
+  double e = 0;
+  auto add = [&](unsigned i, unsigned j, const Mat3& b) { e -= 0.5 * (x[i] - x0[i]).dot(b * (x[j] - x0[j])); };
+  if (element_kind() == FemElementKind::hexahedron) hexa_kernel().stiffness_blocks(add);
+  else tetra_kernel().stiffness_blocks(add);
+  return e;
+}
+
 void register_linear_small_strain_fem_force_field(Registry& r) {
   ComponentInfo info;
   info.name = "LinearSmallStrainFEMForceField";

@@ -10,6 +10,8 @@ namespace sinew {
 class LinearSmallStrainFEMForceField final : public ElementFEMForceFieldBase {
  public:
   explicit LinearSmallStrainFEMForceField(FemElementKind kind) : ElementFEMForceFieldBase(kind) {}
+  // ½·uᵀ·K·u with u = x − x_rest (SOFA returns 0).
+  std::optional<double> potential_energy() const override;
 
  protected:
   bool rotation_method(fem::RotationMethod& out) override {

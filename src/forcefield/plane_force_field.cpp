@@ -68,6 +68,22 @@ void PlaneForceField::add_force(const MechParams& p) {
   }
 }
 
+std::optional<double> PlaneForceField::potential_energy() const {
+  if (state() != ComponentState::valid || max_ > 0) return std::nullopt;
+  const std::vector<double>& x = mstate->vec(kPosition);
+  unsigned ibegin = 0, iend = static_cast<unsigned>(x.size() / 3);
+  const VecNi<2> r = local_range.value();
+  if (r[0] >= 0) ibegin = static_cast<unsigned>(r[0]);
+  if (r[1] >= 0 && static_cast<unsigned>(r[1]) + 1 < iend) iend = static_cast<unsigned>(r[1]) + 1;
+  const Vec3 n = normal.value();
+  double e = 0;
+  for (unsigned i = ibegin; i < iend; i++) {
+    const double dist = x[3 * i] * n[0] + x[3 * i + 1] * n[1] + x[3 * i + 2] * n[2] - d.value();
+    if (bilateral.value() || dist < 0) e += 0.5 * k_ * dist * dist;
+  }
+  return e;
+}
+
 void PlaneForceField::add_dforce(const MechParams& p, double kfactor) {
   MechanicalState& s = *mstate;
   const std::vector<double>& dx = s.vec(p.dx);

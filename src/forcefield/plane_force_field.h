@@ -29,6 +29,10 @@ class PlaneForceField final : public ForceField {
   void add_force(const MechParams& p) override;
   void add_dforce(const MechParams& p, double kfactor) override;
   bool build_stiffness(MatrixSink& K) override;
+  // ½·k·d² per point on the wrong side of the plane (either side when bilateral), d its
+  // distance; none with maxForce, whose capped force derives from no such energy.
+  // (SOFA does not implement it.)
+  std::optional<double> potential_energy() const override;
 
   const std::vector<unsigned>& contacts() const { return contacts_; }
 

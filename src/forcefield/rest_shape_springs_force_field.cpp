@@ -102,6 +102,25 @@ void RestShapeSpringsForceField::add_force(const MechParams& p) {
   }
 }
 
+std::optional<double> RestShapeSpringsForceField::potential_energy() const {
+  if (state() != ComponentState::valid) return std::nullopt;
+  const std::vector<double>& x = mstate->vec(kPosition);
+  const std::vector<double>& x0 = *rest();
+  const int N = dim_;
+  const bool use_ext = external_rest_shape.get() != nullptr;
+  double e = 0;
+  for (std::size_t i = 0; i < idx_.size(); ++i) {
+    const unsigned a = idx_[i];
+    const unsigned b = use_ext ? ext_idx_[i] : idx_[i];
+    const double k = k_[i < k_.size() ? i : 0];
+    for (int c = 0; c < N; ++c) {
+      const double d = active_[c] ? x[a * N + c] - x0[b * N + c] : 0.0;
+      e += 0.5 * k * d * d;
+    }
+  }
+  return e;
+}
+
 void RestShapeSpringsForceField::add_dforce(const MechParams& p, double kfactor) {
   const std::vector<double>& dx = mstate->vec(p.dx);
   std::vector<double>& df = mstate->vec(p.df);

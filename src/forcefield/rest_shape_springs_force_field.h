@@ -37,6 +37,8 @@ class RestShapeSpringsForceField final : public ForceField {
   void add_force(const MechParams& p) override;
   void add_dforce(const MechParams& p, double kfactor) override;
   bool build_stiffness(MatrixSink& K) override;
+  // ½·Σ k_i·|x_i − x0_i|² over the active directions (SOFA does not implement it).
+  std::optional<double> potential_energy() const override;
 
  private:
   bool compute_indices();

@@ -49,7 +49,9 @@ class SpringForceField : public ForceField {
   // The springs in use after init (explicit list, then generated grid springs).
   const std::vector<springs::LinearSpring>& spring_list() const { return springs_; }
   const std::vector<springs::LinearSpring>& grid_springs() const { return grid_springs_; }
-  double potential_energy() const { return energy_; }
+  // Σ ½·ks·(d − L0)² over the springs active in the last add_force (SOFA's addForce
+  // sum; its getPotentialEnergy also counts disabled and slack elongation-only springs).
+  std::optional<double> potential_energy() const override { return energy_; }
 
  protected:
   // Binds object1/object2 (default: the node's state); false (component

@@ -71,6 +71,18 @@ bool TetrahedronFEMForceField::build_stiffness(MatrixSink& K) {
   return true;
 }
 
+std::optional<double> TetrahedronFEMForceField::potential_energy() const {
+  if (state() != ComponentState::valid) return std::nullopt;
+  if (fem_.method != fem::TetraMethod::small) return std::nullopt;
+  const std::span<const Vec3> x = as_vec3(mstate->vec(kPosition));
+  if (x.size() < fem_.X0.size()) return std::nullopt;
+  // The blocks are those of ∂f/∂x = −K.
+  double e = 0;
+  fem_.add_stiffness_blocks(
+      [&](int i, int j, const Mat3& b) { e -= 0.5 * (x[i] - fem_.X0[i]).dot(b * (x[j] - fem_.X0[j])); });
+  return e;
+}
+
 void register_tetrahedron_fem_force_field(Registry& r) {
   ComponentInfo info;
   info.name = "TetrahedronFEMForceField";

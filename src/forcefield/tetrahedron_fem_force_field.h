@@ -73,6 +73,9 @@ class TetrahedronFEMForceField final : public ForceField, public RotationFinder 
   void add_force(const MechParams& p) override;
   void add_dforce(const MechParams& p, double kfactor) override;
   bool build_stiffness(MatrixSink& K) override;
+  // SOFA's getPotentialEnergy, small method only: ½·Σ_e uᵀ·K_e·u with u = x − X0
+  // (plastic strains ignored, as SOFA does). None for the corotational methods.
+  std::optional<double> potential_energy() const override;
 
   const fem::TetraFEM& kernel() const { return fem_; }
   // Per-point rotations for the Warp/PrecomputedWarp preconditioners (SOFA getRotations).

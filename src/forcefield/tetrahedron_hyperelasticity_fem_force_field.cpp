@@ -61,6 +61,11 @@ void TetrahedronHyperelasticityFEMForceField::init() {
   if (!issues.empty()) state_ = ComponentState::invalid;
 }
 
+std::optional<double> TetrahedronHyperelasticityFEMForceField::potential_energy() const {
+  if (state() != ComponentState::valid) return std::nullopt;
+  return fem_.energy(as_vec3(mstate->vec(kPosition)));
+}
+
 void TetrahedronHyperelasticityFEMForceField::add_force(const MechParams& p) {
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;

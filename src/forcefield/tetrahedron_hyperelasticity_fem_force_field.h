@@ -37,6 +37,8 @@ class TetrahedronHyperelasticityFEMForceField final : public ForceField {
   bool build_stiffness(MatrixSink& K) override;
 
   const hyper::TetraHyperelasticity& kernel() const { return fem_; }
+  // Σ V0·W(C) over the elements (SOFA does not implement it).
+  std::optional<double> potential_energy() const override;
 
  private:
   hyper::TetraHyperelasticity fem_;

@@ -25,7 +25,8 @@ class TriangularBendingSprings final : public ForceField {
   bool build_stiffness(MatrixSink& K) override;
 
   const std::vector<springs::LinearSpring>& spring_list() const { return springs_; }
-  double potential_energy() const { return energy_; }
+  // Σ ½·ks·(d − L0)² of the last add_force (SOFA computes it there but does not return it).
+  std::optional<double> potential_energy() const override { return energy_; }
 
  private:
   bool rebuild();

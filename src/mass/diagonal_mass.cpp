@@ -128,6 +128,18 @@ void DiagonalMass::add_force(const MechParams& p) {
     for (int c = 0; c < w; ++c) f[i * w + c] += g[c] * m[i];
 }
 
+std::optional<double> DiagonalMass::potential_energy() const {
+  if (state() != ComponentState::valid) return std::nullopt;
+  const std::vector<double>& x = mstate->vec(kPosition);
+  const Vec3 g = node()->gravity.value();
+  const int w = mstate->info().coord_width;
+  const auto& m = vertex_mass.value();
+  double e = 0;
+  for (std::size_t i = 0; i < m.size() && (i + 1) * w <= x.size(); ++i)
+    for (int c = 0; c < w; ++c) e -= g[c] * x[i * w + c] * m[i];
+  return e;
+}
+
 void DiagonalMass::add_mdx(const MechParams&, int res, int dx, double factor) {
   MechanicalState& s = *mstate;
   std::vector<double>& r = s.vec(res);

@@ -32,6 +32,8 @@ class DiagonalMass final : public Mass {
   void add_gravity_to_v(int v, double dt) override;
   double total() const override { return total_mass.value(); }
   bool build_mass(MatrixSink& M) override;
+  // SOFA's getPotentialEnergy: −Σ m_i·g·x_i.
+  std::optional<double> potential_energy() const override;
 
   const std::vector<double>& masses() const { return vertex_mass.value(); }
 

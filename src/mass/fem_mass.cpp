@@ -149,6 +149,16 @@ void FEMMass::add_force(const MechParams& p) {
     }
 }
 
+std::optional<double> FEMMass::potential_energy() const {
+  if (state() != ComponentState::valid) return std::nullopt;
+  const std::span<const Vec3> x = as_vec3(mstate->vec(kPosition));
+  const Vec3 g = node()->gravity.value();
+  double e = 0;
+  for (std::size_t r = 0; r + 1 < row_begin_.size(); ++r)
+    for (std::size_t k = row_begin_[r]; k < row_begin_[r + 1]; ++k) e -= x[r].dot(g * vals_[k]);
+  return e;
+}
+
 void FEMMass::add_mdx(const MechParams&, int res, int dx, double factor) {
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;

@@ -31,6 +31,9 @@ class FEMMass final : public Mass {
   void add_gravity_to_v(int v, double dt) override;
   double total() const override { return total_; }
   bool build_mass(MatrixSink& M) override;
+  bool is_diagonal() const override { return false; }  // consistent mass matrix (SOFA: isDiagonal() false)
+  // SOFA's getPotentialEnergy: −Σ_ij x_i·g·M_ij.
+  std::optional<double> potential_energy() const override;
 
   // Scalar node×node mass matrix (CSR, rows in increasing order, sorted columns).
   const std::vector<std::size_t>& row_begin() const { return row_begin_; }

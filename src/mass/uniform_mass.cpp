@@ -80,6 +80,19 @@ void UniformMass::add_force(const MechParams& p) {
     for (int c = 0; c < dim; ++c) f[i * w + c] += mg[c];
 }
 
+std::optional<double> UniformMass::potential_energy() const {
+  if (state() != ComponentState::valid) return std::nullopt;
+  const MechanicalState& s = *mstate;
+  const std::vector<double>& x = mstate->vec(kPosition);
+  const Vec3 g = node()->gravity.value();
+  const int w = s.info().coord_width;
+  const int dim = std::min(3, s.info().spatial_dim);
+  double e = 0;
+  for (unsigned i : active_)
+    for (int c = 0; c < dim; ++c) e -= m_ * g[c] * x[i * w + c];
+  return e;
+}
+
 void UniformMass::add_mdx(const MechParams&, int res, int dx, double factor) {
   MechanicalState& s = *mstate;
   std::vector<double>& r = s.vec(res);

@@ -33,6 +33,8 @@ class UniformMass final : public Mass {
   void add_gravity_to_v(int v, double dt) override;
   double total() const override { return total_mass.value(); }
   bool build_mass(MatrixSink& M) override;
+  // SOFA's getPotentialEnergy: −Σ m·g·x over the DoFs with mass (their centres for Rigid3d).
+  std::optional<double> potential_energy() const override;
 
   double mass() const { return m_; }
 

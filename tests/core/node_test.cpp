@@ -1,5 +1,5 @@
 // Nodes: slots, look-ups, default-name counters, context (spec/framework.md §3.1–§3.3, traps T2, T3, T12).
-// Default names built from XML are tested in tests/components/scene_builder_test.cpp
+// Default names built from XML are tested in tests/scene/scene_builder_test.cpp
 // (the scene builder is not part of sinew_core).
 #include "core/node.h"
 

@@ -1,6 +1,7 @@
 // Registry: renamed classes, template aliases, template deduction and fallbacks
 // (spec/framework.md §1.3–§1.5, trap T15). Uses a local Registry filled with
-// test classes; the real components are exercised in tests/components.
+// test classes; the real components are exercised in the tests of their
+// modules (tests/forcefield, tests/mass, ...).
 #include "core/registry.h"
 
 #include <gtest/gtest.h>

@@ -10,7 +10,7 @@
 #include <regex>
 #include <set>
 
-#include "../components/test_scene.h"  // shared with the component tests
+#include "test_scene.h"
 #include "io/grid_mesh_creator.h"
 #include "io/mesh_gmsh_loader.h"
 #include "io/mesh_obj_loader.h"

@@ -71,7 +71,7 @@ TEST(SpringForceField, ForceIsMinusTheGradientOfTheEnergy) {
   MechanicalState& st = *s.root->mechanical_state;
   const std::vector<double> x = st.vec(kPosition);
   const auto f = force_at(*ff, st, x);
-  EXPECT_NEAR(ff->potential_energy(), spring_energy(*ff, x), 1e-12);
+  EXPECT_NEAR(ff->potential_energy().value(), spring_energy(*ff, x), 1e-12);
   const double h = 1e-6;
   for (std::size_t i = 0; i < x.size(); ++i) {
     auto xp = x, xm = x;

@@ -236,7 +236,7 @@ TEST(FastTriangularBendingSprings, ForceIsMinusTheGradientAndTheTangentIsExact) 
   EXPECT_GT(max_abs(f), 1e-3);
   auto energy = [&](const std::vector<double>& y) {
     force_at(*ff, st, y);
-    return ff->potential_energy();
+    return ff->potential_energy().value();
   };
   const double h = 1e-6;
   for (std::size_t i = 0; i < x.size(); ++i) {
