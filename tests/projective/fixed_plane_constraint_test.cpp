@@ -13,8 +13,8 @@
 #include "core/node.h"
 #include "core/simulation.h"
 #include "projective/fixed_plane_projective_constraint.h"
-#include "solver/matrix_linear_solver.h"
-#include "solver/matrix_linear_system.h"
+#include "solver/linear/matrix_linear_solver.h"
+#include "solver/system/matrix_linear_system.h"
 #include "test_scene.h"
 
 using namespace sinew;

@@ -16,8 +16,8 @@
 #include "core/mechanical_ops.h"
 #include "core/node.h"
 #include "core/simulation.h"
-#include "solver/matrix_linear_solver.h"
-#include "solver/matrix_linear_system.h"
+#include "solver/linear/matrix_linear_solver.h"
+#include "solver/system/matrix_linear_system.h"
 #include "test_scene.h"
 
 extern "C" {

@@ -10,11 +10,11 @@
 #include "core/mechanical_ops.h"
 #include "core/node.h"
 #include "core/simulation.h"
-#include "solver/constant_sparsity_pattern_system.h"
-#include "solver/matrix_linear_solver.h"
-#include "solver/matrix_linear_system.h"
+#include "solver/system/constant_sparsity_pattern_system.h"
+#include "solver/linear/matrix_linear_solver.h"
+#include "solver/system/matrix_linear_system.h"
 #include "forcefield/spring_force_field.h"
-#include "solver/sparse_ldl_solver.h"
+#include "solver/linear/sparse_ldl_solver.h"
 #include "test_scene.h"
 
 using namespace sinew;

@@ -9,10 +9,10 @@
 
 #include "core/registry.h"
 #include "math/block_csr.h"
-#include "solver/block_jacobi_preconditioner.h"
-#include "solver/jacobi_preconditioner.h"
-#include "solver/matrix_linear_system.h"
-#include "solver/ssor_preconditioner.h"
+#include "solver/preconditioner/block_jacobi_preconditioner.h"
+#include "solver/preconditioner/jacobi_preconditioner.h"
+#include "solver/system/matrix_linear_system.h"
+#include "solver/preconditioner/ssor_preconditioner.h"
 #include "test_scene.h"
 
 using namespace sinew;

@@ -10,12 +10,12 @@
 #include "core/mechanical_ops.h"
 #include "core/node.h"
 #include "core/rotation_finder.h"
-#include "solver/composite_linear_system.h"
-#include "solver/min_res_linear_solver.h"
-#include "solver/pcg_linear_solver.h"
-#include "solver/precomputed_warp_preconditioner.h"
-#include "solver/rotation_matrix_system.h"
-#include "solver/warp_preconditioner.h"
+#include "solver/system/composite_linear_system.h"
+#include "solver/linear/min_res_linear_solver.h"
+#include "solver/linear/pcg_linear_solver.h"
+#include "solver/preconditioner/precomputed_warp_preconditioner.h"
+#include "solver/system/rotation_matrix_system.h"
+#include "solver/preconditioner/warp_preconditioner.h"
 #include "test_scene.h"
 
 using namespace sinew;

@@ -1,6 +1,6 @@
 // EulerImplicitSolver (spec/solvers.md §1.1) and CGLinearSolver (§3.1) on small analytic scenes.
-#include "solver/cg_linear_solver.h"
-#include "solver/euler_implicit_solver.h"
+#include "solver/linear/cg_linear_solver.h"
+#include "solver/ode/euler_implicit_solver.h"
 
 #include <gtest/gtest.h>
 

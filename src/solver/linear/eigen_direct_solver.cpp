@@ -1,0 +1,55 @@
+#include "solver/linear/eigen_direct_solver.h"
+
+#include "core/node.h"
+
+namespace sinew {
+
+void EigenDirectSolver::init() {
+  MatrixLinearSolver::init();
+  OrderingMethod* o = find_or_create_ordering(*this, ordering_method);
+  ordering_name_ = o ? o->method_name() : "AMD";
+  factor_ = make(ordering_name_);
+  if (!factor_) {
+    msg_error("the ordering method '" + ordering_name_ + "' is not supported by this solver");
+    state_ = ComponentState::invalid;
+  }
+}
+
+void EigenDirectSolver::invert(const BlockCsrMatrix& A) {
+  factorized_ = false;
+  if (!factor_) return;
+  A.to_filtered_csr(rb_, ci_, vals_);
+  const int n = static_cast<int>(A.size());
+  if (n == 0) {
+    msg_warning("Invalid Linear System to solve (null size). Please ensure that there are DoFs to solve.");
+    return;
+  }
+  Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor, int>> map(n, n, static_cast<int>(vals_.size()),
+                                                                           rb_.data(), ci_.data(), vals_.data());
+  matrix_ = map;
+  if (!analyzed_ || rb_ != prev_rb_ || ci_ != prev_ci_) {
+    factor_->analyze(matrix_);
+    prev_rb_ = rb_;
+    prev_ci_ = ci_;
+    analyzed_ = true;
+  }
+  factor_->factorize(matrix_);
+  switch (factor_->info()) {
+    case Eigen::Success: factorized_ = true; break;
+    case Eigen::NumericalIssue:
+      msg_error("Solver cannot factorize: numerical issue (the system matrix is singular or not positive definite)");
+      break;
+    case Eigen::NoConvergence: msg_error("Solver cannot factorize: no convergence"); break;
+    case Eigen::InvalidInput: msg_error("Solver cannot factorize: invalid input"); break;
+  }
+}
+
+void EigenDirectSolver::solve(const BlockCsrMatrix& A, Eigen::VectorXd& x, const Eigen::VectorXd& b) {
+  if (!factorized_ || b.size() != static_cast<Eigen::Index>(A.size())) {
+    x.setZero(b.size());
+    return;
+  }
+  factor_->solve(b, x);
+}
+
+}  // namespace sinew

@@ -1,0 +1,14 @@
+// NaturalOrderingMethod: identity permutation (spec/solvers.md §3.5).
+#pragma once
+
+#include "solver/linear/ordering_method.h"
+
+namespace sinew {
+
+class NaturalOrderingMethod final : public OrderingMethod {
+ public:
+  std::string method_name() const override { return "Natural"; }
+  void compute_permutation(int n, const int* colptr, const int* rowind, std::vector<int>& perm) override;
+};
+
+}  // namespace sinew
