@@ -16,7 +16,7 @@
 #include "components/register_all.h"
 #include "core/node.h"
 #include "core/registry.h"
-#include "core/timer.h"
+#include "core/profile.h"
 #include "io/vtk_writer.h"
 #include "regression/gzip_text.h"
 #include "runner/probes.h"
@@ -77,8 +77,8 @@ bool export_vtk(Node& root, const std::string& path) {
   for (const auto& t : runner::select_states(root, false)) {
     if (t.state->state_type() != StateType::vec3) continue;
     io::VtkMesh mesh;
-    const auto x = as_vec3(t.state->vec(kPosition));
-    const auto v = as_vec3(t.state->vec(kVelocity));
+    const auto x = as_vec3(t.state->read(kPosition));
+    const auto v = as_vec3(t.state->read(kVelocity));
     mesh.points.assign(x.begin(), x.end());
     mesh.point_vectors.emplace_back("velocity", std::vector<Vec3>(v.begin(), v.end()));
     if (MeshTopologyBase* topo = t.node->get_mesh_topology_link(); topo && topo->nb_points() == x.size()) {
@@ -102,6 +102,22 @@ bool export_vtk(Node& root, const std::string& path) {
   }
   std::fprintf(stderr, "sinew: no simulated Vec3d body to export\n");
   return false;
+}
+
+// Stage table, then the solvers' own scopes ("solve/forces", ...).
+void print_profile(const StepProfile& p) {
+  const long n = p.steps();
+  if (n == 0) return;
+  std::printf("%-40s %12s %10s %8s\n", "stage", "total (ms)", "ms/step", "calls");
+  std::printf("%-40s %12.2f %10.3f %8ld\n", "step", 1000.0 * p.step_seconds(), 1000.0 * p.step_seconds() / n, n);
+  for (int i = 0; i < kStageCount; ++i) {
+    const Stage s = static_cast<Stage>(i);
+    const std::string name = std::string("step/") + stage_name(s);
+    std::printf("%-40s %12.2f %10.3f %8ld\n", name.c_str(), 1000.0 * p.stage_seconds(s), 1000.0 * p.stage_seconds(s) / n,
+                n);
+  }
+  for (const auto& e : p.scopes())
+    std::printf("%-40s %12.2f %10.3f %8ld\n", e.name.c_str(), 1000.0 * e.seconds, 1000.0 * e.seconds / n, e.count);
 }
 
 }  // namespace
@@ -149,7 +165,8 @@ int run(const RunArgs& a) {
     }
   }
 
-  if (a.timing) timing::set_enabled(true);
+  StepProfile& profile = root.profile();
+  profile.set_enabled(a.timing);
   std::printf("Computing %ld iterations.\n", a.steps);
   ProgressBar bar(a.steps, a.progress);
   const auto t0 = std::chrono::steady_clock::now();
@@ -165,11 +182,7 @@ int run(const RunArgs& a) {
   const long done = session.steps_done();
   std::printf("%ld iterations done in %g s ( %g FPS).\n", done, secs, secs > 0 ? done / secs : 0.0);
   if (done > 0) std::printf("%.3f ms/step\n", 1000.0 * secs / done);
-  if (a.timing && done > 0) {
-    std::printf("%-40s %12s %10s %8s\n", "stage", "total (ms)", "ms/step", "calls");
-    for (const auto& e : timing::report())
-      std::printf("%-40s %12.2f %10.3f %8ld\n", e.name.c_str(), 1000.0 * e.seconds, 1000.0 * e.seconds / done, e.count);
-  }
+  if (a.timing && done > 0) print_profile(profile);
   for (const auto& [file, text] : dumps) {
     std::string err;
     if (!regression::write_text_file(file, *text, false, &err)) {
@@ -250,9 +263,11 @@ int components(const std::string& name) {
   for (BaseField* f : c->fields()) groups[f->group()].push_back(f);
   for (const auto& [group, fields] : groups) {
     std::printf("  [%s]\n", group.empty() ? "General" : group.c_str());
-    for (BaseField* f : fields)
-      std::printf("    %-26s %-18s default \"%s\"  %s\n", f->name().c_str(), f->type_name().c_str(),
-                  f->default_text().c_str(), f->help().c_str());
+    for (BaseField* f : fields) {
+      const std::string unit = *f->unit() ? std::string(" [") + f->unit() + "]" : std::string();
+      std::printf("    %-26s %-18s default \"%s\"%s  %s\n", f->name().c_str(), f->type_name().c_str(),
+                  f->default_text().c_str(), unit.c_str(), f->help().c_str());
+    }
   }
   if (!c->links().empty()) {
     std::printf("  [Links]\n");

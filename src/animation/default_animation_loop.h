@@ -1,13 +1,12 @@
-// DefaultAnimationLoop: SOFA's standard step pipeline (spec/framework.md §4.1).
+// DefaultAnimationLoop: SOFA's standard step (spec/framework.md §4.1), as a
+// declared list of stages (animation/step_stages.h):
 //
-//   begin event → collision → explicit interaction forces → solve every solver
-//   node → project → propagate through mappings → end integration → time += dt
-//   → end event.
+//   begin events → collision → explicit interaction forces → solve every
+//   solver node → constraint correction → project and propagate → check
+//   state → end integration → time += dt → end events.
 #pragma once
 
-#include <memory>
-
-#include "core/mechanical_ops.h"
+#include "animation/step_stages.h"
 #include "core/roles.h"
 
 namespace sinew {
@@ -19,19 +18,16 @@ class DefaultAnimationLoop final : public AnimationLoop {
   Field<bool> compute_bounding_box{this, "computeBoundingBox", true, "update bounding boxes (viewer only)",
                                    "Visualization"};
 
+  static constexpr Stage kStages[] = {
+      Stage::begin_events,          Stage::collision,   Stage::interaction_forces, Stage::solve,
+      Stage::constraint_correction, Stage::project_and_propagate, Stage::check_state,
+      Stage::end_integration,       Stage::advance_time, Stage::end_events,
+  };
+
   void step(double dt) override;
 
  private:
-  // Stages, in order.
-  void solve(Node& node, double dt);
-  // Parallel mode: explicit interaction forces first, then the solver nodes to run concurrently.
-  void collect_solver_nodes(Node& node);
-  void project_and_propagate(Node& root, double t1);
-  void end_integration(Node& root);
-  void advance_time(Node& root, double dt);
-
-  std::unique_ptr<MechanicalOps> whole_graph_;
-  std::vector<Node*> solver_nodes_;  // scope of the root, for projection/propagation
+  GraphView view_;
 };
 
 }  // namespace sinew

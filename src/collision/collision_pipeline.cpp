@@ -32,7 +32,7 @@ class CollisionPipeline final : public Component {
     if (!models.empty()) {
       msg_error("collision detection and response are not implemented yet: this scene has " +
                 std::to_string(models.size()) + " collision model(s), starting with " + models.front()->describe());
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
     }
   }
 };

@@ -25,6 +25,12 @@ Component::Component() {
 }
 Component::~Component() = default;
 
+void Component::set_state(ComponentState s) {
+  if (s == state_) return;
+  state_ = s;
+  if (node_) node_->bump_structure_version();
+}
+
 std::string Component::describe() const {
   return "component '" + name.value() + "' (" + class_name_ + ")";
 }

@@ -77,8 +77,14 @@ class Component : public Base {
   // Viewer-only components accept any attribute silently (nothing to check in batch runs).
   virtual bool accepts_any_attribute() const { return false; }
 
+  // An invalid component is skipped by the step (it cannot work: bad input,
+  // missing link, diverged). Changing the state bumps the graph's structure
+  // version, so gathered scopes drop or take back the component.
   ComponentState state() const { return state_; }
-  void set_state(ComponentState s) { state_ = s; }
+  void set_state(ComponentState s);
+  // Set by the simulation once init() ran (init_root, or init_added for components added later).
+  bool initialised() const { return initialised_; }
+  void mark_initialised() { initialised_ = true; }
 
   std::string describe() const override;
 
@@ -87,10 +93,9 @@ class Component : public Base {
   void msg_warning(const std::string& text) const;
   void msg_info(const std::string& text) const;
 
- protected:
-  ComponentState state_ = ComponentState::valid;
-
  private:
+  ComponentState state_ = ComponentState::valid;
+  bool initialised_ = false;
   std::string class_name_, template_name_;
   Node* node_ = nullptr;
 };

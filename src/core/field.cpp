@@ -5,8 +5,8 @@
 
 namespace sinew {
 
-BaseField::BaseField(Base* owner, std::string name, std::string help, std::string group)
-    : owner_(owner), name_(std::move(name)), help_(std::move(help)), group_(std::move(group)) {
+BaseField::BaseField(Base* owner, std::string name, std::string help, std::string group, const char* unit)
+    : owner_(owner), name_(std::move(name)), help_(std::move(help)), group_(std::move(group)), unit_(unit) {
   if (owner_) owner_->register_field(this);
 }
 

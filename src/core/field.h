@@ -31,7 +31,9 @@ struct FlatVec {
 
 class BaseField {
  public:
-  BaseField(Base* owner, std::string name, std::string help, std::string group);
+  // `unit`: a string literal naming the quantity's unit in consistent units
+  // ("length", "force/length", "mass/length³"): SOFA scenes use any length unit.
+  BaseField(Base* owner, std::string name, std::string help, std::string group, const char* unit = "");
   BaseField(const BaseField&) = delete;
   BaseField& operator=(const BaseField&) = delete;
   virtual ~BaseField() = default;
@@ -39,6 +41,8 @@ class BaseField {
   const std::string& name() const { return name_; }
   const std::string& help() const { return help_; }
   const std::string& group() const { return group_; }
+  // Unit of the value in consistent units, "" when it has none (flags, counts, names, indices).
+  const char* unit() const { return unit_; }
   Base* owner() const { return owner_; }
   const std::vector<std::string>& aliases() const { return aliases_; }
   void add_alias(std::string a) { aliases_.push_back(std::move(a)); }
@@ -53,7 +57,13 @@ class BaseField {
   bool is_set() const { return set_; }
   void mark_set() { set_ = true; }
   std::uint64_t version() const { return version_; }
-  void touch() { ++version_; }
+  void touch() { changed(); }
+
+  // Called after every write (set, edit, read, touch): lets an owner follow a
+  // field that shapes the graph (a node's `activated`). A plain function
+  // pointer: one branch on the write paths, nothing on reads.
+  using ChangeHook = void (*)(BaseField&);
+  void set_change_hook(ChangeHook h) { change_hook_ = h; }
 
   // File-name fields are resolved against the scene folder and data paths by the loader.
   bool is_file() const { return is_file_; }
@@ -86,10 +96,15 @@ class BaseField {
  protected:
   // Copies `other`'s value (same type: direct; otherwise rows, else text).
   virtual void copy_from(const BaseField& other) = 0;
+  void changed() {
+    ++version_;
+    if (change_hook_) change_hook_(*this);
+  }
   void copy_generic(const BaseField& other);
 
   Base* owner_;
   std::string name_, help_, group_;
+  const char* unit_ = "";
   std::vector<std::string> aliases_;
   bool set_ = false;
   bool autolink_ = true;
@@ -99,6 +114,7 @@ class BaseField {
   mutable std::uint64_t parent_version_seen_ = 0;
   std::string link_path_;
   Engine* producer_ = nullptr;
+  ChangeHook change_hook_ = nullptr;
 };
 
 // Element-wise row access for the types that have one.
@@ -144,8 +160,10 @@ template <std::size_t N> struct TypeName<std::vector<std::array<unsigned, N>>> {
 template <class T>
 class Field final : public BaseField {
  public:
-  Field(Base* owner, std::string name, T def, std::string help, std::string group = {})
-      : BaseField(owner, std::move(name), std::move(help), std::move(group)), value_(def), default_(std::move(def)) {}
+  Field(Base* owner, std::string name, T def, std::string help, std::string group = {}, const char* unit = "")
+      : BaseField(owner, std::move(name), std::move(help), std::move(group), unit),
+        value_(def),
+        default_(std::move(def)) {}
 
   // Up-to-date value (follows links, runs engines).
   const T& get() const {
@@ -158,15 +176,18 @@ class Field final : public BaseField {
   T& edit() {
     update();
     set_ = true;
-    ++version_;
+    changed();
     return value_;
   }
   void set(T v) {
     value_ = std::move(v);
     set_ = true;
-    ++version_;
+    changed();
   }
   const T& default_value() const { return default_; }
+  // Write access without a version change or pull, for storage whose changes
+  // are announced separately (state vectors: MechanicalState::write/touch).
+  T& raw() { return value_; }
 
   std::string type_name() const override { return TypeName<T>::get(); }
   std::string default_text() const override { return to_text(default_); }
@@ -174,7 +195,7 @@ class Field final : public BaseField {
   bool read(std::string_view text) override {
     const bool ok = read_value(text, value_);
     set_ = true;
-    ++version_;
+    changed();
     return ok;
   }
 
@@ -251,6 +272,10 @@ class BaseLink {
   virtual bool is_multi() const { return false; }
   virtual void clear_targets() {}
   virtual void add_target(Base*) {}
+  // Whether `b` is (one of) the target(s); forget(b) drops it. Used when `b`
+  // leaves the graph so that no link is left dangling.
+  virtual bool references(const Base* b) const { return b && target() == b; }
+  virtual void forget(const Base* b) = 0;
 
  private:
   std::string name_, help_, path_;
@@ -271,6 +296,9 @@ class Link final : public BaseLink {
   }
   Base* target() const override;
   std::string type_name() const override { return "link"; }
+  void forget(const Base* b) override {
+    if (references(b)) ptr_ = nullptr;
+  }
 
  private:
   T* ptr_ = nullptr;

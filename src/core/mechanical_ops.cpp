@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cmath>
 
+#include "core/assert.h"
 #include "core/node.h"
 
 namespace sinew {
@@ -16,7 +17,12 @@ int MechanicalOps::alloc_vec() {
   return next++;
 }
 
+void MechanicalOps::sync() {
+  if (built_version_ != node_->structure_version()) rebuild();
+}
+
 void MechanicalOps::rebuild() {
+  built_version_ = node_->structure_version();
   states_.clear();
   independent_.clear();
   mapped_.clear();
@@ -49,7 +55,7 @@ void MechanicalOps::rebuild() {
       states_.push_back(s);
       (s->independent() ? independent_ : mapped_).push_back(s);
     }
-    if (n->mass) masses_.push_back(n->mass);
+    if (n->mass && n->mass->state() == ComponentState::valid) masses_.push_back(n->mass);
     for (ForceField* ff : n->force_fields)
       if (ff->state() == ComponentState::valid) force_fields_.push_back(ff);
     for (ForceField* ff : n->interaction_force_fields)
@@ -63,33 +69,35 @@ void MechanicalOps::rebuild() {
 
 void MechanicalOps::v_clear(int r) {
   for (MechanicalState* s : independent_) {
-    auto& v = s->vec(r);
+    auto& v = s->write(r);
     std::fill(v.begin(), v.end(), 0.0);
   }
 }
 
 void MechanicalOps::v_eq(int r, int a) {
-  for (MechanicalState* s : independent_) s->vec(r) = s->vec(a);
+  for (MechanicalState* s : independent_) s->write(r) = s->read(a);
 }
 
 void MechanicalOps::v_peq(int r, int a, double f) {
   for (MechanicalState* s : independent_) {
-    auto& rv = s->vec(r);
-    const auto& av = s->vec(a);
+    auto& rv = s->write(r);
+    const auto& av = s->read(a);
+    SINEW_ASSERT(av.size() == rv.size(), "v_peq: vectors of one state have the same layout");
     for (std::size_t i = 0; i < rv.size(); ++i) rv[i] += av[i] * f;
   }
 }
 
 void MechanicalOps::v_teq(int r, double f) {
   for (MechanicalState* s : independent_)
-    for (double& x : s->vec(r)) x *= f;
+    for (double& x : s->write(r)) x *= f;
 }
 
 void MechanicalOps::v_op(int r, int a, int b, double f) {
   for (MechanicalState* s : independent_) {
-    auto& rv = s->vec(r);
-    const auto& av = s->vec(a);
-    const auto& bv = s->vec(b);
+    auto& rv = s->write(r);
+    const auto& av = s->read(a);
+    const auto& bv = s->read(b);
+    SINEW_ASSERT(av.size() == bv.size(), "v_op: vectors of one state have the same layout");
     rv.resize(av.size());
     for (std::size_t i = 0; i < rv.size(); ++i) rv[i] = av[i] + bv[i] * f;
   }
@@ -97,8 +105,9 @@ void MechanicalOps::v_op(int r, int a, int b, double f) {
 
 void MechanicalOps::v_scale_add(int p, double beta, int r) {
   for (MechanicalState* s : independent_) {
-    auto& pv = s->vec(p);
-    const auto& rv = s->vec(r);
+    auto& pv = s->write(p);
+    const auto& rv = s->read(r);
+    SINEW_ASSERT(rv.size() == pv.size(), "v_scale_add: vectors of one state have the same layout");
     for (std::size_t i = 0; i < pv.size(); ++i) pv[i] = pv[i] * beta + rv[i];
   }
 }
@@ -106,8 +115,8 @@ void MechanicalOps::v_scale_add(int p, double beta, int r) {
 double MechanicalOps::v_dot(int a, int b) const {
   double total = 0;
   for (MechanicalState* s : independent_) {
-    const auto& av = s->vec(a);
-    const auto& bv = s->vec(b);
+    const auto& av = s->read(a);
+    const auto& bv = s->read(b);
     const int w = s->info().deriv_width;
     const std::size_t n = std::min(av.size(), bv.size()) / static_cast<std::size_t>(w);
     for (std::size_t i = 0; i < n; ++i) {
@@ -121,23 +130,23 @@ double MechanicalOps::v_dot(int a, int b) const {
 
 void MechanicalOps::v_integrate(int v, int a, double fa, int x_out, int x_in, double fx) {
   for (MechanicalState* s : independent_) {
-    auto& vv = s->vec(v);
-    const auto& av = s->vec(a);
+    auto& vv = s->write(v);
+    const auto& av = s->read(a);
     const StateType t = s->state_type();
     if (t == StateType::rigid3 || t == StateType::rigid2) {
       for (std::size_t i = 0; i < vv.size(); ++i) vv[i] += av[i] * fa;
       s->add_deriv_to_coord(x_out, x_in, v, fx);
     } else {
       // Fused loop: v_i += a_i·fa; x_i += v_i·fx (the updated v), one DOF at a time.
-      auto& xo = s->vec(x_out);
-      const auto& xi = s->vec(x_in);
+      auto& xo = s->write(x_out);
+      const auto& xi = s->read(x_in);
+      SINEW_ASSERT(av.size() == vv.size() && xo.size() == vv.size() && xi.size() == vv.size(),
+                   "v_integrate: point states have equal coordinate and derivative widths");
       for (std::size_t i = 0; i < vv.size(); ++i) {
         vv[i] += av[i] * fa;
         xo[i] = xi[i] + vv[i] * fx;
       }
     }
-    s->touch(v);
-    s->touch(x_out);
   }
 }
 
@@ -149,7 +158,7 @@ std::size_t MechanicalOps::independent_dofs() const {
 
 bool MechanicalOps::all_finite(int id) const {
   for (MechanicalState* s : independent_)
-    for (double x : s->vec(id))
+    for (double x : s->read(id))
       if (!std::isfinite(x)) return false;
   return true;
 }
@@ -177,9 +186,9 @@ void MechanicalOps::compute_force(int f, bool clear, bool accumulate, int x, int
   p.x = x;
   p.v = v;
   for (MechanicalState* s : states_) {
-    auto& fv = s->vec(vec_for(*s, f, kForce));
+    auto& fv = s->write(vec_for(*s, f, kForce));
     if (clear) std::fill(fv.begin(), fv.end(), 0.0);
-    const auto& ext = s->vec(kExternalForce);
+    const auto& ext = s->read(kExternalForce);
     for (std::size_t i = 0; i < std::min(ext.size(), fv.size()); ++i) fv[i] += ext[i];
   }
   for (ForceField* ff : force_fields_) ff->add_force(resolved(p, ff->single_state()));
@@ -197,7 +206,7 @@ void MechanicalOps::add_mbk_dx(int df, double m, double b, double k, int dx, boo
   p.k = k;
   if (clear)
     for (MechanicalState* s : mapped_) {
-      auto& v = s->vec(vec_for(*s, df, kDforce));
+      auto& v = s->write(vec_for(*s, df, kDforce));
       std::fill(v.begin(), v.end(), 0.0);
     }
   for (ForceField* ff : force_fields_) {
@@ -239,7 +248,7 @@ void MechanicalOps::add_separate_gravity(double dt, int v) {
 
 void MechanicalOps::propagate_dx_and_reset_df(int dx, int df) {
   for (MechanicalState* s : states_) {
-    auto& v = s->vec(vec_for(*s, df, kDforce));
+    auto& v = s->write(vec_for(*s, df, kDforce));
     std::fill(v.begin(), v.end(), 0.0);
   }
   propagate_dx(dx);

@@ -7,6 +7,7 @@
 // filter derivatives.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "core/roles.h"
@@ -18,8 +19,13 @@ class Node;
 class MechanicalOps {
  public:
   explicit MechanicalOps(Node& node);
-  // Re-gathers the scope (after the graph changed).
+  // Re-gathers the scope.
   void rebuild();
+  // Re-gathers the scope when the graph's structure version moved since the
+  // last gathering (objects added or removed, a node deactivated, a component
+  // made invalid). One comparison when nothing changed: call it at the start
+  // of every operation sequence (each solve).
+  void sync();
 
   Node& node() const { return *node_; }
   double context_dt() const;
@@ -74,6 +80,7 @@ class MechanicalOps {
 
  private:
   Node* node_;
+  std::uint64_t built_version_ = 0;
   std::vector<MechanicalState*> states_, independent_, mapped_;
   std::vector<ForceField*> force_fields_;
   std::vector<Mass*> masses_;

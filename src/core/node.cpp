@@ -1,9 +1,34 @@
 #include "core/node.h"
 
+#include <algorithm>
+
 namespace sinew {
 
-Node::Node(std::string n) { name.set(std::move(n)); }
+namespace {
+// `activated` and `sleeping` decide which nodes the scopes gather.
+void on_scope_field_changed(BaseField& f) { static_cast<Node*>(f.owner())->bump_structure_version(); }
+}  // namespace
+
+Node::Node(std::string n) {
+  name.set(std::move(n));
+  activated.set_change_hook(&on_scope_field_changed);
+  sleeping.set_change_hook(&on_scope_field_changed);
+}
 Node::~Node() = default;
+
+StepProfile& Node::profile() {
+  Node* r = root();
+  if (!r->profile_) r->profile_ = std::make_unique<StepProfile>();
+  return *r->profile_;
+}
+
+bool Node::refuse_if_locked(const std::string& what) {
+  if (!graph_locked()) return false;
+  diagnostics().error(where, "cannot " + what + " in " + describe() + " while a step is running (step " +
+                                 std::to_string(root()->step_index) +
+                                 "): the graph may change only between steps or in begin/end event handlers");
+  return true;
+}
 
 Node* Node::root() {
   Node* n = this;
@@ -25,8 +50,16 @@ std::string Node::path() const {
 }
 
 Node* Node::add_child(std::unique_ptr<Node> child) {
+  if (!child || refuse_if_locked("add child node '" + (child ? child->name.value() : "") + "'")) return nullptr;
   child->parent_ = this;
+  // A subtree built on its own had its own root-owned data: messages move to this graph.
+  if (child->diagnostics_) {
+    for (const Message& m : child->diagnostics_->messages()) diagnostics().add(m.severity, m.where, m.who, m.text);
+    child->diagnostics_.reset();
+  }
+  child->profile_.reset();
   children_.push_back(std::move(child));
+  bump_structure_version();
   return children_.back().get();
 }
 
@@ -40,6 +73,8 @@ void warn_replaced(Node& node, T* previous, Component* c, const char* what) {
 }  // namespace
 
 Component* Node::add_object(std::unique_ptr<Component> c, bool at_front) {
+  if (!c || refuse_if_locked("add " + (c ? c->describe() : std::string("a component")))) return nullptr;
+  bump_structure_version();
   Component* raw = c.get();
   raw->set_node(this);
   if (at_front) objects_.insert(objects_.begin(), std::move(c));
@@ -65,6 +100,90 @@ Component* Node::add_object(std::unique_ptr<Component> c, bool at_front) {
   if (auto* s = dynamic_cast<LinearSolver*>(raw)) linear_solvers.push_back(s);
   if (auto* co = dynamic_cast<ContextObject*>(raw)) context_objects.push_back(co);
   return raw;
+}
+
+void Node::unfile(Component* c) {
+  // Single slots that held it become empty (SOFA's SingleLink remove); lists drop it.
+  if (animation_loop == c) animation_loop = nullptr;
+  if (mechanical_state == c) mechanical_state = nullptr;
+  if (mechanical_mapping == c) mechanical_mapping = nullptr;
+  if (mass == c) mass = nullptr;
+  if (mesh_topology == c) mesh_topology = nullptr;
+  auto drop = [c](auto& list) { std::erase_if(list, [c](auto* p) { return static_cast<Component*>(p) == c; }); };
+  drop(force_fields);
+  drop(interaction_force_fields);
+  drop(projective_constraints);
+  drop(solvers);
+  drop(linear_solvers);
+  drop(context_objects);
+}
+
+namespace {
+
+// Everything in a subtree: the nodes and their components.
+void collect_subtree(Node& n, std::vector<const Base*>& out) {
+  out.push_back(&n);
+  for (auto& o : n.objects()) out.push_back(o.get());
+  for (auto& c : n.children()) collect_subtree(*c, out);
+}
+
+// Cuts every link and data link from the rest of the graph into `gone`.
+// A component that loses an object link cannot work any more: it becomes
+// invalid (it was initialised against the removed object). A data link keeps
+// its last value.
+void cut_links_into(Node& root, const std::vector<const Base*>& gone) {
+  auto is_gone = [&](const Base* b) { return std::find(gone.begin(), gone.end(), b) != gone.end(); };
+  auto visit = [&](auto&& self, Node& n) -> void {
+    if (is_gone(&n)) return;
+    std::vector<Base*> owners{&n};
+    for (auto& o : n.objects()) owners.push_back(o.get());
+    for (Base* b : owners) {
+      for (BaseField* f : b->fields())
+        if (f->parent() && is_gone(f->parent()->owner())) {
+          f->update();  // last value from the leaving parent
+          f->set_parent(nullptr);
+        }
+      for (BaseLink* l : b->links())
+        for (const Base* g : gone)
+          if (l->references(g)) {
+            l->forget(g);
+            if (auto* c = dynamic_cast<Component*>(b)) {
+              c->msg_warning("link '" + l->name() + "' pointed to " + g->describe() +
+                             ", which was removed from the graph: this component is disabled");
+              c->set_state(ComponentState::invalid);
+            }
+          }
+    }
+    for (auto& c : n.children()) self(self, *c);
+  };
+  visit(visit, root);
+}
+
+}  // namespace
+
+std::unique_ptr<Component> Node::remove_object(Component* c) {
+  auto it = std::find_if(objects_.begin(), objects_.end(), [c](auto& o) { return o.get() == c; });
+  if (it == objects_.end() || refuse_if_locked("remove " + c->describe())) return nullptr;
+  std::unique_ptr<Component> out = std::move(*it);
+  objects_.erase(it);
+  unfile(c);
+  cut_links_into(*root(), {c});
+  c->set_node(nullptr);
+  bump_structure_version();
+  return out;
+}
+
+std::unique_ptr<Node> Node::remove_child(Node* child) {
+  auto it = std::find_if(children_.begin(), children_.end(), [child](auto& n) { return n.get() == child; });
+  if (it == children_.end() || refuse_if_locked("remove child " + child->describe())) return nullptr;
+  std::unique_ptr<Node> out = std::move(*it);
+  children_.erase(it);
+  std::vector<const Base*> gone;
+  collect_subtree(*out, gone);
+  cut_links_into(*root(), gone);
+  out->parent_ = nullptr;
+  bump_structure_version();
+  return out;
 }
 
 MechanicalState* Node::get_mechanical_state() const {

@@ -13,7 +13,9 @@
 
 #include "core/base.h"
 #include "core/field.h"
+#include "core/profile.h"
 #include "core/roles.h"
+#include "core/step_observer.h"
 
 namespace sinew {
 
@@ -23,10 +25,10 @@ class Node final : public Base {
   ~Node() override;
 
   Field<std::string> name{this, "name", "", "node name", "Infos"};
-  Field<double> dt{this, "dt", 0.01, "time step (s); only the root's value is used", "Context"};
-  Field<Vec3> gravity{this, "gravity", Vec3(0, -9.81, 0), "gravity (m/s²); only the root's value is used",
-                      "Context"};
-  Field<double> time{this, "time", 0.0, "current time (s)", "Context"};
+  Field<double> dt{this, "dt", 0.01, "time step; only the root's value is used", "Context", "time"};
+  Field<Vec3> gravity{this, "gravity", Vec3(0, -9.81, 0), "gravity; only the root's value is used",
+                      "Context", "length/time²"};
+  Field<double> time{this, "time", 0.0, "current time", "Context", "time"};
   Field<bool> animate{this, "animate", false, "start animating when loaded in a viewer", "Context"};
   Field<bool> activated{this, "activated", true, "inactive nodes and their subtree are skipped", "Context"};
   Field<bool> sleeping{this, "sleeping", false, "sleeping nodes are skipped by mechanical operations",
@@ -43,9 +45,20 @@ class Node final : public Base {
   Node* root();
   const std::vector<std::unique_ptr<Node>>& children() const { return children_; }
   const std::vector<std::unique_ptr<Component>>& objects() const { return objects_; }
+  // Structural edits. Each bumps the root's structure version. While the
+  // graph is locked (the mechanical stages of a step) they are refused: an
+  // error is reported and nullptr returned, the graph is left unchanged.
   Node* add_child(std::unique_ptr<Node> child);
   // Inserts a component at the end (or at the front) and files it in its slots.
   Component* add_object(std::unique_ptr<Component> c, bool at_front = false);
+  // Takes a component out of this node: unfiled from its slots (a single slot
+  // that held it becomes empty, as in SOFA), links and data links elsewhere in
+  // the graph that pointed to it are cut (their components are told, and
+  // become invalid when the link was required). Returns the component (nullptr
+  // when it is not an object of this node or the graph is locked).
+  std::unique_ptr<Component> remove_object(Component* c);
+  // Takes a child node (and its subtree) out; links into the subtree are cut as above.
+  std::unique_ptr<Node> remove_child(Node* child);
   // Index counter for default names ("MechanicalObject1", ...), per class within this node.
   int next_default_index(const std::string& class_name) { return ++default_names_[class_name]; }
   // Path of this node from the root ("/", "/child/grandchild").
@@ -109,12 +122,35 @@ class Node final : public Base {
   // Current step number (for messages raised during a step).
   long step_index = -1;
 
+  // ------------------------------------------------------------ per simulation (root-owned)
+  // Stage timings of this simulation's steps.
+  StepProfile& profile();
+  // Bumped by every structural change of the graph: objects or nodes added or
+  // removed, a node (de)activated or put to sleep, a component made invalid.
+  // Scopes gathered from the graph (MechanicalOps, the loop's graph view)
+  // remember the version they were built at and rebuild when it moved.
+  std::uint64_t structure_version() { return root()->structure_version_; }
+  void bump_structure_version() { ++root()->structure_version_; }
+  // Locked while the mechanical stages of a step run (Box2D's world->locked).
+  bool graph_locked() { return root()->graph_locked_; }
+  void set_graph_locked(bool on) { root()->graph_locked_ = on; }
+  // Observers called around every stage of this simulation's steps (not owned).
+  std::vector<StepObserver*>& step_observers() { return root()->step_observers_; }
+  // Set once init() ran on this node's components (init_root, or init_added later).
+  bool initialised = false;
  private:
   Node* parent_ = nullptr;
   std::vector<std::unique_ptr<Node>> children_;
   std::vector<std::unique_ptr<Component>> objects_;
   std::map<std::string, int> default_names_;
   std::unique_ptr<Diagnostics> diagnostics_;  // root only
+  std::unique_ptr<StepProfile> profile_;      // root only
+  std::uint64_t structure_version_ = 1;       // root only
+  bool graph_locked_ = false;                 // root only
+  std::vector<StepObserver*> step_observers_;  // root only
+
+  bool refuse_if_locked(const std::string& what);
+  void unfile(Component* c);
 };
 
 // Depth-first pre-order over active nodes (SOFA's DAG order for trees).

@@ -1,5 +1,6 @@
 #include "core/roles.h"
 
+#include "core/mechanical_ops.h"
 #include "core/node.h"
 
 namespace sinew {
@@ -24,11 +25,20 @@ bool state_type_from_name(std::string_view name, StateType& out) {
 
 bool MechanicalState::independent() const { return !node() || node()->mechanical_mapping == nullptr; }
 
+OdeSolver::OdeSolver() = default;
+OdeSolver::~OdeSolver() = default;
+
+MechanicalOps& OdeSolver::scope() {
+  if (!scope_) scope_ = std::make_unique<MechanicalOps>(*node());
+  scope_->sync();
+  return *scope_;
+}
+
 void ForceField::init() {
   if (!mstate && node()) mstate.set(node()->get_mechanical_state());
   if (!mstate) {
     msg_error("no mechanical state found in this node or its ancestors");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
   }
 }
 
@@ -36,7 +46,7 @@ void ProjectiveConstraint::init() {
   if (!mstate && node()) mstate.set(node()->get_mechanical_state());
   if (!mstate) {
     msg_error("no mechanical state found in this node or its ancestors");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
   }
 }
 

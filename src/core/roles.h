@@ -8,6 +8,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -58,10 +60,14 @@ class MechanicalState : public Component {
   const StateTypeInfo& info() const { return state_type_info(state_type()); }
   virtual std::size_t size() const = 0;
   virtual void resize(std::size_t n) = 0;
-  // Storage of vector `id` (coordinate or derivative layout), allocated and
-  // zero-filled to size() on first use. Standard ids are the state's fields.
-  virtual std::vector<double>& vec(int id) = 0;
-  // Marks a standard vector as changed after a write through vec() (links and engines see it).
+  // Vector `id` (coordinate or derivative layout), allocated and zero-filled
+  // to size() on first use. Standard ids are the state's fields.
+  // read(): the values; the vector's version is left alone, so a version
+  // that moved means a value that was written (viewer, Python, links).
+  virtual const std::vector<double>& read(int id) const = 0;
+  // write(): the values, to be changed: the vector's version moves.
+  virtual std::vector<double>& write(int id) = 0;
+  // Marks a standard vector as changed again (after a write through a pointer kept earlier).
   virtual void touch(int id) = 0;
   // x_out = x_in + h·v, with the Rigid rule (quaternion exponential) for rigid states.
   virtual void add_deriv_to_coord(int x_out, int x_in, int v, double h) = 0;
@@ -90,7 +96,7 @@ struct MechParams {
 class ForceField : public Component {
  public:
   Field<double> rayleigh_stiffness{this, "rayleighStiffness", 0.0,
-                                   "stiffness-proportional Rayleigh damping coefficient (>= 0)", "Rayleigh"};
+                                   "stiffness-proportional Rayleigh damping coefficient (>= 0)", "Rayleigh", "time"};
   Link<MechanicalState> mstate{this, "mstate", "state this force field acts on (default: the node's)"};
 
   // f += f(x, v) on the acted state(s).
@@ -121,7 +127,7 @@ class ForceField : public Component {
 class Mass : public ForceField {
  public:
   Field<double> rayleigh_mass{this, "rayleighMass", 0.0, "mass-proportional Rayleigh damping coefficient (>= 0)",
-                              "Rayleigh"};
+                              "Rayleigh", "1/time"};
   Field<bool> separate_gravity{this, "separateGravity", false, "add gravity to velocity instead of forces",
                                "Physics"};
 
@@ -203,8 +209,20 @@ class Mapping : public Component {
 
 class OdeSolver : public Component {
  public:
+  OdeSolver();
+  ~OdeSolver() override;
   // Advances the subtree of the solver's node by dt, writing positions/velocities to x_result/v_result.
   virtual void solve(double dt, int x_result, int v_result) = 0;
+  // Advice closing the message of the check stage when this solver's states stop being finite.
+  virtual const char* divergence_hint() const { return "reduce dt or check the material parameters"; }
+
+ protected:
+  // The subtree of the solver's node, gathered on first use and again
+  // whenever the graph's structure changed.
+  MechanicalOps& scope();
+
+ private:
+  std::unique_ptr<MechanicalOps> scope_;
 };
 
 class LinearSolver : public Component {
@@ -237,6 +255,12 @@ class MeshTopologyBase : public Component {
   virtual const std::vector<Quad>& quads() const = 0;
   virtual const std::vector<Tetra>& tetrahedra() const = 0;
   virtual const std::vector<Hexa>& hexahedra() const = 0;
+  // Version of one element list: moves whenever that list may have changed
+  // (elements added, removed or renumbered). Components that keep data per
+  // element compare it, never the list's size (a remove-one-add-one change
+  // keeps the size). 0 for topologies whose lists never change.
+  enum class Elements { edges, triangles, quads, tetrahedra, hexahedra };
+  virtual std::uint64_t elements_version(Elements) const { return 0; }
 
   // Neighbourhood queries (SOFA's XAroundY / XInY), built on first use and
   // cached until the element lists change; one entry per vertex/edge/...

@@ -1,5 +1,7 @@
 #include "core/simulation.h"
 
+#include <algorithm>
+
 #include "core/mechanical_ops.h"
 #include "core/registry.h"
 
@@ -7,18 +9,44 @@ namespace sinew {
 
 namespace {
 
-void init_node(Node& node) {
+// Init top-down in node order; components already initialised are left alone.
+// New nodes are collected for the projection that follows.
+void init_node(Node& node, std::vector<Node*>& new_nodes, std::vector<Component*>& fresh) {
   if (!node.activated.value()) return;  // inactive subtrees are not even initialised
+  if (!node.initialised) {
+    node.initialised = true;
+    new_nodes.push_back(&node);
+  }
   node.update_context();
   // Objects added during this loop (e.g. helper objects) are initialised too.
-  for (std::size_t i = 0; i < node.objects().size(); ++i) node.objects()[i]->init();
-  for (std::size_t i = 0; i < node.children().size(); ++i) init_node(*node.children()[i]);
+  for (std::size_t i = 0; i < node.objects().size(); ++i) {
+    Component* c = node.objects()[i].get();
+    if (c->initialised()) continue;
+    c->mark_initialised();
+    c->init();
+    fresh.push_back(c);
+  }
+  for (std::size_t i = 0; i < node.children().size(); ++i) init_node(*node.children()[i], new_nodes, fresh);
 }
 
-void bwd_init_node(Node& node) {
+// bwd_init bottom-up in reverse order, on the components init_node just initialised (sorted).
+void bwd_init_node(Node& node, const std::vector<Component*>& fresh) {
   if (!node.activated.value()) return;
-  for (std::size_t i = node.children().size(); i-- > 0;) bwd_init_node(*node.children()[i]);
-  for (std::size_t i = node.objects().size(); i-- > 0;) node.objects()[i]->bwd_init();
+  for (std::size_t i = node.children().size(); i-- > 0;) bwd_init_node(*node.children()[i], fresh);
+  for (std::size_t i = node.objects().size(); i-- > 0;) {
+    Component* c = node.objects()[i].get();
+    if (std::binary_search(fresh.begin(), fresh.end(), c)) c->bwd_init();
+  }
+}
+
+// Init then bwd_init of everything not initialised yet; returns the new nodes.
+std::vector<Node*> init_fresh(Node& root) {
+  std::vector<Node*> new_nodes;
+  std::vector<Component*> fresh;
+  init_node(root, new_nodes, fresh);
+  std::sort(fresh.begin(), fresh.end());
+  bwd_init_node(root, fresh);
+  return new_nodes;
 }
 
 void store_reset(Node& node) {
@@ -58,14 +86,41 @@ bool init_root(Node& root) {
       root.add_object(std::move(loop), /*at_front=*/true);
     }
   }
-  init_node(root);
-  bwd_init_node(root);
+  init_fresh(root);
   Event done{Event::Kind::simulation_init_done};
   propagate_event(root, done);
   project_and_propagate(root, root.time.value());
   store_reset(root);
   return diag.error_count() == errors_before;
 }
+
+bool init_added(Node& root) {
+  Diagnostics& diag = root.diagnostics();
+  const int errors_before = diag.error_count();
+  const std::vector<Node*> new_nodes = init_fresh(root);
+  // Only new subtrees are projected: re-projecting settled states could move
+  // them by round-off. New nodes below new nodes are covered by their top one.
+  for (Node* n : new_nodes) {
+    bool under_new = false;
+    for (Node* p = n->parent(); p && !under_new; p = p->parent())
+      under_new = std::find(new_nodes.begin(), new_nodes.end(), p) != new_nodes.end();
+    if (under_new) continue;
+    project_and_propagate(*n, root.time.value());
+    store_reset(*n);
+  }
+  return diag.error_count() == errors_before;
+}
+
+void notify_step_observers(Node& root, Stage stage, bool after) {
+  for (StepObserver* o : root.step_observers()) {
+    if (after) o->after_stage(stage, root);
+    else o->before_stage(stage, root);
+  }
+}
+
+void add_step_observer(Node& root, StepObserver* o) { root.step_observers().push_back(o); }
+
+void remove_step_observer(Node& root, StepObserver* o) { std::erase(root.step_observers(), o); }
 
 void animate(Node& root, double dt) {
   if (dt == 0) dt = root.dt.value();

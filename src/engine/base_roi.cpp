@@ -42,7 +42,7 @@ void BaseROI::init() {
       BaseField* rp = mo->find_field("rest_position");
       if (!rp) {
         msg_warning("no 'rest_position' in the local mechanical state: the ROI has no input");
-        state_ = ComponentState::invalid;
+        set_state(ComponentState::invalid);
         return;
       }
       position.set_parent(rp);
@@ -52,14 +52,14 @@ void BaseROI::init() {
       BaseField* rp = up->find_field("rest_position");
       if (!rp) {
         msg_error("no 'rest_position' in mechanical state '" + up->name.value() + "'");
-        state_ = ComponentState::invalid;
+        set_state(ComponentState::invalid);
         return;
       }
       position.set_parent(rp);
     } else {
       msg_error("no positions: set 'position' or put a MechanicalObject or mesh loader before the " + class_name() +
                 " in the scene graph");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
   }
@@ -76,7 +76,7 @@ void BaseROI::init() {
       link(compute_hexahedra, hexahedra, "hexahedra");
     }
   }
-  state_ = ComponentState::valid;
+  set_state(ComponentState::valid);
   roi_init();
   force_ = true;  // the initial selection happens even with doUpdate=false
   set_dirty();
@@ -131,7 +131,7 @@ void BaseROI::select(const std::vector<Elem>& elems, bool strict_mode, Field<std
 }
 
 void BaseROI::do_update() {
-  if (state_ == ComponentState::invalid) return;
+  if (state() == ComponentState::invalid) return;
   if (!do_update_field.get() && !force_ && initialized_) return;
   // Clear every output.
   for (auto* f : {&indices, &edge_indices, &triangle_indices, &quad_indices, &tetrahedron_indices, &hexahedron_indices,

@@ -16,8 +16,8 @@ class TransformEngine final : public Engine {
 
   Field<FlatVec> input_position;
   Field<FlatVec> output_position;
-  Field<Vec3> translation{this, "translation", Vec3::Zero(), "translation vector (x, y, z)", "Transformation"};
-  Field<Vec3> rotation{this, "rotation", Vec3::Zero(), "rotation (Euler angles in degrees)", "Transformation"};
+  Field<Vec3> translation{this, "translation", Vec3::Zero(), "translation vector (x, y, z)", "Transformation", "length"};
+  Field<Vec3> rotation{this, "rotation", Vec3::Zero(), "rotation (Euler angles in degrees)", "Transformation", "degrees"};
   Field<VecN<4>> quaternion{this, "quaternion", VecN<4>(0, 0, 0, 1), "rotation quaternion (qx qy qz qw)",
                             "Transformation"};
   Field<Vec3> scale{this, "scale", Vec3::Ones(), "scale factors", "Transformation"};

@@ -49,26 +49,26 @@ void BeamFEMForceField::init() {
   MechanicalState& s = *mstate;
   if (s.state_type() != StateType::rigid3) {
     msg_error(std::string("beams need a Rigid3d state, not ") + s.info().name);
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (!topology) topology.set(node()->get_mesh_topology_link());
   if (!topology) {
     msg_error("no topology found: the beams are the edges of a topology (MeshTopology, EdgeSetTopologyContainer)");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   const std::vector<Edge>& edges = topology->edges();
   if (edges.empty()) {
     msg_error("the topology has no edges: there is no beam");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   const double r = radius.get(), ri = radius_inner.get();
   if (!(r > 0.0) || !std::isfinite(r) || !(ri >= 0.0) || !(ri < r)) {
     msg_error("bad cross-section: radius = " + std::to_string(r) + ", radiusInner = " + std::to_string(ri) +
               " (need radius > 0 and 0 <= radiusInner < radius)");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
 
@@ -88,8 +88,8 @@ void BeamFEMForceField::init() {
   }
 
   const std::size_t n = s.size();
-  const std::vector<double>& x0 = s.vec(kRestPosition);
-  const std::vector<double>& x = s.vec(kPosition);
+  const std::vector<double>& x0 = s.read(kRestPosition);
+  const std::vector<double>& x = s.read(kPosition);
   beams_.reserve(visit.size());
   for (unsigned ei : visit) {
     const unsigned a = edges[ei][0], b = edges[ei][1];
@@ -97,7 +97,7 @@ void BeamFEMForceField::init() {
       msg_error("edge " + std::to_string(ei) + " (" + std::to_string(a) + ", " + std::to_string(b) +
                 ") refers to a point beyond the state size " + std::to_string(n));
       beams_.clear();
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
     const V3 d = center_diff(x0, a, b);
@@ -106,7 +106,7 @@ void BeamFEMForceField::init() {
       msg_error("edge " + std::to_string(ei) + " (" + std::to_string(a) + ", " + std::to_string(b) +
                 ") has zero rest length");
       beams_.clear();
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
     Beam bm;
@@ -121,9 +121,9 @@ void BeamFEMForceField::init() {
 void BeamFEMForceField::add_force(const MechParams& p) {
   if (beams_.empty()) return;
   MechanicalState& s = *mstate;
-  const std::vector<double>& x = s.vec(p.x);
-  const std::vector<double>& x0 = s.vec(kRestPosition);
-  std::vector<double>& f = s.vec(p.f);
+  const std::vector<double>& x = s.read(p.x);
+  const std::vector<double>& x0 = s.read(kRestPosition);
+  std::vector<double>& f = s.write(p.f);
   double depl[12], force[12];
   for (Beam& bm : beams_) {
     const unsigned a = bm.a, b = bm.b;
@@ -158,8 +158,8 @@ void BeamFEMForceField::add_force(const MechParams& p) {
 void BeamFEMForceField::add_dforce(const MechParams& p, double kfactor) {
   if (beams_.empty()) return;
   MechanicalState& s = *mstate;
-  const std::vector<double>& dx = s.vec(p.dx);
-  std::vector<double>& df = s.vec(p.df);
+  const std::vector<double>& dx = s.read(p.dx);
+  std::vector<double>& df = s.write(p.df);
   double d[12], fl[12];
   for (Beam& bm : beams_) {
     beam::qnormalize(bm.q);

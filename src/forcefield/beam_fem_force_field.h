@@ -17,11 +17,11 @@ namespace sinew {
 
 class BeamFEMForceField final : public ForceField {
  public:
-  Field<double> poisson_ratio{this, "poissonRatio", 0.49, "Poisson's ratio", "Material"};
-  Field<double> young_modulus{this, "youngModulus", 5000.0, "Young's modulus (Pa)", "Material"};
-  Field<double> radius{this, "radius", 0.1, "radius of the (circular) section", "Material"};
+  Field<double> poisson_ratio{this, "poissonRatio", 0.49, "Poisson's ratio", "Material", "dimensionless"};
+  Field<double> young_modulus{this, "youngModulus", 5000.0, "Young's modulus", "Material", "pressure (force/length²)"};
+  Field<double> radius{this, "radius", 0.1, "radius of the (circular) section", "Material", "length"};
   Field<double> radius_inner{this, "radiusInner", 0.0, "inner radius of the section, for hollow beams",
-                             "Material"};
+                             "Material", "length"};
   Field<std::vector<unsigned>> list_segment{
       this, "listSegment", {}, "edges the force field applies to (default: all edges of the topology)", "Material"};
   Field<bool> use_symmetric_assembly{this, "useSymmetricAssembly", false,

@@ -14,7 +14,7 @@ void ConstantForceField::init() {
   if (state() != ComponentState::valid) return;
   if (mstate->state_type() != StateType::vec3) {
     msg_error("only Vec3d states are supported");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (!topology) topology.set(node()->get_mesh_topology_link());
@@ -29,7 +29,7 @@ void ConstantForceField::init() {
     if (idx_[i] >= n_state) {
       msg_error("index " + std::to_string(i) + " (" + std::to_string(idx_[i]) + ") exceeds the state size " +
                 std::to_string(n_state));
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
   auto finite = [](const Vec3& v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); };
@@ -44,7 +44,7 @@ void ConstantForceField::init() {
     } else {
       msg_error("'forces' has " + std::to_string(fs.size()) + " entries but there are " +
                 std::to_string(idx_.size()) + " indices");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
   } else if (force.is_set()) {
@@ -52,7 +52,7 @@ void ConstantForceField::init() {
   } else if (total_force.is_set()) {
     if (idx_.empty()) {
       msg_error("cannot distribute totalForce: there are no indices");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
     const double n = static_cast<double>(idx_.size());
@@ -65,13 +65,13 @@ void ConstantForceField::init() {
   for (std::size_t i = 0; i < applied_.size(); ++i)
     if (!finite(applied_[i])) {
       msg_error("the force of index " + std::to_string(i) + " is not a finite number");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
 }
 
 void ConstantForceField::add_force(const MechParams& p) {
-  std::vector<double>& f = mstate->vec(p.f);
+  std::vector<double>& f = mstate->write(p.f);
   const std::size_t n = f.size() / 3;
   const bool from_end = index_from_end.value();
   for (std::size_t i = 0; i < idx_.size(); ++i) {
@@ -83,7 +83,7 @@ void ConstantForceField::add_force(const MechParams& p) {
 
 std::optional<double> ConstantForceField::potential_energy() const {
   if (state() != ComponentState::valid) return std::nullopt;
-  const std::vector<double>& x = mstate->vec(kPosition);
+  const std::vector<double>& x = mstate->read(kPosition);
   const std::size_t n = x.size() / 3;
   const bool from_end = index_from_end.value();
   double e = 0;

@@ -17,10 +17,10 @@ class ConstantForceField final : public ForceField {
 
   Field<std::vector<unsigned>> indices{this, "indices", {}, "indices of the loaded points", "Load"};
   Field<bool> index_from_end{this, "indexFromEnd", false, "count the indices from the last point of the state", "Load"};
-  Field<std::vector<Vec3>> forces{this, "forces", {}, "force on each loaded point (N)", "Load"};
-  Field<Vec3> force{this, "force", Vec3::Zero(), "force on every loaded point when 'forces' is empty (N)", "Load"};
-  Field<Vec3> total_force{this, "totalForce", Vec3::Zero(), "total force (N), split evenly among the loaded points",
-                          "Load"};
+  Field<std::vector<Vec3>> forces{this, "forces", {}, "force on each loaded point", "Load", "force"};
+  Field<Vec3> force{this, "force", Vec3::Zero(), "force on every loaded point when 'forces' is empty", "Load", "force"};
+  Field<Vec3> total_force{this, "totalForce", Vec3::Zero(), "total force, split evenly among the loaded points",
+                          "Load", "force"};
   Field<double> show_arrow_size{this, "showArrowSize", 0.0, "size of the drawn arrows (viewer)", "Visualization"};
   Field<std::vector<double>> show_color{this, "showColor", {0.2, 0.9, 0.3, 1.0}, "arrow colour (viewer)",
                                         "Visualization"};

@@ -16,16 +16,16 @@ void EdgePressureForceField::init() {
   const Vec3 P = pressure.get();
   if (!(P[0] * P[0] + P[1] * P[1] + P[2] * P[2] > 0)) {
     msg_error("a non-zero 'pressure' is required (the p_intensity/normal mode is not supported)");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
-  if (!select()) state_ = ComponentState::invalid;
+  if (!select()) set_state(ComponentState::invalid);
 }
 
 bool EdgePressureForceField::select() {
   const auto& topo_edges = topology->edges();
-  n_edges_ = topo_edges.size();
-  const std::vector<double>& x0 = mstate->vec(kRestPosition);
+  edges_version_ = topology->elements_version(MeshTopologyBase::Elements::edges);
+  const std::vector<double>& x0 = mstate->read(kRestPosition);
   const std::size_t np = mstate->size();
   std::vector<unsigned> idx;
   if (dmin.get() != dmax.get()) {
@@ -74,12 +74,12 @@ bool EdgePressureForceField::select() {
 
 void EdgePressureForceField::add_force(const MechParams& p) {
   // Topology changes: select again from the (linked) lists.
-  if (topology->edges().size() != n_edges_ && !select()) {
-    state_ = ComponentState::invalid;
+  if (topology->elements_version(MeshTopologyBase::Elements::edges) != edges_version_ && !select()) {
+    set_state(ComponentState::invalid);
     selected_.clear();
     force_.clear();
   }
-  std::vector<double>& f = mstate->vec(p.f);
+  std::vector<double>& f = mstate->write(p.f);
   for (std::size_t i = 0; i < selected_.size(); ++i) {
     const double h[3] = {force_[i][0] / 2, force_[i][1] / 2, force_[i][2] / 2};
     for (unsigned v : selected_[i])

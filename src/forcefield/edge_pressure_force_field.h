@@ -13,12 +13,12 @@ namespace sinew {
 
 class EdgePressureForceField final : public ForceField {
  public:
-  Field<Vec3> pressure{this, "pressure", Vec3::Zero(), "pressure vector (force per unit area)", "Load"};
+  Field<Vec3> pressure{this, "pressure", Vec3::Zero(), "pressure vector (force per unit area)", "Load", "pressure (force/length²)"};
   Field<std::vector<unsigned>> edge_indices{this, "edgeIndices", {}, "indices of the loaded edges", "Load"};
   Field<std::vector<Edge>> edges{this, "edges", {}, "loaded edges, as vertex index pairs", "Load"};
   Field<Vec3> normal{this, "normal", Vec3::Zero(), "normal of the slab selecting the loaded edges", "Load"};
-  Field<double> dmin{this, "dmin", 0.0, "lower bound of the selection slab along 'normal'", "Load"};
-  Field<double> dmax{this, "dmax", 0.0, "upper bound of the selection slab along 'normal'", "Load"};
+  Field<double> dmin{this, "dmin", 0.0, "lower bound of the selection slab along 'normal'", "Load", "length"};
+  Field<double> dmax{this, "dmax", 0.0, "upper bound of the selection slab along 'normal'", "Load", "length"};
   Field<double> arrow_size_coef{this, "arrowSizeCoef", 0.0, "arrow length scale (viewer)", "Visualization"};
   Field<std::vector<double>> p_intensity{this, "p_intensity", {}, "pressure magnitude along each edge normal", "Load"};
   Field<Vec3> binormal{this, "binormal", Vec3::Zero(), "binormal of the 2D plane (edge normals are computed from it)",
@@ -35,7 +35,7 @@ class EdgePressureForceField final : public ForceField {
   bool select();
   std::vector<Edge> selected_;   // vertex pairs of the selected edges
   std::vector<Vec3> force_;      // pressure·L0 per selected edge
-  std::size_t n_edges_ = 0;
+  std::uint64_t edges_version_ = 0;  // of the list the edges were selected from
 };
 
 }  // namespace sinew

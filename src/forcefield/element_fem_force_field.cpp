@@ -27,7 +27,7 @@ void ElementFEMForceFieldBase::init() {
   if (state() != ComponentState::valid) return;
   auto fail = [&](const std::string& m) {
     msg_error(m);
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
   };
   if (!require_vec3_state(*this) || !bind_node_topology(*this, topology, "link one with topology=\"@...\"")) return;
   MechanicalState& s = *mstate;
@@ -37,7 +37,7 @@ void ElementFEMForceFieldBase::init() {
     return fail("invalid compute strategy");
   fem::RotationMethod method;
   if (!rotation_method(method)) {
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
 
@@ -78,7 +78,7 @@ void ElementFEMForceFieldBase::init() {
     nu[i] = i < pr.size() ? pr[i] : pr[0];
   }
 
-  const std::span<const Vec3> X0 = as_vec3(s.vec(kRestPosition));
+  const std::span<const Vec3> X0 = as_vec3(s.read(kRestPosition));
   std::vector<fem::ElementIssue> issues;
   std::vector<double>& flat = element_stiffness.edit();
   flat.clear();
@@ -107,15 +107,15 @@ void ElementFEMForceFieldBase::init() {
       msg_warning(where + is.message);
     }
   }
-  if (fatal) state_ = ComponentState::invalid;
+  if (fatal) set_state(ComponentState::invalid);
 }
 
 void ElementFEMForceFieldBase::add_force(const MechParams& p) {
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
-  const std::span<const Vec3> x = as_vec3(s.vec(p.x));
-  const std::span<const Vec3> X0 = as_vec3(s.vec(kRestPosition));
-  const std::span<Vec3> f = as_vec3(s.vec(p.f));
+  const std::span<const Vec3> x = as_vec3(s.read(p.x));
+  const std::span<const Vec3> X0 = as_vec3(s.read(kRestPosition));
+  const std::span<Vec3> f = as_vec3(s.write(p.f));
   if (kind_ == FemElementKind::hexahedron) hexa_.add_force(x, X0, f);
   else tetra_.add_force(x, X0, f);
 }
@@ -123,8 +123,8 @@ void ElementFEMForceFieldBase::add_force(const MechParams& p) {
 void ElementFEMForceFieldBase::add_dforce(const MechParams& p, double kfactor) {
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
-  const std::span<const Vec3> dx = as_vec3(s.vec(p.dx));
-  const std::span<Vec3> df = as_vec3(s.vec(p.df));
+  const std::span<const Vec3> dx = as_vec3(s.read(p.dx));
+  const std::span<Vec3> df = as_vec3(s.write(p.df));
   if (kind_ == FemElementKind::hexahedron) hexa_.add_dforce(dx, df, kfactor);
   else tetra_.add_dforce(dx, df, kfactor);
 }

@@ -15,9 +15,9 @@ enum class FemElementKind { tetrahedron, hexahedron };
 class ElementFEMForceFieldBase : public ForceField {
  public:
   Field<std::vector<double>> young_modulus{
-      this, "youngModulus", {5000.0}, "Young's modulus (Pa): one value, or one per element", "Material"};
+      this, "youngModulus", {5000.0}, "Young's modulus: one value, or one per element", "Material", "pressure (force/length²)"};
   Field<std::vector<double>> poisson_ratio{
-      this, "poissonRatio", {0.45}, "Poisson's ratio in [0, 0.5): one value, or one per element", "Material"};
+      this, "poissonRatio", {0.45}, "Poisson's ratio in [0, 0.5): one value, or one per element", "Material", "dimensionless"};
   Field<std::string> compute_force_strategy{
       this, "computeForceStrategy", "parallel",
       "execution policy of the force evaluation: \"parallel\" or \"sequenced\" (identical results)", "Multithreading"};

@@ -24,20 +24,20 @@ void FastTriangularBendingSprings::init() {
   if (!require_vec3_state(*this)) return;
   if (!bind_node_topology(*this, topology, "a triangular mesh is required")) return;
   if (topology->triangles().empty()) msg_warning("no triangles found in the topology " + topology->describe());
-  if (!rebuild()) state_ = ComponentState::invalid;
+  if (!rebuild()) set_state(ComponentState::invalid);
 }
 
 void FastTriangularBendingSprings::reinit() {
-  if (state() == ComponentState::valid && !rebuild()) state_ = ComponentState::invalid;
+  if (state() == ComponentState::valid && !rebuild()) set_state(ComponentState::invalid);
 }
 
 bool FastTriangularBendingSprings::rebuild() {
   const auto& tris = topology->triangles();
   TriangleAdjacency adj;
   adj.build(tris, topology->edges());
-  n_triangles_ = tris.size();
-  n_edges_ = topology->edges().size();
-  const std::vector<double>& x0 = mstate->vec(kRestPosition);
+  triangles_version_ = topology->elements_version(MeshTopologyBase::Elements::triangles);
+  edges_version_ = topology->elements_version(MeshTopologyBase::Elements::edges);
+  const std::vector<double>& x0 = mstate->read(kRestPosition);
   const std::size_t np = mstate->size();
   if (!element_points_in_state(*this, tris, "triangle", np)) return false;
   springs_.assign(adj.edges.size(), EdgeSpring{});
@@ -100,9 +100,9 @@ bool FastTriangularBendingSprings::rebuild() {
 
 void FastTriangularBendingSprings::check_topology() {
   // Topology changes: rebuild the springs from the new lists (no per-event handling).
-  if (topology->triangles().size() != n_triangles_ || topology->edges().size() != n_edges_) {
+  if (topology->elements_version(MeshTopologyBase::Elements::triangles) != triangles_version_ || topology->elements_version(MeshTopologyBase::Elements::edges) != edges_version_) {
     if (!rebuild()) {
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       springs_.clear();
     }
   }
@@ -111,8 +111,8 @@ void FastTriangularBendingSprings::check_topology() {
 void FastTriangularBendingSprings::add_force(const MechParams& p) {
   check_topology();
   MechanicalState& s = *mstate;
-  const double* x = s.vec(p.x).data();
-  double* f = s.vec(p.f).data();
+  const double* x = s.read(p.x).data();
+  double* f = s.write(p.f).data();
   energy_ = 0;
   for (const EdgeSpring& es : springs_) {
     if (!es.active) continue;
@@ -133,8 +133,8 @@ void FastTriangularBendingSprings::add_force(const MechParams& p) {
 
 void FastTriangularBendingSprings::add_dforce(const MechParams& p, double kfactor) {
   MechanicalState& s = *mstate;
-  const double* dx = s.vec(p.dx).data();
-  double* df = s.vec(p.df).data();
+  const double* dx = s.read(p.dx).data();
+  double* df = s.write(p.df).data();
   for (const EdgeSpring& es : springs_) {
     if (!es.active) continue;
     double dk[4][3];

@@ -41,7 +41,8 @@ class FastTriangularBendingSprings final : public ForceField {
   bool rebuild();
   void check_topology();
   std::vector<EdgeSpring> springs_;  // one per topology edge (inactive where not between 2 triangles)
-  std::size_t n_triangles_ = 0, n_edges_ = 0;
+  // Versions of the lists the springs/elements were built from (topology changes).
+  std::uint64_t triangles_version_ = 0, edges_version_ = 0;
   double energy_ = 0;
 };
 

@@ -96,13 +96,13 @@ void HexahedralFEMForceField::init() {
   if (!topology) topology.set(node()->get_mesh_topology_link());
   if (!topology) {
     msg_error("no topology found (a hexahedral mesh is required)");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   const auto& hexas = topology->hexahedra();
   if (hexas.empty()) {
     msg_error("Object must have a Topology with hexahedra: " + topology->describe() + " has none");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   fem::HexaMethod m;
@@ -111,19 +111,19 @@ void HexahedralFEMForceField::init() {
   else {
     // SOFA leaves its method undefined here; "small" exists only in HexahedronFEMForceField.
     msg_error("unknown method '" + method.value() + "' (expected large or polar)");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   MechanicalState& s = *mstate;
   if (s.state_type() != StateType::vec3) {
     msg_error("only Vec3d states are supported");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   const std::size_t ne = hexas.size();
   std::vector<double> E, nu;
   hexa_element_materials(*this, young_modulus.get(), poisson_ratio.get(), ne, E, nu);
-  const auto x0 = as_vec3(s.vec(kRestPosition));
+  const auto x0 = as_vec3(s.read(kRestPosition));
   std::vector<std::array<int, 8>> h(ne);
   for (std::size_t i = 0; i < ne; ++i)
     for (int k = 0; k < 8; ++k) h[i][k] = static_cast<int>(hexas[i][k]);
@@ -137,7 +137,7 @@ void HexahedralFEMForceField::init() {
     fatal = fatal || is.fatal;
   }
   if (fatal) {
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   // Stiffness: SOFA's closed form on the unrotated rest nodes replaces the kernel's Gauss K.
@@ -172,7 +172,7 @@ void HexahedralFEMForceField::init() {
   }
   fem_.touch_stiffness();
   if (fatal) {
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (not_box > 0)
@@ -188,13 +188,13 @@ void HexahedralFEMForceField::init() {
 void HexahedralFEMForceField::add_force(const MechParams& p) {
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
-  fem_.add_force(as_vec3(s.vec(p.x)), as_vec3(s.vec(p.f)));
+  fem_.add_force(as_vec3(s.read(p.x)), as_vec3(s.write(p.f)));
 }
 
 void HexahedralFEMForceField::add_dforce(const MechParams& p, double kfactor) {
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
-  fem_.add_dforce(as_vec3(s.vec(p.dx)), as_vec3(s.vec(p.df)), kfactor);
+  fem_.add_dforce(as_vec3(s.read(p.dx)), as_vec3(s.write(p.df)), kfactor);
 }
 
 bool HexahedralFEMForceField::build_stiffness(MatrixSink& sink) {

@@ -37,9 +37,9 @@ void hexahedral_element_stiffness(const std::array<Vec3, 8>& nodes, const HexaMa
 class HexahedralFEMForceField final : public ForceField {
  public:
   Field<std::vector<double>> young_modulus{this, "youngModulus", {5000.0},
-                                           "Young's modulus (Pa), one value or one per element", "Material"};
+                                           "Young's modulus, one value or one per element", "Material", "pressure (force/length²)"};
   Field<std::vector<double>> poisson_ratio{this, "poissonRatio", {0.45},
-                                           "Poisson's ratio in [0, 0.5), one value or one per element", "Material"};
+                                           "Poisson's ratio in [0, 0.5), one value or one per element", "Material", "dimensionless"};
   Field<std::string> method{this, "method", "large", "\"large\" or \"polar\" displacements", "Material"};
   Link<MeshTopologyBase> topology{this, "topology", "topology holding the hexahedra (default: the node's)"};
 

@@ -38,13 +38,13 @@ void HexahedronFEMBase<Role>::init() {
   if (!topology) topology.set(this->node()->get_mesh_topology_link());
   if (!topology) {
     this->msg_error("no topology found (a hexahedral mesh is required)");
-    this->state_ = ComponentState::invalid;
+    this->set_state(ComponentState::invalid);
     return;
   }
   const auto& hexas = topology->hexahedra();
   if (hexas.empty()) {
     this->msg_error("the topology " + topology->describe() + " has no hexahedra");
-    this->state_ = ComponentState::invalid;
+    this->set_state(ComponentState::invalid);
     return;
   }
   fem::HexaMethod m;
@@ -53,7 +53,7 @@ void HexahedronFEMBase<Role>::init() {
   else if (method.value() == "small") m = fem::HexaMethod::small;
   else {
     this->msg_error("unknown method '" + method.value() + "' (expected large, polar or small)");
-    this->state_ = ComponentState::invalid;
+    this->set_state(ComponentState::invalid);
     return;
   }
   const std::size_t ne = hexas.size();
@@ -62,10 +62,10 @@ void HexahedronFEMBase<Role>::init() {
   MechanicalState& s = *this->mstate;
   if (s.state_type() != StateType::vec3) {
     this->msg_error("only Vec3d states are supported");
-    this->state_ = ComponentState::invalid;
+    this->set_state(ComponentState::invalid);
     return;
   }
-  const std::vector<double>& x0 = s.vec(kRestPosition);
+  const std::vector<double>& x0 = s.read(kRestPosition);
   std::vector<std::array<int, 8>> h(ne);
   for (std::size_t i = 0; i < ne; ++i)
     for (int k = 0; k < 8; ++k) h[i][k] = static_cast<int>(hexas[i][k]);
@@ -87,22 +87,22 @@ void HexahedronFEMBase<Role>::init() {
       this->msg_warning(where + is.message);
     }
   }
-  if (fatal) this->state_ = ComponentState::invalid;
+  if (fatal) this->set_state(ComponentState::invalid);
 }
 
 template <class Role>
 void HexahedronFEMBase<Role>::add_force(const MechParams& p) {
   MechanicalState& s = *this->mstate;
-  const std::vector<double>& x = s.vec(p.x);
-  std::vector<double>& f = s.vec(p.f);
+  const std::vector<double>& x = s.read(p.x);
+  std::vector<double>& f = s.write(p.f);
   fem_.add_force(as_vec3(x), as_vec3(f));
 }
 
 template <class Role>
 void HexahedronFEMBase<Role>::add_dforce(const MechParams& p, double kfactor) {
   MechanicalState& s = *this->mstate;
-  const std::vector<double>& dx = s.vec(p.dx);
-  std::vector<double>& df = s.vec(p.df);
+  const std::vector<double>& dx = s.read(p.dx);
+  std::vector<double>& df = s.write(p.df);
   fem_.add_dforce(as_vec3(dx), as_vec3(df), kfactor);
 }
 
@@ -158,14 +158,14 @@ void HexahedronFEMForceFieldAndMass::init() {
 void HexahedronFEMForceFieldAndMass::add_force(const MechParams& p) {
   HexahedronFEMBase<Mass>::add_force(p);
   // SOFA adds gravity here whatever separateGravity says.
-  auto f = as_vec3(mstate->vec(p.f));
+  auto f = as_vec3(mstate->write(p.f));
   const Vec3 g = node()->gravity.value();
   for (std::size_t i = 0; i < particle_mass_.size(); ++i) f[i] += g * particle_mass_[i];
 }
 
 void HexahedronFEMForceFieldAndMass::add_mdx(const MechParams&, int res, int dx, double factor) {
-  auto f = as_vec3(mstate->vec(res));
-  const auto d = as_vec3(mstate->vec(dx));
+  auto f = as_vec3(mstate->write(res));
+  const auto d = as_vec3(mstate->read(dx));
   if (lumped_mass.value()) {
     for (std::size_t i = 0; i < lumped_.size(); ++i)
       for (int c = 0; c < 3; ++c) f[i][c] += lumped_[i][c] * d[i][c] * factor;
@@ -193,7 +193,7 @@ void HexahedronFEMForceFieldAndMass::acc_from_f(const MechParams&, int, int) {
 }
 
 void HexahedronFEMForceFieldAndMass::add_gravity_to_v(int v, double dt) {
-  auto vv = as_vec3(mstate->vec(v));
+  auto vv = as_vec3(mstate->write(v));
   const Vec3 dv = node()->gravity.value() * dt;
   for (auto& x : vv) x += dv;
 }

@@ -24,9 +24,9 @@ template <class Role>
 class HexahedronFEMBase : public Role, public RotationFinder {
  public:
   Field<std::vector<double>> young_modulus{this, "youngModulus", {5000.0},
-                                           "Young's modulus (Pa), one value or one per element", "Material"};
+                                           "Young's modulus, one value or one per element", "Material", "pressure (force/length²)"};
   Field<std::vector<double>> poisson_ratio{this, "poissonRatio", {0.45},
-                                           "Poisson's ratio in [0, 0.5), one value or one per element", "Material"};
+                                           "Poisson's ratio in [0, 0.5), one value or one per element", "Material", "dimensionless"};
   Field<std::string> method{this, "method", "large", "large (corotational), polar or small (linear)", "Material"};
   Field<bool> update_stiffness_matrix{this, "updateStiffnessMatrix", false,
                                       "recompute element stiffness from current positions each step", "Material"};

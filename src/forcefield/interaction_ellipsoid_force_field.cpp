@@ -31,26 +31,26 @@ void InteractionEllipsoidForceField::init() {
   s2_ = object2 ? object2.get() : local;
   if (!s1_ || !s2_) {
     msg_error("object1 and object2 must be mechanical states");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (!mstate) mstate.set(s1_);
   if (s1_->state_type() != StateType::vec3 || s2_->state_type() != StateType::rigid3) {
     msg_error(std::string("object1 must be Vec3d and object2 Rigid3d (got ") + s1_->info().name + ", " +
               s2_->info().name + ")");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (object2_invert.get()) {
     msg_error("object2_invert=\"true\" is not supported");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   const int idx = object2_dof_index.get();
   if (idx < 0 || static_cast<std::size_t>(idx) >= s2_->size()) {
     msg_error("object2_dof_index " + std::to_string(idx) + " is out of range (object2 has " +
               std::to_string(s2_->size()) + " frames)");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   // Missing entries repeat the last one (radius default 1, center 0).
@@ -65,7 +65,7 @@ void InteractionEllipsoidForceField::init() {
     for (int j = 0; j < 3; ++j) {
       if (r[j] == 0) {
         msg_error("ellipsoid " + std::to_string(e) + " has a zero radius");
-        state_ = ComponentState::invalid;
+        set_state(ComponentState::invalid);
         return;
       }
       inv_r2_[e][j] = 1 / (r[j] * r[j]);
@@ -76,10 +76,10 @@ void InteractionEllipsoidForceField::init() {
 void InteractionEllipsoidForceField::add_force(const MechParams& p) {
   MechanicalState& a = *s1_;
   MechanicalState& b = *s2_;
-  const std::vector<double>& x1 = a.vec(vec_for(a, p.x, kPosition));
-  const std::vector<double>& v1 = a.vec(vec_for(a, p.v, kVelocity));
-  std::vector<double>& f1 = a.vec(vec_for(a, p.f, kForce));
-  const std::vector<double>& x2 = b.vec(vec_for(b, p.x, kPosition));
+  const std::vector<double>& x1 = a.read(vec_for(a, p.x, kPosition));
+  const std::vector<double>& v1 = a.read(vec_for(a, p.v, kVelocity));
+  std::vector<double>& f1 = a.write(vec_for(a, p.f, kForce));
+  const std::vector<double>& x2 = b.read(vec_for(b, p.x, kPosition));
   const std::size_t k = static_cast<std::size_t>(object2_dof_index.value());
   const double* frame = &x2[7 * k];
   const double C[3] = {frame[0], frame[1], frame[2]};
@@ -136,7 +136,7 @@ void InteractionEllipsoidForceField::add_force(const MechParams& p) {
     contacts_.push_back(c);
   }
   if (object2_forces.value()) {
-    std::vector<double>& f2v = b.vec(vec_for(b, p.f, kForce));
+    std::vector<double>& f2v = b.write(vec_for(b, p.f, kForce));
     for (int j = 0; j < 3; ++j) f2v[6 * k + j] += f2[j];
   }
 }
@@ -144,13 +144,13 @@ void InteractionEllipsoidForceField::add_force(const MechParams& p) {
 void InteractionEllipsoidForceField::add_dforce(const MechParams& p, double kfactor) {
   MechanicalState& a = *s1_;
   MechanicalState& b = *s2_;
-  const std::vector<double>& dx1 = a.vec(vec_for(a, p.dx, kDx));
-  std::vector<double>& df1 = a.vec(vec_for(a, p.df, kDforce));
+  const std::vector<double>& dx1 = a.read(vec_for(a, p.dx, kDx));
+  std::vector<double>& df1 = a.write(vec_for(a, p.df, kDforce));
   const std::size_t k = static_cast<std::size_t>(object2_dof_index.value());
   const bool two = object2_forces.value();
   double dx2[3] = {0, 0, 0};
   if (two) {
-    const std::vector<double>& d2 = b.vec(vec_for(b, p.dx, kDx));
+    const std::vector<double>& d2 = b.read(vec_for(b, p.dx, kDx));
     for (int j = 0; j < 3; ++j) dx2[j] = d2[6 * k + j];
   }
   double df2[3] = {0, 0, 0};
@@ -166,7 +166,7 @@ void InteractionEllipsoidForceField::add_dforce(const MechParams& p, double kfac
     }
   }
   if (two) {
-    std::vector<double>& d2 = b.vec(vec_for(b, p.df, kDforce));
+    std::vector<double>& d2 = b.write(vec_for(b, p.df, kDforce));
     for (int j = 0; j < 3; ++j) d2[6 * k + j] += df2[j];
   }
 }

@@ -19,8 +19,8 @@ class InteractionEllipsoidForceField final : public ForceField {
   Field<std::vector<Vec3>> vradius{this, "vradius", {}, "ellipsoid radii", "Ellipsoid"};
   Field<double> stiffness{this, "stiffness", 500.0,
                           "penalty stiffness; > 0 pushes points out of the ellipsoids, < 0 keeps them inside",
-                          "Ellipsoid"};
-  Field<double> damping{this, "damping", 5.0, "penalty damping", "Ellipsoid"};
+                          "Ellipsoid", "force/length"};
+  Field<double> damping{this, "damping", 5.0, "penalty damping", "Ellipsoid", "force·time/length"};
   Field<std::vector<double>> color{this, "color", {0.0, 0.5, 1.0, 1.0}, "ellipsoid colour (viewer)",
                                    "Visualization"};
   Field<bool> draw{this, "draw", true, "draw the ellipsoids (viewer)", "Visualization"};

@@ -6,8 +6,8 @@ namespace sinew {
 
 std::optional<double> LinearSmallStrainFEMForceField::potential_energy() const {
   if (state() != ComponentState::valid) return std::nullopt;
-  const std::span<const Vec3> x = as_vec3(mstate->vec(kPosition));
-  const std::span<const Vec3> x0 = as_vec3(mstate->vec(kRestPosition));
+  const std::span<const Vec3> x = as_vec3(mstate->read(kPosition));
+  const std::span<const Vec3> x0 = as_vec3(mstate->read(kRestPosition));
   if (x.size() != x0.size()) return std::nullopt;
   // The blocks are those of ∂f/∂x = −K.
   double e = 0;

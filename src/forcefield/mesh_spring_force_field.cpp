@@ -39,10 +39,10 @@ void MeshSpringForceField::init() {
     if (!topology) topology.set(node()->get_mesh_topology_link());
     if (!topology) {
       msg_error("no topology found (the springs are built from a mesh)");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
-    const std::vector<double>& x0 = s1_->vec(kRestPosition);
+    const std::vector<double>& x0 = s1_->read(kRestPosition);
     const int N = dim_;
     const std::size_t np = s1_->size();
     const VecNi<2> range = local_range.get();
@@ -101,7 +101,7 @@ void MeshSpringForceField::init() {
           for (int j = i + 1; j < 8; ++j) add(e[i], e[j], s, d);
     }
     if (bad) {
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
   }

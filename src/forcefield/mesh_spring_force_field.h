@@ -12,20 +12,20 @@ class MeshSpringForceField final : public SpringForceField {
  public:
   MeshSpringForceField();
 
-  Field<double> lines_stiffness{this, "linesStiffness", 0.0, "stiffness of the edge springs (N/m)", "Spring"};
-  Field<double> lines_damping{this, "linesDamping", 0.0, "damping of the edge springs", "Spring"};
-  Field<double> triangles_stiffness{this, "trianglesStiffness", 0.0, "stiffness of the springs inside triangles (N/m)",
-                                    "Spring"};
-  Field<double> triangles_damping{this, "trianglesDamping", 0.0, "damping of the springs inside triangles", "Spring"};
-  Field<double> quads_stiffness{this, "quadsStiffness", 0.0, "stiffness of the springs inside quads (N/m)", "Spring"};
-  Field<double> quads_damping{this, "quadsDamping", 0.0, "damping of the springs inside quads", "Spring"};
+  Field<double> lines_stiffness{this, "linesStiffness", 0.0, "stiffness of the edge springs", "Spring", "force/length"};
+  Field<double> lines_damping{this, "linesDamping", 0.0, "damping of the edge springs", "Spring", "force·time/length"};
+  Field<double> triangles_stiffness{this, "trianglesStiffness", 0.0, "stiffness of the springs inside triangles",
+                                    "Spring", "force/length"};
+  Field<double> triangles_damping{this, "trianglesDamping", 0.0, "damping of the springs inside triangles", "Spring", "force·time/length"};
+  Field<double> quads_stiffness{this, "quadsStiffness", 0.0, "stiffness of the springs inside quads", "Spring", "force/length"};
+  Field<double> quads_damping{this, "quadsDamping", 0.0, "damping of the springs inside quads", "Spring", "force·time/length"};
   Field<double> tetrahedra_stiffness{this, "tetrahedraStiffness", 0.0,
-                                     "stiffness of the springs inside tetrahedra (N/m)", "Spring"};
+                                     "stiffness of the springs inside tetrahedra", "Spring", "force/length"};
   Field<double> tetrahedra_damping{this, "tetrahedraDamping", 0.0, "damping of the springs inside tetrahedra",
-                                   "Spring"};
-  Field<double> cubes_stiffness{this, "cubesStiffness", 0.0, "stiffness of the springs inside hexahedra (N/m)",
-                                "Spring"};
-  Field<double> cubes_damping{this, "cubesDamping", 0.0, "damping of the springs inside hexahedra", "Spring"};
+                                   "Spring", "force·time/length"};
+  Field<double> cubes_stiffness{this, "cubesStiffness", 0.0, "stiffness of the springs inside hexahedra",
+                                "Spring", "force/length"};
+  Field<double> cubes_damping{this, "cubesDamping", 0.0, "damping of the springs inside hexahedra", "Spring", "force·time/length"};
   Field<bool> no_compression{this, "noCompression", false, "springs resist stretching only", "Spring"};
   Field<double> draw_min_elongation_range{this, "drawMinElongationRange", 8.0, "min elongation range (viewer)",
                                           "Visualization"};

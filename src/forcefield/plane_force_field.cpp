@@ -12,7 +12,7 @@ void PlaneForceField::init() {
   if (state() != ComponentState::valid) return;
   if (mstate->state_type() != StateType::vec3) {
     msg_error("only Vec3d states are supported");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   k_ = stiffness.get();
@@ -39,9 +39,9 @@ void PlaneForceField::init() {
 
 void PlaneForceField::add_force(const MechParams& p) {
   MechanicalState& s = *mstate;
-  const std::vector<double>& x = s.vec(p.x);
-  const std::vector<double>& v = s.vec(p.v);
-  std::vector<double>& f = s.vec(p.f);
+  const std::vector<double>& x = s.read(p.x);
+  const std::vector<double>& v = s.read(p.v);
+  std::vector<double>& f = s.write(p.f);
   contacts_.clear();
   unsigned ibegin = 0, iend = static_cast<unsigned>(x.size() / 3);
   const VecNi<2> r = local_range.value();
@@ -70,7 +70,7 @@ void PlaneForceField::add_force(const MechParams& p) {
 
 std::optional<double> PlaneForceField::potential_energy() const {
   if (state() != ComponentState::valid || max_ > 0) return std::nullopt;
-  const std::vector<double>& x = mstate->vec(kPosition);
+  const std::vector<double>& x = mstate->read(kPosition);
   unsigned ibegin = 0, iend = static_cast<unsigned>(x.size() / 3);
   const VecNi<2> r = local_range.value();
   if (r[0] >= 0) ibegin = static_cast<unsigned>(r[0]);
@@ -86,8 +86,8 @@ std::optional<double> PlaneForceField::potential_energy() const {
 
 void PlaneForceField::add_dforce(const MechParams& p, double kfactor) {
   MechanicalState& s = *mstate;
-  const std::vector<double>& dx = s.vec(p.dx);
-  std::vector<double>& df = s.vec(p.df);
+  const std::vector<double>& dx = s.read(p.dx);
+  std::vector<double>& df = s.write(p.df);
   const double fact = -k_ * kfactor;
   const Vec3 n = normal.value();
   for (unsigned i : contacts_) {

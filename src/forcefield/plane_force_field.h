@@ -14,8 +14,8 @@ class PlaneForceField final : public ForceField {
  public:
   Field<Vec3> normal{this, "normal", Vec3(0, 1, 0), "normal of the plane", "Plane"};
   Field<double> d{this, "d", 0.0, "plane offset d (plane: normal·x = d)", "Plane"};
-  Field<double> stiffness{this, "stiffness", 500.0, "penalty stiffness (N/m)", "Plane"};
-  Field<double> damping{this, "damping", 5.0, "penalty damping", "Plane"};
+  Field<double> stiffness{this, "stiffness", 500.0, "penalty stiffness", "Plane", "force/length"};
+  Field<double> damping{this, "damping", 5.0, "penalty damping", "Plane", "force·time/length"};
   Field<double> max_force{this, "maxForce", 0.0, "force magnitude cap per point (0: no cap)", "Plane"};
   Field<bool> bilateral{this, "bilateral", false, "push points toward the plane from both sides", "Plane"};
   Field<VecNi<2>> local_range{this, "localRange", VecNi<2>(-1, -1),

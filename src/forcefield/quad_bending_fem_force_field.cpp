@@ -90,41 +90,41 @@ void QuadBendingFEMForceField::init() {
   if (state() != ComponentState::valid) return;
   if (mstate->state_type() != StateType::vec3) {
     msg_error("only Vec3d states are supported");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (method.value() != "small")
     msg_warning("method \"" + method.value() + "\" is not implemented (as in SOFA): using small");
   if (young_modulus.get().empty() || poisson_ratio.get().empty()) {
     msg_error("youngModulus and poissonRatio must not be empty");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (!topology) topology.set(node()->get_mesh_topology_link());
   if (!topology) {
     msg_error("no topology found (a quad mesh is required)");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (topology->quads().empty()) msg_warning("no quads found in the topology " + topology->describe());
-  if (!rebuild()) state_ = ComponentState::invalid;
+  if (!rebuild()) set_state(ComponentState::invalid);
 }
 
 void QuadBendingFEMForceField::reinit() {
-  if (state() == ComponentState::valid && !rebuild()) state_ = ComponentState::invalid;
+  if (state() == ComponentState::valid && !rebuild()) set_state(ComponentState::invalid);
 }
 
 void QuadBendingFEMForceField::fail(const std::string& why) {
   msg_error(why);
-  state_ = ComponentState::invalid;
+  set_state(ComponentState::invalid);
   el_.clear();
 }
 
 bool QuadBendingFEMForceField::rebuild() {
   const auto& quads = topology->quads();
-  n_quads_ = quads.size();
+  quads_version_ = topology->elements_version(MeshTopologyBase::Elements::quads);
   const std::size_t np = mstate->size();
-  const double* x0 = mstate->vec(kRestPosition).data();
+  const double* x0 = mstate->read(kRestPosition).data();
   const auto& ey = young_modulus.get();
   const auto& pr = poisson_ratio.get();
   const double t = thickness.get();
@@ -165,7 +165,7 @@ bool QuadBendingFEMForceField::rebuild() {
     e.cs = kappa * y * t / (2 + 2 * p);
   }
   // A stiffness is ready before the first add_force (matrix-only callers).
-  return update_stiffness(mstate->vec(kPosition).data());
+  return update_stiffness(mstate->read(kPosition).data());
 }
 
 bool QuadBendingFEMForceField::update_stiffness(const double* x) {
@@ -185,17 +185,17 @@ bool QuadBendingFEMForceField::update_stiffness(const double* x) {
 }
 
 void QuadBendingFEMForceField::add_force(const MechParams& p) {
-  if (state_ != ComponentState::valid) return;
-  if (topology->quads().size() != n_quads_ && !rebuild()) {
-    state_ = ComponentState::invalid;
+  if (state() != ComponentState::valid) return;
+  if (topology->elements_version(MeshTopologyBase::Elements::quads) != quads_version_ && !rebuild()) {
+    set_state(ComponentState::invalid);
     el_.clear();
     return;
   }
   MechanicalState& s = *mstate;
   // SOFA sizes K from the state's current positions, and the displacement from x.
-  if (!update_stiffness(s.vec(kPosition).data())) return;
-  const double* x = s.vec(p.x).data();
-  double* f = s.vec(p.f).data();
+  if (!update_stiffness(s.read(kPosition).data())) return;
+  const double* x = s.read(p.x).data();
+  double* f = s.write(p.f).data();
   for (const Element& e : el_) {
     const double* p0 = x + 3 * e.v[0];
     const double* p2 = x + 3 * e.v[2];
@@ -212,10 +212,10 @@ void QuadBendingFEMForceField::add_force(const MechParams& p) {
 }
 
 void QuadBendingFEMForceField::add_dforce(const MechParams& p, double kfactor) {
-  if (state_ != ComponentState::valid) return;
+  if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
-  const double* dx = s.vec(p.dx).data();
-  double* df = s.vec(p.df).data();
+  const double* dx = s.read(p.dx).data();
+  double* df = s.write(p.df).data();
   for (const Element& e : el_) {
     double D[12], F[12];
     for (int k = 0; k < 4; ++k)
@@ -227,7 +227,7 @@ void QuadBendingFEMForceField::add_dforce(const MechParams& p, double kfactor) {
 }
 
 bool QuadBendingFEMForceField::build_stiffness(MatrixSink& K) {
-  if (state_ != ComponentState::valid) return true;
+  if (state() != ComponentState::valid) return true;
   const MechanicalState* s = mstate.get();
   for (const Element& e : el_)
     for (int i = 0; i < 4; ++i)

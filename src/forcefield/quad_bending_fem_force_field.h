@@ -29,10 +29,10 @@ class QuadBendingFEMForceField final : public ForceField {
   Field<std::string> method{this, "method", "small", "\"small\" displacements (the only method SOFA implements)",
                             "Material"};
   Field<std::vector<double>> poisson_ratio{
-      this, "poissonRatio", {0.45}, "Poisson's ratio: one value, or one per element", "Material"};
+      this, "poissonRatio", {0.45}, "Poisson's ratio: one value, or one per element", "Material", "dimensionless"};
   Field<std::vector<double>> young_modulus{
-      this, "youngModulus", {1000.0}, "Young's modulus (Pa): one value, or one per element", "Material"};
-  Field<double> thickness{this, "thickness", 1.0, "thickness of the plate elements", "Material"};
+      this, "youngModulus", {1000.0}, "Young's modulus: one value, or one per element", "Material", "pressure (force/length²)"};
+  Field<double> thickness{this, "thickness", 1.0, "thickness of the plate elements", "Material", "length"};
   Link<MeshTopologyBase> topology{this, "topology", "topology holding the quads (default: the node's)"};
 
   struct Element {
@@ -57,7 +57,7 @@ class QuadBendingFEMForceField final : public ForceField {
   bool update_stiffness(const double* x);  // K of every element from positions x; false on a degenerate quad
   void fail(const std::string& why);
   std::vector<Element> el_;
-  std::size_t n_quads_ = 0;
+  std::uint64_t quads_version_ = 0;  // of the list the elements were built from
 };
 
 }  // namespace sinew

@@ -17,13 +17,13 @@ void QuadBendingSprings::init() {
   if (!topology) topology.set(node()->get_mesh_topology_link());
   if (!topology) {
     msg_error("no topology found (the springs are built from quads)");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   using Pair = std::pair<unsigned, unsigned>;
   std::map<Pair, Pair> edge_map;
   std::set<Pair> spring_set;
-  const std::vector<double>& x = s1_->vec(kPosition);
+  const std::vector<double>& x = s1_->read(kPosition);
   const std::size_t np = s1_->size();
   const int N = dim_;
   const double ks = stiffness.get().empty() ? 100.0 : stiffness.get()[0];
@@ -69,7 +69,7 @@ void QuadBendingSprings::init() {
     register_edge(Pair(f[3], f[0]), Pair(f[2], f[1]));
   }
   if (bad) {
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   SpringForceField::init();

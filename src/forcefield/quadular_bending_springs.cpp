@@ -19,16 +19,16 @@ void QuadularBendingSprings::init() {
   kd_ = damping.get();
   if (!bind_node_topology(*this, topology, "a quad mesh is required")) return;
   if (topology->quads().empty()) msg_warning("no quads found in the topology " + topology->describe());
-  if (!rebuild()) state_ = ComponentState::invalid;
+  if (!rebuild()) set_state(ComponentState::invalid);
 }
 
 void QuadularBendingSprings::reinit() {
-  if (state() == ComponentState::valid && !rebuild()) state_ = ComponentState::invalid;
+  if (state() == ComponentState::valid && !rebuild()) set_state(ComponentState::invalid);
 }
 
 bool QuadularBendingSprings::rebuild() {
   const auto& quads = topology->quads();
-  n_quads_ = quads.size();
+  quads_version_ = topology->elements_version(MeshTopologyBase::Elements::quads);
   const std::size_t np = mstate->size();
   if (!element_points_in_state(*this, quads, "quad", np)) return false;
   // Edges: the topology's list, else derived from the quads (first occurrence).
@@ -50,7 +50,7 @@ bool QuadularBendingSprings::rebuild() {
       eiq[i][j] = static_cast<int>(it->second);
       around[it->second].push_back(i);
     }
-  const std::vector<double>& x0 = mstate->vec(kRestPosition);
+  const std::vector<double>& x0 = mstate->read(kRestPosition);
   std::vector<std::array<Spring, 2>> per_edge(edges.size());
   std::vector<char> init(edges.size(), 0), active(edges.size(), 0);
   for (unsigned q2 = 0; q2 < quads.size(); ++q2)
@@ -88,14 +88,14 @@ bool QuadularBendingSprings::rebuild() {
 }
 
 void QuadularBendingSprings::add_force(const MechParams& p) {
-  if (topology->quads().size() != n_quads_ && !rebuild()) {
-    state_ = ComponentState::invalid;
+  if (topology->elements_version(MeshTopologyBase::Elements::quads) != quads_version_ && !rebuild()) {
+    set_state(ComponentState::invalid);
     springs_.clear();
   }
   MechanicalState& s = *mstate;
-  const double* x = s.vec(p.x).data();
-  const double* v = s.vec(p.v).data();
-  double* f = s.vec(p.f).data();
+  const double* x = s.read(p.x).data();
+  const double* v = s.read(p.v).data();
+  double* f = s.write(p.f).data();
   for (Spring& sp : springs_) {
     sp.dfdx.fill(0.0);
     const unsigned a = sp.e0, b = sp.e1;
@@ -126,8 +126,8 @@ void QuadularBendingSprings::add_force(const MechParams& p) {
 
 void QuadularBendingSprings::add_dforce(const MechParams& p, double kfactor) {
   MechanicalState& s = *mstate;
-  const double* dx = s.vec(p.dx).data();
-  double* df = s.vec(p.df).data();
+  const double* dx = s.read(p.dx).data();
+  double* df = s.write(p.df).data();
   for (const Spring& sp : springs_) {
     const unsigned a = sp.e0, b = sp.e1;
     double d[3];

@@ -14,8 +14,8 @@ namespace sinew {
 
 class QuadularBendingSprings final : public ForceField {
  public:
-  Field<double> stiffness{this, "stiffness", 100000.0, "stiffness shared by all springs (N/m)", "Spring"};
-  Field<double> damping{this, "damping", 1.0, "damping shared by all springs", "Spring"};
+  Field<double> stiffness{this, "stiffness", 100000.0, "stiffness shared by all springs", "Spring", "force/length"};
+  Field<double> damping{this, "damping", 1.0, "damping shared by all springs", "Spring", "force·time/length"};
   Link<MeshTopologyBase> topology{this, "topology", "topology holding the quads (default: the node's)"};
 
   struct Spring {
@@ -35,7 +35,7 @@ class QuadularBendingSprings final : public ForceField {
  private:
   bool rebuild();
   std::vector<Spring> springs_;  // two per active edge, in edge order
-  std::size_t n_quads_ = 0;
+  std::uint64_t quads_version_ = 0;  // of the list the elements were built from
   double ks_ = 100000.0, kd_ = 1.0;
 };
 

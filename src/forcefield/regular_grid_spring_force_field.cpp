@@ -31,7 +31,7 @@ void RegularGridSpringForceField::init() {
       msg_warning("the first topology of the state's node is not a RegularGridTopology: only explicit springs are used");
     } else if (dim_ != 3) {
       msg_error("grid springs need a Vec3d state");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     } else {
       grid->edges();  // generates the grid if it was not yet

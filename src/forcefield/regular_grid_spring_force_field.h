@@ -11,14 +11,14 @@ namespace sinew {
 
 class RegularGridSpringForceField final : public SpringForceField {
  public:
-  Field<double> lines_stiffness{this, "linesStiffness", 100.0, "stiffness of the grid-edge springs (N/m)", "Spring"};
-  Field<double> lines_damping{this, "linesDamping", 5.0, "damping of the grid-edge springs", "Spring"};
-  Field<double> quads_stiffness{this, "quadsStiffness", 100.0, "stiffness of the quad-diagonal springs (N/m)",
-                                "Spring"};
-  Field<double> quads_damping{this, "quadsDamping", 5.0, "damping of the quad-diagonal springs", "Spring"};
-  Field<double> cubes_stiffness{this, "cubesStiffness", 100.0, "stiffness of the cube-diagonal springs (N/m)",
-                                "Spring"};
-  Field<double> cubes_damping{this, "cubesDamping", 5.0, "damping of the cube-diagonal springs", "Spring"};
+  Field<double> lines_stiffness{this, "linesStiffness", 100.0, "stiffness of the grid-edge springs", "Spring", "force/length"};
+  Field<double> lines_damping{this, "linesDamping", 5.0, "damping of the grid-edge springs", "Spring", "force·time/length"};
+  Field<double> quads_stiffness{this, "quadsStiffness", 100.0, "stiffness of the quad-diagonal springs",
+                                "Spring", "force/length"};
+  Field<double> quads_damping{this, "quadsDamping", 5.0, "damping of the quad-diagonal springs", "Spring", "force·time/length"};
+  Field<double> cubes_stiffness{this, "cubesStiffness", 100.0, "stiffness of the cube-diagonal springs",
+                                "Spring", "force/length"};
+  Field<double> cubes_damping{this, "cubesDamping", 5.0, "damping of the cube-diagonal springs", "Spring", "force·time/length"};
 
   void parse(AttributeMap& attrs, Diagnostics& diag) override;
   void init() override;

@@ -20,12 +20,12 @@ void RestShapeSpringsForceField::init() {
   else if (t == StateType::vec3) dim_ = 3;
   else {
     msg_error(std::string("states of type ") + mstate->info().name + " are not supported (Vec1d, Vec2d, Vec3d only)");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (external_rest_shape && external_rest_shape->state_type() != t) {
     msg_error("external_rest_shape has another type than the state");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   k_ = stiffness.get();
@@ -34,12 +34,12 @@ void RestShapeSpringsForceField::init() {
   active_.assign(dim_, 1);
   for (int c = 0; c < dim_ && c < static_cast<int>(ad.size()); ++c) active_[c] = ad[c] != 0;
   if (!topology) topology.set(node()->get_mesh_topology_link());
-  if (!compute_indices()) state_ = ComponentState::invalid;
+  if (!compute_indices()) set_state(ComponentState::invalid);
 }
 
 const std::vector<double>* RestShapeSpringsForceField::rest() const {
-  if (external_rest_shape) return &external_rest_shape->vec(kPosition);
-  return &mstate->vec(kRestPosition);
+  if (external_rest_shape) return &external_rest_shape->read(kPosition);
+  return &mstate->read(kRestPosition);
 }
 
 bool RestShapeSpringsForceField::compute_indices() {
@@ -83,12 +83,12 @@ bool RestShapeSpringsForceField::compute_indices() {
 
 void RestShapeSpringsForceField::add_force(const MechParams& p) {
   if (recompute_indices.value() && mstate->size() != state_size_ && !compute_indices()) {
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
-  const std::vector<double>& x = mstate->vec(p.x);
+  const std::vector<double>& x = mstate->read(p.x);
   const std::vector<double>& x0 = *rest();
-  std::vector<double>& f = mstate->vec(p.f);
+  std::vector<double>& f = mstate->write(p.f);
   const int N = dim_;
   const bool use_ext = external_rest_shape.get() != nullptr;
   for (std::size_t i = 0; i < idx_.size(); ++i) {
@@ -104,7 +104,7 @@ void RestShapeSpringsForceField::add_force(const MechParams& p) {
 
 std::optional<double> RestShapeSpringsForceField::potential_energy() const {
   if (state() != ComponentState::valid) return std::nullopt;
-  const std::vector<double>& x = mstate->vec(kPosition);
+  const std::vector<double>& x = mstate->read(kPosition);
   const std::vector<double>& x0 = *rest();
   const int N = dim_;
   const bool use_ext = external_rest_shape.get() != nullptr;
@@ -122,8 +122,8 @@ std::optional<double> RestShapeSpringsForceField::potential_energy() const {
 }
 
 void RestShapeSpringsForceField::add_dforce(const MechParams& p, double kfactor) {
-  const std::vector<double>& dx = mstate->vec(p.dx);
-  std::vector<double>& df = mstate->vec(p.df);
+  const std::vector<double>& dx = mstate->read(p.dx);
+  std::vector<double>& df = mstate->write(p.df);
   const int N = dim_;
   for (std::size_t i = 0; i < idx_.size(); ++i) {
     const unsigned a = idx_[i];

@@ -14,7 +14,7 @@ class RestShapeSpringsForceField final : public ForceField {
  public:
   Field<std::vector<unsigned>> points{this, "points", {}, "indices of the sprung points (default: all)", "Spring"};
   Field<std::vector<double>> stiffness{this, "stiffness", {},
-                                       "stiffness per point (or one for all; default 100)", "Spring"};
+                                       "stiffness per point (or one for all; default 100)", "Spring", "force/length"};
   Field<std::vector<double>> angular_stiffness{this, "angularStiffness", {},
                                                "angular stiffness (rigid states only)", "Spring"};
   Field<std::vector<Vec3>> pivot_points{this, "pivot_points", {}, "global pivot points (rigid states only)",

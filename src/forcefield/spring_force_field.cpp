@@ -25,14 +25,14 @@ bool SpringForceField::bind_states() {
   s2_ = object2 ? object2.get() : local;
   if (!s1_ || !s2_) {
     msg_error("no mechanical state found (object1/object2 or the node's state)");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return false;
   }
   if (!mstate) mstate.set(s1_);
   const StateType t1 = s1_->state_type(), t2 = s2_->state_type();
   if (t1 != t2) {
     msg_error(std::string("object1 is ") + s1_->info().name + " but object2 is " + s2_->info().name);
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return false;
   }
   if (t1 == StateType::vec1) dim_ = 1;
@@ -40,7 +40,7 @@ bool SpringForceField::bind_states() {
   else if (t1 == StateType::vec3) dim_ = 3;
   else {
     msg_error(std::string("states of type ") + s1_->info().name + " are not supported (Vec1d, Vec2d, Vec3d only)");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return false;
   }
   return true;
@@ -50,7 +50,7 @@ void SpringForceField::init() {
   if (!bind_states()) return;
   if (!file_springs.value().empty()) {
     msg_error("spring files (filename=" + file_springs.value() + ") are not supported");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (!generated_) {
@@ -61,13 +61,13 @@ void SpringForceField::init() {
       if (v.size() % 5 != 0) {
         msg_error("'spring' must hold 5 numbers per spring (index1 index2 stiffness damping restLength); got " +
                   std::to_string(v.size()) + " numbers");
-        state_ = ComponentState::invalid;
+        set_state(ComponentState::invalid);
         return;
       }
       for (std::size_t i = 0; i + 4 < v.size(); i += 5) {
         if (v[i] < 0 || v[i + 1] < 0 || v[i] != std::floor(v[i]) || v[i + 1] != std::floor(v[i + 1])) {
           msg_error("spring " + std::to_string(i / 5) + ": the indices must be non-negative integers");
-          state_ = ComponentState::invalid;
+          set_state(ComponentState::invalid);
           return;
         }
         springs::LinearSpring s;
@@ -109,7 +109,7 @@ void SpringForceField::init() {
       msg_error("spring " + std::to_string(i) + " (" + std::to_string(s.m1) + ", " + std::to_string(s.m2) +
                 ") refers to a point out of range (object1 has " + std::to_string(n1) + " points, object2 " +
                 std::to_string(n2) + ")");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
   }
@@ -123,7 +123,7 @@ void SpringForceField::init() {
     if (s.m1 >= n1 || s.m2 >= n2) {
       msg_error("a generated spring refers to a point out of range (" + std::to_string(s.m1) + ", " +
                 std::to_string(s.m2) + ")");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
   dfdx_.assign(springs_.size() + grid_springs_.size(), springs::Block{});
@@ -143,7 +143,7 @@ bool SpringForceField::sizes_ok() {
       msg_error("spring " + std::to_string(i) + " (" + std::to_string(s.m1) + ", " + std::to_string(s.m2) +
                 ") refers to a point removed from the state at step " + std::to_string(node()->root()->step_index) +
                 ": the force field stops");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       springs_.clear();
       grid_springs_.clear();
       return false;
@@ -156,12 +156,12 @@ template <int N>
 void SpringForceField::add_force_n(const MechParams& p) {
   MechanicalState& a = *s1_;
   MechanicalState& b = *s2_;
-  const double* x1 = a.vec(vec_for(a, p.x, kPosition)).data();
-  const double* v1 = a.vec(vec_for(a, p.v, kVelocity)).data();
-  double* f1 = a.vec(vec_for(a, p.f, kForce)).data();
-  const double* x2 = b.vec(vec_for(b, p.x, kPosition)).data();
-  const double* v2 = b.vec(vec_for(b, p.v, kVelocity)).data();
-  double* f2 = b.vec(vec_for(b, p.f, kForce)).data();
+  const double* x1 = a.read(vec_for(a, p.x, kPosition)).data();
+  const double* v1 = a.read(vec_for(a, p.v, kVelocity)).data();
+  double* f1 = a.write(vec_for(a, p.f, kForce)).data();
+  const double* x2 = b.read(vec_for(b, p.x, kPosition)).data();
+  const double* v2 = b.read(vec_for(b, p.v, kVelocity)).data();
+  double* f2 = b.write(vec_for(b, p.f, kForce)).data();
   energy_ = 0;
   std::size_t k = 0;
   for (const auto& s : springs_) springs::add_spring_force<N>(s, x1, v1, f1, x2, v2, f2, dfdx_[k++], energy_);
@@ -172,10 +172,10 @@ template <int N>
 void SpringForceField::add_dforce_n(const MechParams& p, double kfactor) {
   MechanicalState& a = *s1_;
   MechanicalState& b = *s2_;
-  const double* dx1 = a.vec(vec_for(a, p.dx, kDx)).data();
-  double* df1 = a.vec(vec_for(a, p.df, kDforce)).data();
-  const double* dx2 = b.vec(vec_for(b, p.dx, kDx)).data();
-  double* df2 = b.vec(vec_for(b, p.df, kDforce)).data();
+  const double* dx1 = a.read(vec_for(a, p.dx, kDx)).data();
+  double* df1 = a.write(vec_for(a, p.df, kDforce)).data();
+  const double* dx2 = b.read(vec_for(b, p.dx, kDx)).data();
+  double* df2 = b.write(vec_for(b, p.df, kDforce)).data();
   std::size_t k = 0;
   for (const auto& s : springs_) springs::add_spring_dforce<N>(s, dfdx_[k++], dx1, df1, dx2, df2, kfactor);
   for (const auto& s : grid_springs_) springs::add_spring_dforce<N>(s, dfdx_[k++], dx1, df1, dx2, df2, kfactor);

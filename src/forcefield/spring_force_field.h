@@ -21,8 +21,8 @@ class SpringForceField : public ForceField {
 
   Link<MechanicalState> object1{this, "object1", "first state (default: the node's)"};
   Link<MechanicalState> object2{this, "object2", "second state (default: the node's)"};
-  Field<std::vector<double>> stiffness{this, "stiffness", {100.0}, "stiffness shared by all springs (N/m)", "Spring"};
-  Field<std::vector<double>> damping{this, "damping", {5.0}, "damping shared by all springs", "Spring"};
+  Field<std::vector<double>> stiffness{this, "stiffness", {100.0}, "stiffness shared by all springs", "Spring", "force/length"};
+  Field<std::vector<double>> damping{this, "damping", {5.0}, "damping shared by all springs", "Spring", "force·time/length"};
   Field<std::vector<double>> spring{this, "spring", {},
                                     "springs, 5 numbers each: index1 index2 stiffness damping restLength", "Spring"};
   Field<std::vector<unsigned>> springs_indices1{this, "springsIndices1", {}, "first extremity of each spring",

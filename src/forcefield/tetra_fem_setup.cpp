@@ -78,7 +78,7 @@ bool setup_tetra_fem(ForceField& c, const TetraFEMSetup& in, fem::TetraFEM& fem)
     nu[i] = v;
   }
 
-  const std::vector<double>& x0 = s->vec(kRestPosition);
+  const std::vector<double>& x0 = s->read(kRestPosition);
   const auto issues = fem.init(as_vec3(x0), tets, E, nu, in.method);
   bool fatal = false;
   for (const auto& is : issues) {
@@ -95,14 +95,14 @@ bool setup_tetra_fem(ForceField& c, const TetraFEMSetup& in, fem::TetraFEM& fem)
 }
 
 void add_tetra_fem_force(fem::TetraFEM& fem, MechanicalState& s, const MechParams& p) {
-  const std::vector<double>& x = s.vec(p.x);
-  std::vector<double>& f = s.vec(p.f);
+  const std::vector<double>& x = s.read(p.x);
+  std::vector<double>& f = s.write(p.f);
   fem.add_force(as_vec3(x), as_vec3(f));
 }
 
 void add_tetra_fem_dforce(const fem::TetraFEM& fem, MechanicalState& s, const MechParams& p, double kfactor) {
-  const std::vector<double>& dx = s.vec(p.dx);
-  std::vector<double>& df = s.vec(p.df);
+  const std::vector<double>& dx = s.read(p.dx);
+  std::vector<double>& df = s.write(p.df);
   fem.add_dforce(as_vec3(dx), as_vec3(df), kfactor);
 }
 

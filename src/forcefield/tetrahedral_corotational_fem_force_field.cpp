@@ -20,7 +20,7 @@ void TetrahedralCorotationalFEMForceField::init() {
   fem_.symmetric_update = true;
   in.von_mises = compute_von_mises_stress.get();
   if (!setup_tetra_fem(*this, in, fem_)) {
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (!fem_.forces_supported())
@@ -33,7 +33,7 @@ void TetrahedralCorotationalFEMForceField::add_force(const MechParams& p) {
   add_tetra_fem_force(fem_, s, p);
   // SOFA computes it after each addForce, from the state's current positions.
   if (compute_von_mises_stress.value() && state() == ComponentState::valid)
-    fem_.von_mises(as_vec3(s.vec(kPosition)), 3, von_mises_per_element.edit(), von_mises_per_node.edit());
+    fem_.von_mises(as_vec3(s.read(kPosition)), 3, von_mises_per_element.edit(), von_mises_per_node.edit());
 }
 
 void TetrahedralCorotationalFEMForceField::add_dforce(const MechParams& p, double kfactor) {

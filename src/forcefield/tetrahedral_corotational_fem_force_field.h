@@ -11,9 +11,9 @@ namespace sinew {
 class TetrahedralCorotationalFEMForceField final : public ForceField {
  public:
   Field<std::vector<double>> young_modulus{
-      this, "youngModulus", {5000.0}, "Young's modulus (Pa): one value, or one per element", "Material"};
+      this, "youngModulus", {5000.0}, "Young's modulus: one value, or one per element", "Material", "pressure (force/length²)"};
   Field<std::vector<double>> poisson_ratio{
-      this, "poissonRatio", {0.45}, "Poisson's ratio in [0, 0.5): one value, or one per element", "Material"};
+      this, "poissonRatio", {0.45}, "Poisson's ratio in [0, 0.5): one value, or one per element", "Material", "dimensionless"};
   Field<std::string> method{this, "method", "large", "\"small\", \"large\" (by QR) or \"polar\" displacements",
                             "Material"};
   Field<std::vector<double>> local_stiffness_factor{

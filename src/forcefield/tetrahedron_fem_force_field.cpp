@@ -34,7 +34,7 @@ void TetrahedronFEMForceField::init() {
   fem_.plasticity.yield_threshold = plastic_yield_threshold.get();
   fem_.plasticity.creep = plastic_creep.get();
   if (!setup_tetra_fem(*this, in, fem_)) {
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (!fem_.forces_supported())
@@ -48,7 +48,7 @@ void TetrahedronFEMForceField::init() {
 void TetrahedronFEMForceField::update_von_mises() {
   if (von_mises_mode_ == 0 || state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
-  fem_.von_mises(as_vec3(s.vec(kPosition)), von_mises_mode_, von_mises_per_element.edit(),
+  fem_.von_mises(as_vec3(s.read(kPosition)), von_mises_mode_, von_mises_per_element.edit(),
                  von_mises_per_node.edit());
 }
 
@@ -74,7 +74,7 @@ bool TetrahedronFEMForceField::build_stiffness(MatrixSink& K) {
 std::optional<double> TetrahedronFEMForceField::potential_energy() const {
   if (state() != ComponentState::valid) return std::nullopt;
   if (fem_.method != fem::TetraMethod::small) return std::nullopt;
-  const std::span<const Vec3> x = as_vec3(mstate->vec(kPosition));
+  const std::span<const Vec3> x = as_vec3(mstate->read(kPosition));
   if (x.size() < fem_.X0.size()) return std::nullopt;
   // The blocks are those of ∂f/∂x = −K.
   double e = 0;

@@ -14,13 +14,13 @@ void TetrahedronHyperelasticityFEMForceField::init() {
   MeshTopologyBase* topo = topology.get();
   if (!topo) {
     msg_error("no topology found (a tetrahedral mesh is required)");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   MechanicalState* s = mstate.get();
   if (s->state_type() != StateType::vec3) {
     msg_error("only Vec3d states are supported");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
 
@@ -31,7 +31,7 @@ void TetrahedronHyperelasticityFEMForceField::init() {
     for (const auto& n : hyper::material_names())
       if (n.supported) known += (known.empty() ? "" : ", ") + std::string(n.name);
     msg_error("materialName '" + name + "' is " + (m ? "not supported" : "unknown") + " (supported: " + known + ")");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   const std::vector<double>& params = parameter_set.get();
@@ -39,37 +39,37 @@ void TetrahedronHyperelasticityFEMForceField::init() {
   if (params.size() != need) {
     msg_error("material " + name + " needs " + std::to_string(need) + " values in ParameterSet (" +
               std::string(m->params) + "), " + std::to_string(params.size()) + " given");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (m->material == hyper::Material::ogden && params[1] == 0) {
     msg_error("Ogden: alpha1 (second value of ParameterSet) must not be 0");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
 
   const auto& tets = topo->tetrahedra();
   if (tets.empty()) {
     msg_error("the topology " + topo->describe() + " has no tetrahedra");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
-  const std::vector<double>& x0 = s->vec(kRestPosition);
+  const std::vector<double>& x0 = s->read(kRestPosition);
   const auto issues = fem_.init(as_vec3(x0), tets, topo->edges(), topo->edges_in_tetrahedron(), m->material, params);
   for (const auto& is : issues)
     msg_error((is.element >= 0 ? "tetrahedron " + std::to_string(is.element) + ": " : std::string()) + is.message);
-  if (!issues.empty()) state_ = ComponentState::invalid;
+  if (!issues.empty()) set_state(ComponentState::invalid);
 }
 
 std::optional<double> TetrahedronHyperelasticityFEMForceField::potential_energy() const {
   if (state() != ComponentState::valid) return std::nullopt;
-  return fem_.energy(as_vec3(mstate->vec(kPosition)));
+  return fem_.energy(as_vec3(mstate->read(kPosition)));
 }
 
 void TetrahedronHyperelasticityFEMForceField::add_force(const MechParams& p) {
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
-  fem_.add_force(as_vec3(s.vec(p.x)), as_vec3(s.vec(p.f)));
+  fem_.add_force(as_vec3(s.read(p.x)), as_vec3(s.write(p.f)));
   if (fem_.bad_element() >= 0 && !reported_inversion_) {
     reported_inversion_ = true;
     msg_error("tetrahedron " + std::to_string(fem_.bad_element()) + " is inverted or flat (J = " +
@@ -81,7 +81,7 @@ void TetrahedronHyperelasticityFEMForceField::add_force(const MechParams& p) {
 void TetrahedronHyperelasticityFEMForceField::add_dforce(const MechParams& p, double kfactor) {
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
-  fem_.add_dforce(as_vec3(s.vec(p.dx)), as_vec3(s.vec(p.df)), kfactor);
+  fem_.add_dforce(as_vec3(s.read(p.dx)), as_vec3(s.write(p.df)), kfactor);
 }
 
 bool TetrahedronHyperelasticityFEMForceField::build_stiffness(MatrixSink& K) {

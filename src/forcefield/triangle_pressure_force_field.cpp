@@ -15,10 +15,10 @@ void TrianglePressureForceField::init() {
   if (!bind_node_topology(*this, topology, "a triangular mesh is required")) return;
   if (cauchy_stress.get().size() != 6) {
     msg_error("cauchyStress must hold 6 values (xx xy yy xz yz zz)");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
-  if (!rebuild(true)) state_ = ComponentState::invalid;
+  if (!rebuild(true)) set_state(ComponentState::invalid);
 }
 
 bool TrianglePressureForceField::rebuild(bool read_list) {
@@ -27,9 +27,9 @@ bool TrianglePressureForceField::rebuild(bool read_list) {
     pressure_seen_ = pressure.get();
   }
   const auto& all = topology->triangles();
-  n_triangles_ = all.size();
+  triangles_version_ = topology->elements_version(MeshTopologyBase::Elements::triangles);
   const std::size_t np = mstate->size();
-  const std::vector<double>& x0 = mstate->vec(kRestPosition);
+  const std::vector<double>& x0 = mstate->read(kRestPosition);
   tris_.clear();
   force_.clear();
   for (std::size_t i = 0; i < list_.size(); ++i) {
@@ -61,13 +61,13 @@ void TrianglePressureForceField::add_force(const MechParams& p) {
   // SOFA keeps the list and the forces computed at init, even when the list is
   // an engine output that changes later (its update callback does not run
   // during the simulation); only a change of the topology rebuilds them.
-  if (topology->triangles().size() != n_triangles_ && !rebuild(false)) {
-    state_ = ComponentState::invalid;
+  if (topology->elements_version(MeshTopologyBase::Elements::triangles) != triangles_version_ && !rebuild(false)) {
+    set_state(ComponentState::invalid);
     tris_.clear();
     force_.clear();
     return;
   }
-  std::vector<double>& f = mstate->vec(p.f);
+  std::vector<double>& f = mstate->write(p.f);
   if (use_constant_force.value()) {
     for (std::size_t i = 0; i < tris_.size(); ++i) {
       const Vec3 fi(force_[i][0] / 3, force_[i][1] / 3, force_[i][2] / 3);
@@ -76,7 +76,7 @@ void TrianglePressureForceField::add_force(const MechParams& p) {
     }
     return;
   }
-  const std::vector<double>& x = mstate->vec(p.x);
+  const std::vector<double>& x = mstate->read(p.x);
   const auto& s = cauchy_stress.value();
   // Symmetric 3×3 from SOFA's MatSym3 storage (lower triangle row by row).
   const double m[3][3] = {{s[0], s[1], s[3]}, {s[1], s[2], s[4]}, {s[3], s[4], s[5]}};

@@ -12,7 +12,7 @@ namespace sinew {
 
 class TrianglePressureForceField final : public ForceField {
  public:
-  Field<Vec3> pressure{this, "pressure", Vec3::Zero(), "pressure vector (force per unit area)", "Load"};
+  Field<Vec3> pressure{this, "pressure", Vec3::Zero(), "pressure vector (force per unit area)", "Load", "pressure (force/length²)"};
   Field<std::vector<double>> cauchy_stress{
       this,
       "cauchyStress",
@@ -36,7 +36,7 @@ class TrianglePressureForceField final : public ForceField {
   std::vector<Triangle> tris_;      // their vertices
   std::vector<Vec3> force_;         // P·A per triangle
   Vec3 pressure_seen_ = Vec3::Zero();  // pressure read at init
-  std::size_t n_triangles_ = 0;
+  std::uint64_t triangles_version_ = 0;  // of the list the elements were built from
 };
 
 }  // namespace sinew

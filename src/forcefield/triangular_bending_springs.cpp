@@ -28,25 +28,25 @@ void TriangularBendingSprings::init() {
   if (!bind_node_topology(*this, topology, "a triangular mesh is required")) return;
   if (topology->triangles().empty()) {
     msg_error("the topology " + topology->describe() + " has no triangles (a triangular set topology is required)");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
-  if (!rebuild()) state_ = ComponentState::invalid;
+  if (!rebuild()) set_state(ComponentState::invalid);
 }
 
 void TriangularBendingSprings::reinit() {
-  if (state() == ComponentState::valid && !rebuild()) state_ = ComponentState::invalid;
+  if (state() == ComponentState::valid && !rebuild()) set_state(ComponentState::invalid);
 }
 
 bool TriangularBendingSprings::rebuild() {
   const auto& tris = topology->triangles();
   TriangleAdjacency adj;
   adj.build(tris, topology->edges());
-  n_triangles_ = tris.size();
-  n_edges_ = topology->edges().size();
+  triangles_version_ = topology->elements_version(MeshTopologyBase::Elements::triangles);
+  edges_version_ = topology->elements_version(MeshTopologyBase::Elements::edges);
   const std::size_t np = mstate->size();
   if (!element_points_in_state(*this, tris, "triangle", np)) return false;
-  const std::vector<double>& x0 = mstate->vec(kRestPosition);
+  const std::vector<double>& x0 = mstate->read(kRestPosition);
   // SOFA's triangle-creation pass: the first triangle (in order) holding an
   // edge initialises its spring: m1 opposite in the other triangle, m2 in this one.
   std::vector<springs::LinearSpring> per_edge(adj.edges.size());
@@ -79,15 +79,15 @@ bool TriangularBendingSprings::rebuild() {
 
 void TriangularBendingSprings::add_force(const MechParams& p) {
   // Topology changes: rebuild the springs from the new lists (no per-event handling).
-  if ((topology->triangles().size() != n_triangles_ || topology->edges().size() != n_edges_) && !rebuild()) {
-    state_ = ComponentState::invalid;
+  if ((topology->elements_version(MeshTopologyBase::Elements::triangles) != triangles_version_ || topology->elements_version(MeshTopologyBase::Elements::edges) != edges_version_) && !rebuild()) {
+    set_state(ComponentState::invalid);
     springs_.clear();
     dfdx_.clear();
   }
   MechanicalState& s = *mstate;
-  const double* x = s.vec(p.x).data();
-  const double* v = s.vec(p.v).data();
-  double* f = s.vec(p.f).data();
+  const double* x = s.read(p.x).data();
+  const double* v = s.read(p.v).data();
+  double* f = s.write(p.f).data();
   energy_ = 0;
   for (std::size_t i = 0; i < springs_.size(); ++i)
     springs::add_spring_force<3>(springs_[i], x, v, f, x, v, f, dfdx_[i], energy_, 1.0e-4);
@@ -95,8 +95,8 @@ void TriangularBendingSprings::add_force(const MechParams& p) {
 
 void TriangularBendingSprings::add_dforce(const MechParams& p, double kfactor) {
   MechanicalState& s = *mstate;
-  const double* dx = s.vec(p.dx).data();
-  double* df = s.vec(p.df).data();
+  const double* dx = s.read(p.dx).data();
+  double* df = s.write(p.df).data();
   for (std::size_t i = 0; i < springs_.size(); ++i)
     springs::add_spring_dforce<3>(springs_[i], dfdx_[i], dx, df, dx, df, kfactor);
 }

@@ -13,8 +13,8 @@ namespace sinew {
 
 class TriangularBendingSprings final : public ForceField {
  public:
-  Field<double> stiffness{this, "stiffness", 100000.0, "stiffness shared by all springs (N/m)", "Spring"};
-  Field<double> damping{this, "damping", 1.0, "damping shared by all springs", "Spring"};
+  Field<double> stiffness{this, "stiffness", 100000.0, "stiffness shared by all springs", "Spring", "force/length"};
+  Field<double> damping{this, "damping", 1.0, "damping shared by all springs", "Spring", "force·time/length"};
   Field<bool> show_springs{this, "showSprings", true, "draw the springs (viewer)", "Visualization"};
   Link<MeshTopologyBase> topology{this, "topology", "topology holding the triangles (default: the node's)"};
 
@@ -32,7 +32,8 @@ class TriangularBendingSprings final : public ForceField {
   bool rebuild();
   std::vector<springs::LinearSpring> springs_;  // active edges only, in edge order
   std::vector<springs::Block> dfdx_;
-  std::size_t n_triangles_ = 0, n_edges_ = 0;
+  // Versions of the lists the springs/elements were built from (topology changes).
+  std::uint64_t triangles_version_ = 0, edges_version_ = 0;
   double ks_ = 100000.0, kd_ = 1.0;
   double energy_ = 0;
 };

@@ -102,28 +102,28 @@ void TriangularFEMForceField::init() {
   }
   if (rotated_initial_elements.is_set() || initial_transformation.is_set()) {
     msg_error("rotatedInitialElements/initialTransformation are not supported");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (young_modulus.get().empty() || poisson_ratio.get().empty()) {
     msg_error("youngModulus and poissonRatio must not be empty");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (!bind_node_topology(*this, topology, "a triangular mesh is required")) return;
   if (topology->triangles().empty()) msg_warning("no triangles found in the topology " + topology->describe());
-  if (!rebuild()) state_ = ComponentState::invalid;
+  if (!rebuild()) set_state(ComponentState::invalid);
 }
 
 void TriangularFEMForceField::reinit() {
-  if (state() == ComponentState::valid && !rebuild()) state_ = ComponentState::invalid;
+  if (state() == ComponentState::valid && !rebuild()) set_state(ComponentState::invalid);
 }
 
 bool TriangularFEMForceField::rebuild() {
   const auto& tris = topology->triangles();
-  n_triangles_ = tris.size();
+  triangles_version_ = topology->elements_version(MeshTopologyBase::Elements::triangles);
   const std::size_t np = mstate->size();
-  const std::vector<double>& x0 = mstate->vec(kRestPosition);
+  const std::vector<double>& x0 = mstate->read(kRestPosition);
   const auto& ey = young_modulus.get();
   const auto& pr = poisson_ratio.get();
   // SOFA computes the material before checking the values (then warns).
@@ -182,13 +182,13 @@ bool TriangularFEMForceField::rebuild() {
 }
 
 void TriangularFEMForceField::add_force(const MechParams& p) {
-  if (topology->triangles().size() != n_triangles_ && !rebuild()) {
-    state_ = ComponentState::invalid;
+  if (topology->elements_version(MeshTopologyBase::Elements::triangles) != triangles_version_ && !rebuild()) {
+    set_state(ComponentState::invalid);
     el_.clear();
   }
   MechanicalState& s = *mstate;
-  const double* x = s.vec(p.x).data();
-  double* f = s.vec(p.f).data();
+  const double* x = s.read(p.x).data();
+  double* f = s.write(p.f).data();
   if (small_) {
     add_force_small(x, f);
     return;
@@ -203,7 +203,7 @@ void TriangularFEMForceField::add_force(const MechParams& p) {
     if (!local_j(db[0], dc[0], dc[1], J)) {
       msg_error("triangle " + std::to_string(i) + " is degenerate (zero area) at step " +
                 std::to_string(node()->root()->step_index) + ": the force field stops");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       el_.clear();
       return;
     }
@@ -220,8 +220,8 @@ void TriangularFEMForceField::add_force(const MechParams& p) {
 
 void TriangularFEMForceField::add_dforce(const MechParams& p, double kfactor) {
   MechanicalState& s = *mstate;
-  const double* dx = s.vec(p.dx).data();
-  double* df = s.vec(p.df).data();
+  const double* dx = s.read(p.dx).data();
+  double* df = s.write(p.df).data();
   if (small_) {
     add_dforce_small(dx, df, kfactor);
     return;
@@ -255,7 +255,7 @@ void TriangularFEMForceField::add_force_small(const double* x, double* f) {
     if (!global_j(db, dc, J)) {
       msg_error("triangle " + std::to_string(i) + " is degenerate (zero area) at step " +
                 std::to_string(node()->root()->step_index) + ": the force field stops");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       el_.clear();
       return;
     }

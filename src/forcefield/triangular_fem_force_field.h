@@ -17,9 +17,9 @@ class TriangularFEMForceField final : public ForceField {
   Field<std::string> method{this, "method", "large", "\"large\" (corotational) or \"small\" (linear) displacements",
                             "Material"};
   Field<std::vector<double>> poisson_ratio{
-      this, "poissonRatio", {0.3}, "Poisson's ratio: one value, or one per element", "Material"};
+      this, "poissonRatio", {0.3}, "Poisson's ratio: one value, or one per element", "Material", "dimensionless"};
   Field<std::vector<double>> young_modulus{
-      this, "youngModulus", {1000.0}, "Young's modulus (Pa): one value, or one per element", "Material"};
+      this, "youngModulus", {1000.0}, "Young's modulus: one value, or one per element", "Material", "pressure (force/length²)"};
   Field<std::vector<double>> rotated_initial_elements{this, "rotatedInitialElements", {},
                                                       "rest shape of each element in its frame (unsupported)",
                                                       "Material"};
@@ -61,7 +61,7 @@ class TriangularFEMForceField final : public ForceField {
   void add_dforce_small(const double* dx, double* df, double kfactor) const;
   bool small_ = false;
   std::vector<Element> el_;
-  std::size_t n_triangles_ = 0;
+  std::uint64_t triangles_version_ = 0;  // of the list the elements were built from
 };
 
 }  // namespace sinew

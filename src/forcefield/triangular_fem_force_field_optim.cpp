@@ -51,20 +51,20 @@ void TriangularFEMForceFieldOptim::init() {
     msg_warning("no triangles found in the topology " + topology->describe());
     if (!topology->quads().empty()) msg_warning("the topology only contains quads; this force field needs triangles");
   }
-  if (!rebuild()) state_ = ComponentState::invalid;
+  if (!rebuild()) set_state(ComponentState::invalid);
 }
 
 void TriangularFEMForceFieldOptim::reinit() {
-  if (state() == ComponentState::valid && !rebuild()) state_ = ComponentState::invalid;
+  if (state() == ComponentState::valid && !rebuild()) set_state(ComponentState::invalid);
 }
 
 bool TriangularFEMForceFieldOptim::rebuild() {
   const auto& tris = topology->triangles();
   const std::size_t nt = tris.size();
-  n_triangles_ = nt;
+  triangles_version_ = topology->elements_version(MeshTopologyBase::Elements::triangles);
   const std::size_t np = mstate->size();
-  const std::vector<double>& x0 = mstate->vec(kRestPosition);
-  const std::vector<double>& x = mstate->vec(kPosition);
+  const std::vector<double>& x0 = mstate->read(kRestPosition);
+  const std::vector<double>& x = mstate->read(kPosition);
   const auto& ey = young_modulus.get();
   const auto& pr = poisson_ratio.get();
   if (ey.empty()) msg_warning("'youngModulus' is empty: using 5000");
@@ -118,14 +118,14 @@ bool TriangularFEMForceFieldOptim::rebuild() {
 }
 
 void TriangularFEMForceFieldOptim::add_force(const MechParams& p) {
-  if (topology->triangles().size() != n_triangles_ && !rebuild()) {
-    state_ = ComponentState::invalid;
+  if (topology->elements_version(MeshTopologyBase::Elements::triangles) != triangles_version_ && !rebuild()) {
+    set_state(ComponentState::invalid);
     info_.clear();
     tstate_.clear();
   }
   MechanicalState& s = *mstate;
-  const double* x = s.vec(p.x).data();
-  double* f = s.vec(p.f).data();
+  const double* x = s.read(p.x).data();
+  double* f = s.write(p.f).data();
   const std::size_t nt = info_.size();
   for (std::size_t i = 0; i < nt; ++i) {
     const TriangleInfo& ti = info_[i];
@@ -157,8 +157,8 @@ void TriangularFEMForceFieldOptim::add_force(const MechParams& p) {
 
 void TriangularFEMForceFieldOptim::add_dforce(const MechParams& p, double kfactor) {
   MechanicalState& s = *mstate;
-  const double* dx = s.vec(p.dx).data();
-  double* df = s.vec(p.df).data();
+  const double* dx = s.read(p.dx).data();
+  double* df = s.write(p.df).data();
   const std::size_t nt = info_.size();
   for (std::size_t i = 0; i < nt; ++i) {
     const TriangleInfo& ti = info_[i];

@@ -13,12 +13,12 @@ namespace sinew {
 class TriangularFEMForceFieldOptim final : public ForceField {
  public:
   Field<std::vector<double>> young_modulus{
-      this, "youngModulus", {5000.0}, "Young's modulus (Pa): one value, or one per element", "Material"};
+      this, "youngModulus", {5000.0}, "Young's modulus: one value, or one per element", "Material", "pressure (force/length²)"};
   Field<std::vector<double>> poisson_ratio{
-      this, "poissonRatio", {0.45}, "Poisson's ratio in [0, 0.5): one value, or one per element", "Material"};
+      this, "poissonRatio", {0.45}, "Poisson's ratio in [0, 0.5): one value, or one per element", "Material", "dimensionless"};
   Field<std::string> method{this, "method", "large", "only \"large\" is implemented (other values: warning)",
                             "Material"};
-  Field<double> damping{this, "damping", 0.0, "damping-to-stiffness ratio (unused)", "Material"};
+  Field<double> damping{this, "damping", 0.0, "damping-to-stiffness ratio (unused)", "Material", "force·time/length"};
   Field<double> rest_scale{this, "restScale", 1.0, "rest-shape scale factor (pre-stretch when < 1)", "Material"};
   Field<bool> compute_principal_stress{this, "computePrincipalStress", false,
                                        "compute the principal stresses of each triangle", "Stress"};
@@ -53,7 +53,7 @@ class TriangularFEMForceFieldOptim final : public ForceField {
   bool rebuild();
   std::vector<TriangleInfo> info_;
   std::vector<TriangleState> tstate_;
-  std::size_t n_triangles_ = 0;
+  std::uint64_t triangles_version_ = 0;  // of the list the elements were built from
 };
 
 }  // namespace sinew

@@ -10,21 +10,21 @@ void UniformVelocityDampingForceField::init() {
   const StateType t = mstate->state_type();
   if (t == StateType::rigid3 || t == StateType::rigid2) {
     msg_error("rigid states are not supported");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
   }
 }
 
 void UniformVelocityDampingForceField::add_force(const MechParams& p) {
-  const std::vector<double>& v = mstate->vec(p.v);
-  std::vector<double>& f = mstate->vec(p.f);
+  const std::vector<double>& v = mstate->read(p.v);
+  std::vector<double>& f = mstate->write(p.f);
   const double c = damping_coefficient.value();
   for (std::size_t i = 0; i < f.size() && i < v.size(); ++i) f[i] -= v[i] * c;
 }
 
 void UniformVelocityDampingForceField::add_dforce(const MechParams& p, double) {
   if (!implicit.value() || p.b == 0.0) return;
-  const std::vector<double>& dx = mstate->vec(p.dx);
-  std::vector<double>& df = mstate->vec(p.df);
+  const std::vector<double>& dx = mstate->read(p.dx);
+  std::vector<double>& df = mstate->write(p.df);
   const double bc = p.b * damping_coefficient.value();
   for (std::size_t i = 0; i < df.size() && i < dx.size(); ++i) df[i] -= dx[i] * bc;
 }

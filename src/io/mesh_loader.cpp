@@ -161,12 +161,12 @@ void MeshLoader::do_update() {
     ok = false;
   }
   if (!ok) {
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     mesh_ = io::MeshData{};
     publish(mesh_);
     return;
   }
-  state_ = ComponentState::valid;
+  set_state(ComponentState::valid);
   io::FinishOptions fo;
   fo.create_subelements = create_subelements.is_set() ? create_subelements.get() : default_create_subelements();
   fo.only_attached_points = only_attached_points.get();

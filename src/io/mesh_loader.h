@@ -27,7 +27,7 @@ class MeshLoader : public Engine {
 
   Field<std::string> filename{this, "filename", "", "mesh file to load", "Loader"};
 
-  Field<std::vector<Vec3>> position{this, "position", {}, "loaded vertex positions", "Vectors"};
+  Field<std::vector<Vec3>> position{this, "position", {}, "loaded vertex positions", "Vectors", "length"};
   io::ValueField<std::vector<std::vector<unsigned>>> polylines{this, "polylines", "loaded polylines", "Vectors"};
   Field<std::vector<Edge>> edges{this, "edges", {}, "loaded edges", "Vectors"};
   Field<std::vector<Triangle>> triangles{this, "triangles", {}, "loaded triangles", "Vectors"};
@@ -70,9 +70,9 @@ class MeshLoader : public Engine {
                                  "Loader"};
   Field<bool> only_attached_points{this, "onlyAttachedPoints", false,
                                    "only keep the points attached to elements of the mesh", "Loader"};
-  Field<Vec3> translation{this, "translation", Vec3::Zero(), "translation of the positions", "Transformation"};
+  Field<Vec3> translation{this, "translation", Vec3::Zero(), "translation of the positions", "Transformation", "length"};
   Field<Vec3> rotation{this, "rotation", Vec3::Zero(), "rotation of the positions (Euler angles, degrees)",
-                       "Transformation"};
+                       "Transformation", "degrees"};
   Field<Vec3> scale3d{this, "scale3d", Vec3::Ones(), "scale of the positions in 3 dimensions (attribute 'scale' "
                                                      "multiplies it)",
                       "Transformation"};

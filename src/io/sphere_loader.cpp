@@ -24,12 +24,12 @@ void SphereLoader::do_update() {
   else m = io::read_sph(filename.get(), &error);
   if (!m) {
     msg_error(error);
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     position.set({});
     list_radius.set({});
     return;
   }
-  state_ = ComponentState::valid;
+  set_state(ComponentState::valid);
   const Vec3 s = scale.get(), r = rotation.get(), t = translation.get();
   if (!io::sofa_vec_eq(s, Vec3::Ones()) || !io::sofa_vec_eq(r, Vec3::Zero()) || !io::sofa_vec_eq(t, Vec3::Zero())) {
     if (!io::sofa_vec_eq(s, Vec3::Ones()) && (s[0] == 0.0 || s[1] == 0.0 || s[2] == 0.0))

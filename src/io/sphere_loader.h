@@ -13,12 +13,12 @@ class SphereLoader final : public Engine {
   SphereLoader();
 
   Field<std::string> filename{this, "filename", "", "sphere file (.sph) to load", "Loader"};
-  Field<std::vector<Vec3>> position{this, "position", {}, "sphere centres", "Vectors"};
+  Field<std::vector<Vec3>> position{this, "position", {}, "sphere centres", "Vectors", "length"};
   Field<std::vector<double>> list_radius{this, "listRadius", {}, "radius of each sphere", "Vectors"};
   Field<Vec3> scale{this, "scale", Vec3::Ones(), "scale applied to the sphere centres", "Transformation"};
   Field<Vec3> rotation{this, "rotation", Vec3::Zero(), "rotation of the centres (Euler angles, degrees)",
-                       "Transformation"};
-  Field<Vec3> translation{this, "translation", Vec3::Zero(), "translation applied to the centres", "Transformation"};
+                       "Transformation", "degrees"};
+  Field<Vec3> translation{this, "translation", Vec3::Zero(), "translation applied to the centres", "Transformation", "length"};
 
   void init() override;
   void reinit() override { update(); }

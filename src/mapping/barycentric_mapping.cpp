@@ -57,7 +57,7 @@ bool BarycentricMapping::init_mapping() {
 
   const int x_id = use_rest_position.value() ? kRestPosition : kPosition;
   const std::vector<double>& in = in_coord(x_id);
-  std::vector<double> out = *out_coord(x_id);  // copy: resizing the output must not invalidate it
+  std::vector<double> out = *out_coord_read(x_id);  // copy: resizing the output must not invalidate it
   MeshTopologyBase& topo = *input_topology;
 
   bool ok = false;
@@ -158,7 +158,7 @@ void BarycentricMapping::apply_j(int v, int role) {
 }
 
 void BarycentricMapping::apply_jt(int f, int role) {
-  if (const std::vector<double>* out = out_deriv(f, role)) table_.scatter_add(*out, in_deriv(f, role));
+  if (const std::vector<double>* out = out_deriv_read(f, role)) table_.scatter_add(*out, in_deriv_write(f, role));
 }
 
 bool BarycentricMapping::jacobian(std::vector<JacobianEntry>& out) {

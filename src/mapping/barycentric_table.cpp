@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/assert.h"
+
 namespace sinew {
 
 void BaryTable::clear() {
@@ -16,6 +18,7 @@ void BaryTable::gather(const std::vector<double>& in, std::vector<double>& out) 
   for (std::size_t i = 0; i < n; ++i) {
     double s0 = 0, s1 = 0, s2 = 0;
     for (std::uint32_t k = start_[i]; k < start_[i + 1]; ++k) {
+      SINEW_ASSERT(idx_[k] * std::size_t{3} + 2 < in.size(), "barycentric table: vertex index within the input");
       const double* p = &in[idx_[k] * 3];
       const double w = w_[k];
       s0 += p[0] * w;
@@ -33,6 +36,7 @@ void BaryTable::scatter_add(const std::vector<double>& out, std::vector<double>&
   for (std::size_t i = 0; i < n; ++i) {
     const double* v = &out[i * 3];
     for (std::uint32_t k = start_[i]; k < start_[i + 1]; ++k) {
+      SINEW_ASSERT(idx_[k] * std::size_t{3} + 2 < in.size(), "barycentric table: vertex index within the input");
       double* p = &in[idx_[k] * 3];
       const double w = w_[k];
       p[0] += v[0] * w;

@@ -107,7 +107,7 @@ void BeamLinearMapping::apply(int x) {
 void BeamLinearMapping::apply_j(int v, int role) {
   std::vector<double>* outp = out_deriv(v, role);
   if (!outp) return;
-  const std::vector<double>& in = in_deriv(v, role);
+  const std::vector<double>& in = in_deriv_write(v, role);
   const std::size_t n_in = in.size() / 6, n = points_.size() / 3;
   std::vector<double>& out = *outp;
   out.resize(n * 3);
@@ -129,10 +129,10 @@ void BeamLinearMapping::apply_j(int v, int role) {
 }
 
 void BeamLinearMapping::apply_jt(int f, int role) {
-  const std::vector<double>* outp = out_deriv(f, role);
+  const std::vector<double>* outp = out_deriv_read(f, role);
   if (!outp) return;
   const std::vector<double>& out = *outp;
-  std::vector<double>& in = in_deriv(f, role);
+  std::vector<double>& in = in_deriv_write(f, role);
   const std::size_t n_in = in.size() / 6, n = std::min(points_.size() / 3, out.size() / 3);
   for (std::size_t i = 0; i < n; ++i) {
     double l0[3];

@@ -106,11 +106,11 @@ void DistanceMultiMapping::apply_j(int v, int role) {
 }
 
 void DistanceMultiMapping::apply_jt(int f, int role) {
-  const std::vector<double>* outp = out_deriv(f, role);
+  const std::vector<double>* outp = out_deriv_read(f, role);
   if (!outp) return;
   const std::vector<double>& out = *outp;
   for (std::size_t k = 0; k < in_.size(); ++k) {
-    std::vector<double>& in = in_deriv(f, role, k);
+    std::vector<double>& in = in_deriv_write(f, role, k);
     for (std::size_t e = 0; e < ends_.size() && e < out.size(); ++e)
       for (int side = 0; side < 2; ++side)
         if (ends_[e][side].input == k)
@@ -120,9 +120,9 @@ void DistanceMultiMapping::apply_jt(int f, int role) {
 
 void DistanceMultiMapping::apply_djt(int df, int dx, double k) {
   if (gs_ == 0 || !out_) return;
-  const std::vector<double>& child_force = out_->vec(kForce);
+  const std::vector<double>& child_force = out_->read(kForce);
   for (std::size_t i = 0; i < in_.size(); ++i) {
-    inw_ptr_[i] = &in_deriv(df, kDforce, i);
+    inw_ptr_[i] = &in_deriv_write(df, kDforce, i);
     in_ptr_[i] = &in_deriv(dx, kDx, i);
   }
   double b[3][3];
@@ -152,7 +152,7 @@ bool DistanceMultiMapping::jacobian(std::vector<JacobianEntry>& out) {
 
 bool DistanceMultiMapping::build_geometric_stiffness(MatrixSink& K) {
   if (gs_ == 0 || !out_) return true;
-  const std::vector<double>& child_force = out_->vec(kForce);
+  const std::vector<double>& child_force = out_->read(kForce);
   double b[3][3];
   for (std::size_t e = 0; e < ends_.size() && e < child_force.size(); ++e) {
     if (!edge::has_geometric_stiffness(gs_, child_force[e])) continue;

@@ -48,9 +48,9 @@ void IdentityMapping::apply_j(int v, int role) {
 }
 
 void IdentityMapping::apply_jt(int f, int role) {
-  const std::vector<double>* out = out_deriv(f, role);
+  const std::vector<double>* out = out_deriv_read(f, role);
   if (!out) return;
-  std::vector<double>& in = in_deriv(f, role);
+  std::vector<double>& in = in_deriv_write(f, role);
   if (dwi_ == dwo_) {
     const std::size_t n = std::min(in.size(), out->size());
     for (std::size_t i = 0; i < n; ++i) in[i] += (*out)[i];

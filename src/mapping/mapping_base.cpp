@@ -1,5 +1,7 @@
 #include "mapping/mapping_base.h"
 
+#include <algorithm>
+
 #include "core/node.h"
 #include "core/path.h"
 
@@ -16,6 +18,12 @@ bool StateLink::accept(Base* b) {
   if (ok && !multi_) targets_.assign(1, b);
   return ok;
 }
+
+bool StateLink::references(const Base* b) const {
+  return std::find(targets_.begin(), targets_.end(), b) != targets_.end();
+}
+
+void StateLink::forget(const Base* b) { std::erase(targets_, b); }
 
 int geometric_stiffness_id(const std::string& text, int fallback) {
   std::string t;
@@ -102,7 +110,7 @@ bool MappingBase::resolve_links() {
 
 void MappingBase::init() {
   if (!resolve_links()) {
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   // Mappings to visual models are not mechanical (SOFA's setNonMechanical).
@@ -112,7 +120,7 @@ void MappingBase::init() {
     map_masses.set(false);
   }
   if (!init_mapping()) {
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (!apply_at_init()) return;

@@ -34,6 +34,8 @@ class StateLink final : public BaseLink {
   bool is_multi() const override { return multi_; }
   void clear_targets() override { targets_.clear(); }
   void add_target(Base* b) override { targets_.push_back(b); }
+  bool references(const Base* b) const override;
+  void forget(const Base* b) override;
   const std::vector<Base*>& targets() const { return targets_; }
   void set_targets(std::vector<Base*> t) { targets_ = std::move(t); }
   bool allows_visual() const { return allow_visual_; }
@@ -74,25 +76,39 @@ class MappingBase : public Mapping {
   std::size_t out_size() const { return out_ ? out_->size() : vout_->visual_size(); }
   void resize_output(std::size_t n);
 
+  // Reads of the inputs (apply, apply_j) leave their versions alone; the
+  // outputs and the inputs' force accumulators (apply_jt) are writes.
   // Input coordinates for vector `x` (position, rest_position or a solver vector).
   const std::vector<double>& in_coord(int x, std::size_t k = 0) const {
-    return in_[k]->vec(vec_for(*in_[k], x, kPosition));
+    return in_[k]->read(vec_for(*in_[k], x, kPosition));
   }
-  std::vector<double>& in_deriv(int v, int role, std::size_t k = 0) const {
-    return in_[k]->vec(vec_for(*in_[k], v, role));
+  const std::vector<double>& in_deriv(int v, int role, std::size_t k = 0) const {
+    return in_[k]->read(vec_for(*in_[k], v, role));
   }
-  // Output coordinates (nullptr when the output has no such vector).
+  // Input derivatives that receive Jᵀ·out (forces, force variations).
+  std::vector<double>& in_deriv_write(int f, int role, std::size_t k = 0) const {
+    return in_[k]->write(vec_for(*in_[k], f, role));
+  }
+  // Output coordinates, to be written (nullptr when the output has no such vector).
   std::vector<double>* out_coord(int x) const {
-    if (out_) return &out_->vec(vec_for(*out_, x, kPosition));
+    if (out_) return &out_->write(vec_for(*out_, x, kPosition));
     return vout_->visual_vec(x);
   }
-  // Output derivatives (nullptr for visual outputs).
+  const std::vector<double>* out_coord_read(int x) const {
+    if (out_) return &out_->read(vec_for(*out_, x, kPosition));
+    return vout_->visual_vec(x);
+  }
+  // Output derivatives, to be written by apply_j (nullptr for visual outputs).
   std::vector<double>* out_deriv(int v, int role) const {
-    return out_ ? &out_->vec(vec_for(*out_, v, role)) : nullptr;
+    return out_ ? &out_->write(vec_for(*out_, v, role)) : nullptr;
+  }
+  // Output derivatives read by apply_jt (nullptr for visual outputs).
+  const std::vector<double>* out_deriv_read(int f, int role) const {
+    return out_ ? &out_->read(vec_for(*out_, f, role)) : nullptr;
   }
 
   // Output positions at init (for mappings that compute local coordinates from them).
-  const std::vector<double>& initial_output_positions() const { return *out_coord(kPosition); }
+  const std::vector<double>& initial_output_positions() const { return *out_coord_read(kPosition); }
 
   std::vector<MechanicalState*> in_;
   MechanicalState* out_ = nullptr;

@@ -105,7 +105,7 @@ void RigidMapping::apply(int x) {
   if (!outp) return;
   const std::vector<double>& in = in_coord(x);
   const std::vector<double>* pts = &local_;
-  if (use_x0.value() && out_) pts = &out_->vec(kRestPosition);
+  if (use_x0.value() && out_) pts = &out_->read(kRestPosition);
   const std::size_t n = rigid_.size();
   std::vector<double>& out = *outp;
   out.resize(n * dim_);
@@ -135,7 +135,7 @@ void RigidMapping::apply(int x) {
 void RigidMapping::apply_j(int v, int role) {
   std::vector<double>* outp = out_deriv(v, role);
   if (!outp) return;
-  const std::vector<double>& in = in_deriv(v, role);
+  const std::vector<double>& in = in_deriv_write(v, role);
   const std::size_t n = rigid_.size();
   std::vector<double>& out = *outp;
   out.resize(n * dim_);
@@ -159,10 +159,10 @@ void RigidMapping::apply_j(int v, int role) {
 }
 
 void RigidMapping::apply_jt(int f, int role) {
-  const std::vector<double>* outp = out_deriv(f, role);
+  const std::vector<double>* outp = out_deriv_read(f, role);
   if (!outp) return;
   const std::vector<double>& out = *outp;
-  std::vector<double>& in = in_deriv(f, role);
+  std::vector<double>& in = in_deriv_write(f, role);
   const std::size_t n = std::min(rigid_.size(), out.size() / dim_);
   if (rigid3()) {
     for (std::size_t i = 0; i < n; ++i) {
@@ -191,9 +191,9 @@ void RigidMapping::apply_jt(int f, int role) {
 
 void RigidMapping::apply_djt(int df, int dx, double k) {
   if (gs_ != 1 || !out_ || !rigid3()) return;
-  const std::vector<double>& child_force = out_->vec(kForce);
-  std::vector<double>& f = in_deriv(df, kDforce);
-  const std::vector<double>& d = in_deriv(dx, kDx);
+  const std::vector<double>& child_force = out_->read(kForce);
+  std::vector<double>& f = in_deriv_write(df, kDforce);
+  const std::vector<double>& d = in_deriv_write(dx, kDx);
   const std::size_t n = std::min(rigid_.size(), child_force.size() / 3);
   for (std::size_t i = 0; i < n; ++i) {
     const double* fi = &child_force[i * 3];

@@ -39,16 +39,16 @@ void SquareDistanceMapping::apply_j(int v, int role) {
 }
 
 void SquareDistanceMapping::apply_jt(int f, int role) {
-  const std::vector<double>* outp = out_deriv(f, role);
+  const std::vector<double>* outp = out_deriv_read(f, role);
   if (!outp) return;
-  edge::apply_rows_transposed(edges_, grad_, *outp, dw_, in_deriv(f, role));
+  edge::apply_rows_transposed(edges_, grad_, *outp, dw_, in_deriv_write(f, role));
 }
 
 void SquareDistanceMapping::apply_djt(int df, int dx, double k) {
   if (gs_ == 0 || !out_) return;
-  const std::vector<double>& child_force = out_->vec(kForce);
-  std::vector<double>& f = in_deriv(df, kDforce);
-  const std::vector<double>& d = in_deriv(dx, kDx);
+  const std::vector<double>& child_force = out_->read(kForce);
+  std::vector<double>& f = in_deriv_write(df, kDforce);
+  const std::vector<double>& d = in_deriv_write(dx, kDx);
   for (std::size_t e = 0; e < edges_.size() && e < child_force.size(); ++e) {
     const double lambda = child_force[e];
     if (!edge::has_geometric_stiffness(gs_, lambda)) continue;
@@ -71,7 +71,7 @@ bool SquareDistanceMapping::jacobian(std::vector<JacobianEntry>& out) {
 
 bool SquareDistanceMapping::build_geometric_stiffness(MatrixSink& K) {
   if (gs_ == 0 || !out_) return true;
-  const std::vector<double>& child_force = out_->vec(kForce);
+  const std::vector<double>& child_force = out_->read(kForce);
   const MechanicalState* s = in_[0];
   for (std::size_t e = 0; e < edges_.size() && e < child_force.size(); ++e) {
     const double lambda = child_force[e];

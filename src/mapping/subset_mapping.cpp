@@ -87,7 +87,7 @@ void SubsetMapping::apply(int x) {
     if (idx_[i] < n_in) {
       for (int c = 0; c < cw_; ++c) out[i * cw_ + c] = in[idx_[i] * cw_ + c];
     } else {
-      if (!rest) rest = out_coord(kRestPosition);
+      if (!rest) rest = out_coord_read(kRestPosition);
       if (rest && rest->size() >= (i + 1) * cw_)
         for (int c = 0; c < cw_; ++c) out[i * cw_ + c] = (*rest)[i * cw_ + c];
     }
@@ -98,7 +98,7 @@ void SubsetMapping::apply_j(int v, int role) {
   std::vector<double>* outp = out_deriv(v, role);
   if (!outp) return;
   std::vector<double>& out = *outp;
-  const std::vector<double>& in = in_deriv(v, role);
+  const std::vector<double>& in = in_deriv_write(v, role);
   const std::size_t n_in = in.size() / dw_;
   out.resize(idx_.size() * dw_);
   for (std::size_t i = 0; i < idx_.size(); ++i)
@@ -107,10 +107,10 @@ void SubsetMapping::apply_j(int v, int role) {
 }
 
 void SubsetMapping::apply_jt(int f, int role) {
-  const std::vector<double>* outp = out_deriv(f, role);
+  const std::vector<double>* outp = out_deriv_read(f, role);
   if (!outp || idx_.empty()) return;
   const std::vector<double>& out = *outp;
-  std::vector<double>& in = in_deriv(f, role);
+  std::vector<double>& in = in_deriv_write(f, role);
   const std::size_t n_in = in.size() / dw_;
   const std::size_t n = std::min(idx_.size(), out.size() / dw_);
   for (std::size_t i = 0; i < n; ++i)

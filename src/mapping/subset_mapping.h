@@ -15,7 +15,7 @@ class SubsetMapping final : public MappingBase {
   Field<std::vector<unsigned>> indices{this, "indices", {}, "input index of each output point", "Mapping"};
   Field<unsigned> first{this, "first", 4294967295u, "first input index of a contiguous range", "Mapping"};
   Field<unsigned> last{this, "last", 4294967295u, "last input index of a contiguous range", "Mapping"};
-  Field<double> radius{this, "radius", 1.0e-5, "matching radius used when no indices are given", "Mapping"};
+  Field<double> radius{this, "radius", 1.0e-5, "matching radius used when no indices are given", "Mapping", "length"};
   Field<bool> handle_topology_change{this, "handleTopologyChange", true, "update the indices on topology changes",
                                      "Mapping"};
   Field<bool> ignore_not_found{this, "ignoreNotFound", false,

@@ -15,7 +15,7 @@ DiagonalMass::DiagonalMass() { file_mass.add_alias("fileMass"); }
 double DiagonalMass::compute_vertex_mass(double rho) {
   MechanicalState& s = *mstate;
   MechanicalState& g = *geometry_state;
-  const std::vector<double>& X = g.vec(compute_mass_on_rest.get() ? kRestPosition : kPosition);
+  const std::vector<double>& X = g.read(compute_mass_on_rest.get() ? kRestPosition : kPosition);
   const int w = g.info().coord_width;
   std::vector<double> m(s.size(), 0.0);
   double total = 0;
@@ -55,7 +55,7 @@ void DiagonalMass::init() {
   MechanicalState& s = *mstate;
   if (!file_mass.get().empty()) {
     msg_error("mass files (filename=) are not supported");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (!meshgeo::bind_mesh_mass(*this, topology, geometry_state)) return;
@@ -120,7 +120,7 @@ void DiagonalMass::init() {
 void DiagonalMass::add_force(const MechParams& p) {
   if (separate_gravity.value()) return;
   MechanicalState& s = *mstate;
-  std::vector<double>& f = s.vec(p.f);
+  std::vector<double>& f = s.write(p.f);
   const Vec3 g = node()->gravity.value();
   const int w = s.info().deriv_width;
   const auto& m = vertex_mass.value();
@@ -130,7 +130,7 @@ void DiagonalMass::add_force(const MechParams& p) {
 
 std::optional<double> DiagonalMass::potential_energy() const {
   if (state() != ComponentState::valid) return std::nullopt;
-  const std::vector<double>& x = mstate->vec(kPosition);
+  const std::vector<double>& x = mstate->read(kPosition);
   const Vec3 g = node()->gravity.value();
   const int w = mstate->info().coord_width;
   const auto& m = vertex_mass.value();
@@ -142,8 +142,8 @@ std::optional<double> DiagonalMass::potential_energy() const {
 
 void DiagonalMass::add_mdx(const MechParams&, int res, int dx, double factor) {
   MechanicalState& s = *mstate;
-  std::vector<double>& r = s.vec(res);
-  const std::vector<double>& d = s.vec(dx);
+  std::vector<double>& r = s.write(res);
+  const std::vector<double>& d = s.read(dx);
   const int w = s.info().deriv_width;
   const auto& m = vertex_mass.value();
   const std::size_t n = std::min(m.size(), s.size());
@@ -158,8 +158,8 @@ void DiagonalMass::add_mdx(const MechParams&, int res, int dx, double factor) {
 
 void DiagonalMass::acc_from_f(const MechParams&, int a, int f) {
   MechanicalState& s = *mstate;
-  std::vector<double>& av = s.vec(a);
-  const std::vector<double>& fv = s.vec(f);
+  std::vector<double>& av = s.write(a);
+  const std::vector<double>& fv = s.read(f);
   const int w = s.info().deriv_width;
   const auto& m = vertex_mass.value();
   for (std::size_t i = 0; i < m.size(); ++i)

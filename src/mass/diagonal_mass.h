@@ -10,9 +10,9 @@ namespace sinew {
 
 class DiagonalMass final : public Mass {
  public:
-  Field<std::vector<double>> vertex_mass{this, "vertexMass", {}, "mass of each vertex (kg)", "Mass"};
-  Field<double> mass_density{this, "massDensity", 1.0, "mass density (kg per unit length, area or volume)", "Mass"};
-  Field<double> total_mass{this, "totalMass", 1.0, "total mass of the object (kg); wins over the others", "Mass"};
+  Field<std::vector<double>> vertex_mass{this, "vertexMass", {}, "mass of each vertex", "Mass", "mass"};
+  Field<double> mass_density{this, "massDensity", 1.0, "mass density (kg per unit length, area or volume)", "Mass", "mass/length³"};
+  Field<double> total_mass{this, "totalMass", 1.0, "total mass of the object; wins over the others", "Mass", "mass"};
   Field<bool> compute_mass_on_rest{this, "computeMassOnRest", true,
                                    "compute the element measures on the rest positions (else current positions)",
                                    "Mass"};

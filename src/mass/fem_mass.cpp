@@ -53,7 +53,7 @@ void FEMMass::init() {
   if (state() != ComponentState::valid) return;
   auto fail = [&](const std::string& m) {
     msg_error(m);
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
   };
   if (!require_vec3_state(*this) || !bind_node_topology(*this, topology, "link one with topology=\"@...\"")) return;
   MechanicalState& s = *mstate;
@@ -62,7 +62,7 @@ void FEMMass::init() {
     return fail("No nodal mass density component found (add a NodalMassDensity or link nodalMassDensity=\"@...\")");
 
   const std::size_t n = s.size();
-  const std::span<const Vec3> X0 = as_vec3(s.vec(kRestPosition));
+  const std::span<const Vec3> X0 = as_vec3(s.read(kRestPosition));
   const NodalMassDensity& rho = *nodal_mass_density;
 
   struct Triplet {
@@ -137,7 +137,7 @@ void FEMMass::init() {
 void FEMMass::add_force(const MechParams& p) {
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
-  const std::span<Vec3> f = as_vec3(s.vec(p.f));
+  const std::span<Vec3> f = as_vec3(s.write(p.f));
   const Vec3 g = node()->gravity.value();
   const std::size_t n = row_begin_.size() - 1;
   for (std::size_t r = 0; r < n; ++r)
@@ -151,7 +151,7 @@ void FEMMass::add_force(const MechParams& p) {
 
 std::optional<double> FEMMass::potential_energy() const {
   if (state() != ComponentState::valid) return std::nullopt;
-  const std::span<const Vec3> x = as_vec3(mstate->vec(kPosition));
+  const std::span<const Vec3> x = as_vec3(mstate->read(kPosition));
   const Vec3 g = node()->gravity.value();
   double e = 0;
   for (std::size_t r = 0; r + 1 < row_begin_.size(); ++r)
@@ -162,8 +162,8 @@ std::optional<double> FEMMass::potential_energy() const {
 void FEMMass::add_mdx(const MechParams&, int res, int dx, double factor) {
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
-  const std::span<Vec3> out = as_vec3(s.vec(res));
-  const std::span<const Vec3> d = as_vec3(s.vec(dx));
+  const std::span<Vec3> out = as_vec3(s.write(res));
+  const std::span<const Vec3> d = as_vec3(s.read(dx));
   const std::size_t n = row_begin_.size() - 1;
   for (std::size_t r = 0; r < n; ++r)
     for (std::size_t k = row_begin_[r]; k < row_begin_[r + 1]; ++k) {
@@ -185,7 +185,7 @@ void FEMMass::acc_from_f(const MechParams&, int, int) {
 void FEMMass::add_gravity_to_v(int v, double dt) {
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
-  const std::span<Vec3> vv = as_vec3(s.vec(v));
+  const std::span<Vec3> vv = as_vec3(s.write(v));
   const Vec3 dv = node()->gravity.value() * dt;
   for (Vec3& x : vv) x += dv;
 }

@@ -86,7 +86,7 @@ bool one_nonnegative_mass_per_point(const std::vector<double>& vertex_mass, std:
 }
 
 void add_gravity_velocity(MechanicalState& s, int v, const Vec3& g, double dt) {
-  std::vector<double>& vv = s.vec(v);
+  std::vector<double>& vv = s.write(v);
   const int w = s.info().deriv_width;
   double hg[3];
   for (int c = 0; c < w; ++c) hg[c] = g[c] * dt;

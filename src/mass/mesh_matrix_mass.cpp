@@ -24,7 +24,7 @@ constexpr int kHexEdges[12][2] = {{0, 1}, {0, 3}, {0, 4}, {1, 2}, {1, 5}, {2, 3}
 double MeshMatrixMass::compute_mass(const std::vector<double>& rho) {
   MechanicalState& s = *mstate;
   MechanicalState& g = *geometry_state;
-  const std::vector<double>& X = g.vec(compute_mass_on_rest.get() ? kRestPosition : kPosition);
+  const std::vector<double>& X = g.read(compute_mass_on_rest.get() ? kRestPosition : kPosition);
   const int w = g.info().coord_width;
   const MeshTopologyBase& t = *topology;
   std::vector<double> vm(s.size(), 0.0), em(edges_.size(), 0.0);
@@ -98,7 +98,7 @@ void MeshMatrixMass::init() {
   for (const Edge& e : edges_)
     if (e[0] >= s.size() || e[1] >= s.size()) {
       msg_error("an edge of " + t.describe() + " uses a point out of range");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
   switch (k) {
@@ -139,7 +139,7 @@ void MeshMatrixMass::init() {
       }
     }
     if (!ok) {
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
   }
@@ -237,7 +237,7 @@ void MeshMatrixMass::init() {
 void MeshMatrixMass::add_force(const MechParams& p) {
   if (separate_gravity.value()) return;
   MechanicalState& s = *mstate;
-  std::vector<double>& f = s.vec(p.f);
+  std::vector<double>& f = s.write(p.f);
   const Vec3 g = node()->gravity.value();
   const int w = s.info().deriv_width;
   const auto& m = vertex_mass.value();
@@ -248,8 +248,8 @@ void MeshMatrixMass::add_force(const MechParams& p) {
 
 void MeshMatrixMass::add_mdx(const MechParams&, int res, int dx, double factor) {
   MechanicalState& s = *mstate;
-  std::vector<double>& r = s.vec(res);
-  const std::vector<double>& d = s.vec(dx);
+  std::vector<double>& r = s.write(res);
+  const std::vector<double>& d = s.read(dx);
   const int w = s.info().deriv_width;
   const auto& m = vertex_mass.value();
   const std::size_t n = std::min(m.size(), s.size());
@@ -275,8 +275,8 @@ void MeshMatrixMass::acc_from_f(const MechParams&, int a, int f) {
     return;
   }
   MechanicalState& s = *mstate;
-  std::vector<double>& av = s.vec(a);
-  const std::vector<double>& fv = s.vec(f);
+  std::vector<double>& av = s.write(a);
+  const std::vector<double>& fv = s.read(f);
   const int w = s.info().deriv_width;
   const auto& m = vertex_mass.value();
   for (std::size_t i = 0; i < m.size(); ++i)

@@ -11,9 +11,9 @@ namespace sinew {
 class MeshMatrixMass final : public Mass {
  public:
   Field<std::vector<double>> mass_density{
-      this, "massDensity", {}, "mass density (kg/m³): one value, or one per element", "Mass"};
-  Field<double> total_mass{this, "totalMass", 1.0, "total mass of the object (kg); wins over the others", "Mass"};
-  Field<std::vector<double>> vertex_mass{this, "vertexMass", {}, "diagonal mass of each vertex (internal)", "Mass"};
+      this, "massDensity", {}, "mass density: one value, or one per element", "Mass", "mass/length³"};
+  Field<double> total_mass{this, "totalMass", 1.0, "total mass of the object; wins over the others", "Mass", "mass"};
+  Field<std::vector<double>> vertex_mass{this, "vertexMass", {}, "diagonal mass of each vertex (internal)", "Mass", "mass"};
   Field<std::vector<double>> edge_mass{this, "edgeMass", {}, "off-diagonal mass of each edge (internal)", "Mass"};
   Field<bool> compute_mass_on_rest{this, "computeMassOnRest", false,
                                    "compute the element measures on the rest positions (else current positions)",

@@ -25,7 +25,7 @@ void UniformMass::init() {
     if (i >= n_dofs) {
       msg_error("index " + std::to_string(i) + " is out of range (the state has " + std::to_string(n_dofs) +
                 " DoFs)");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
   const double n = static_cast<double>(active_.size());
@@ -38,17 +38,17 @@ void UniformMass::init() {
 
   if (!filename.value().empty()) {
     msg_error("mass files (filename=) are not supported yet");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (total_mass.is_set() && total_mass.value() < 0) {
     msg_error("totalMass must not be negative");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (vertex_mass.is_set() && !vm.empty() && vm[0] < 0) {
     msg_error("vertexMass must not be negative");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (total_mass.is_set()) {
@@ -59,7 +59,7 @@ void UniformMass::init() {
     total_mass.set(m_ * n);
   } else {
     msg_error("neither totalMass nor vertexMass is set: the object has no mass");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (m_ == 0 && n > 0)
@@ -71,7 +71,7 @@ void UniformMass::init() {
 void UniformMass::add_force(const MechParams& p) {
   if (separate_gravity.value()) return;
   MechanicalState& s = *mstate;
-  std::vector<double>& f = s.vec(p.f);
+  std::vector<double>& f = s.write(p.f);
   const Vec3 g = node()->gravity.value();
   const int w = s.info().deriv_width;
   const int dim = std::min(3, s.info().spatial_dim);
@@ -83,7 +83,7 @@ void UniformMass::add_force(const MechParams& p) {
 std::optional<double> UniformMass::potential_energy() const {
   if (state() != ComponentState::valid) return std::nullopt;
   const MechanicalState& s = *mstate;
-  const std::vector<double>& x = mstate->vec(kPosition);
+  const std::vector<double>& x = mstate->read(kPosition);
   const Vec3 g = node()->gravity.value();
   const int w = s.info().coord_width;
   const int dim = std::min(3, s.info().spatial_dim);
@@ -95,8 +95,8 @@ std::optional<double> UniformMass::potential_energy() const {
 
 void UniformMass::add_mdx(const MechParams&, int res, int dx, double factor) {
   MechanicalState& s = *mstate;
-  std::vector<double>& r = s.vec(res);
-  const std::vector<double>& d = s.vec(dx);
+  std::vector<double>& r = s.write(res);
+  const std::vector<double>& d = s.read(dx);
   const int w = s.info().deriv_width;
   if (s.state_type() == StateType::rigid3) {
     for (unsigned i : active_) {
@@ -114,8 +114,8 @@ void UniformMass::add_mdx(const MechParams&, int res, int dx, double factor) {
 
 void UniformMass::acc_from_f(const MechParams&, int a, int f) {
   MechanicalState& s = *mstate;
-  std::vector<double>& av = s.vec(a);
-  const std::vector<double>& fv = s.vec(f);
+  std::vector<double>& av = s.write(a);
+  const std::vector<double>& fv = s.read(f);
   const int w = s.info().deriv_width;
   if (s.state_type() == StateType::rigid3) {
     for (unsigned i : active_) {
@@ -132,7 +132,7 @@ void UniformMass::acc_from_f(const MechParams&, int a, int f) {
 
 void UniformMass::add_gravity_to_v(int v, double dt) {
   MechanicalState& s = *mstate;
-  std::vector<double>& vv = s.vec(v);
+  std::vector<double>& vv = s.write(v);
   const Vec3 dv = node()->gravity.value() * dt;
   const int w = s.info().deriv_width;
   const int dim = std::min(3, s.info().spatial_dim);

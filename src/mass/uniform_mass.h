@@ -13,8 +13,8 @@ namespace sinew {
 class UniformMass final : public Mass {
  public:
   Field<std::vector<double>> vertex_mass{
-      this, "vertexMass", {1.0}, "mass of each DoF (kg); Rigid3d: mass volume I00 I01 … I22", "Mass"};
-  Field<double> total_mass{this, "totalMass", 1.0, "mass of the whole object (kg); wins over vertexMass", "Mass"};
+      this, "vertexMass", {1.0}, "mass of each DoF; Rigid3d: mass volume I00 I01 … I22", "Mass", "mass"};
+  Field<double> total_mass{this, "totalMass", 1.0, "mass of the whole object; wins over vertexMass", "Mass", "mass"};
   Field<std::vector<unsigned>> indices{this, "indices", {}, "DoFs having a mass (default: all)", "Mass"};
   Field<VecNi<2>> local_range{this, "localRange", VecNi<2>(-1, -1), "restrict to DoFs [first, last]", "Mass"};
   Field<bool> preserve_total_mass{this, "preserveTotalMass", false, "keep totalMass when DoFs change", "Mass"};

@@ -40,7 +40,7 @@ class IndexedProjection : public ProjectiveConstraint {
  protected:
   // v_i ← P·v_i for listed DoFs, rows summed left to right as a sparse product does.
   void project(int id, const Mat3& P) {
-    auto v = as_vec3(mstate->vec(id));
+    auto v = as_vec3(mstate->write(id));
     for (unsigned i : active_) {
       const Vec3 in = v[i];
       for (int r = 0; r < 3; ++r) v[i][r] = P(r, 0) * in[0] + P(r, 1) * in[1] + P(r, 2) * in[2];
@@ -55,7 +55,7 @@ class PointProjectiveConstraint final : public IndexedProjection {
   Field<bool> fix_all{this, "fixAll", false, "project every DoF", "Constraint"};
 
   void project_response(int dx) override {
-    auto v = as_vec3(mstate->vec(dx));
+    auto v = as_vec3(mstate->write(dx));
     if (fix_all.value()) {
       for (Vec3& x : v) x.setZero();
     } else {
@@ -64,7 +64,7 @@ class PointProjectiveConstraint final : public IndexedProjection {
   }
   void project_velocity(int v, double) override { project_response(v); }
   void project_position(int x, double) override {
-    auto p = as_vec3(mstate->vec(x));
+    auto p = as_vec3(mstate->write(x));
     if (fix_all.value()) {
       for (Vec3& q : p) q = point.value();
     } else {
@@ -99,7 +99,7 @@ class LineProjectiveConstraint final : public IndexedProjection {
   void project_response(int dx) override { project(dx, P_); }
   void project_velocity(int v, double) override { project(v, P_); }
   void project_position(int x, double) override {
-    auto p = as_vec3(mstate->vec(x));
+    auto p = as_vec3(mstate->write(x));
     const Vec3 n = direction.value(), o = origin.value();
     for (unsigned i : active_) {
       const Vec3 d = p[i] - o;
@@ -127,7 +127,7 @@ class PlaneProjectiveConstraint final : public IndexedProjection {
   void project_response(int dx) override { project(dx, P_); }
   void project_velocity(int v, double) override { project(v, P_); }
   void project_position(int x, double) override {
-    auto p = as_vec3(mstate->vec(x));
+    auto p = as_vec3(mstate->write(x));
     const Vec3 n = normal.value(), o = origin.value();
     for (unsigned i : active_) {
       const Vec3 d = p[i] - o;

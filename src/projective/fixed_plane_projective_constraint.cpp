@@ -34,7 +34,7 @@ void FixedPlaneProjectiveConstraint::init() {
     msg_warning("dmin (" + std::to_string(lo) + ") is greater than dmax (" + std::to_string(hi) +
                 "): no point lies between the planes");
   if (lo != hi) {
-    const std::vector<double>& x = mstate->vec(kPosition);
+    const std::vector<double>& x = mstate->read(kPosition);
     const std::size_t cw = static_cast<std::size_t>(ti.coord_width);
     std::size_t added = 0;
     for (std::size_t i = 0; i < mstate->size(); ++i) {
@@ -53,7 +53,7 @@ void FixedPlaneProjectiveConstraint::init() {
 }
 
 void FixedPlaneProjectiveConstraint::project_response(int dx) {
-  std::vector<double>& v = mstate->vec(dx);
+  std::vector<double>& v = mstate->write(dx);
   const std::size_t w = static_cast<std::size_t>(mstate->info().deriv_width);
   for (unsigned i : active_) {
     double* p = v.data() + i * w;

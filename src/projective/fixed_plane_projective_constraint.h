@@ -28,8 +28,8 @@ class FixedPlaneProjectiveConstraint final : public ProjectiveConstraint {
  public:
   Field<std::vector<double>> direction{this, "direction", {}, "normal direction of the plane (default: 0)",
                                        "Constraint"};
-  Field<double> dmin{this, "dmin", 0.0, "minimum plane distance from the origin", "Constraint"};
-  Field<double> dmax{this, "dmax", 0.0, "maximum plane distance from the origin", "Constraint"};
+  Field<double> dmin{this, "dmin", 0.0, "minimum plane distance from the origin", "Constraint", "length"};
+  Field<double> dmax{this, "dmax", 0.0, "maximum plane distance from the origin", "Constraint", "length"};
   Field<std::vector<unsigned>> indices{this, "indices", {}, "indices of the fixed points", "Constraint"};
   Link<MeshTopologyBase> topology{this, "topology", "topology the indices refer to"};
 

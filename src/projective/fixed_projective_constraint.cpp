@@ -16,7 +16,7 @@ void FixedProjectiveConstraint::init() {
 }
 
 void FixedProjectiveConstraint::zero(int id) {
-  std::vector<double>& d = mstate->vec(id);
+  std::vector<double>& d = mstate->write(id);
   const int w = mstate->info().deriv_width;
   if (fix_all.value()) {
     std::fill(d.begin(), d.end(), 0.0);

@@ -20,7 +20,7 @@ class LinearVelocityProjectiveConstraint final : public ProjectiveConstraint {
   Field<std::vector<double>> key_times{this, "keyTimes", {}, "times of the key velocities (ascending)",
                                        "Constraint"};
   Field<std::vector<double>> velocities{this, "velocities", {}, "one velocity (derivative) per key time",
-                                        "Constraint"};
+                                        "Constraint", "length/time"};
   Field<std::vector<unsigned>> coordinates{this, "coordinates", {},
                                            "driven components (default: all)", "Constraint"};
   Field<bool> continue_after_end{this, "continueAfterEnd", false, "keep the last velocity after the last key",
@@ -35,13 +35,13 @@ class LinearVelocityProjectiveConstraint final : public ProjectiveConstraint {
     if (velocities.get().size() != key_times.get().size() * static_cast<std::size_t>(w_)) {
       msg_error("velocities must hold one " + std::to_string(w_) + "-component velocity per key time (" +
                 std::to_string(key_times.get().size()) + " key times)");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
     for (unsigned i : indices.get())
       if (i >= mstate->size()) {
         msg_error("index " + std::to_string(i) + " is out of range");
-        state_ = ComponentState::invalid;
+        set_state(ComponentState::invalid);
         return;
       }
     x0_.clear();
@@ -60,7 +60,7 @@ class LinearVelocityProjectiveConstraint final : public ProjectiveConstraint {
   void project_response(int dx) override {
     find_key_times();
     if ((finished_ || continue_after_end.value()) && next_t_ != prev_t_) {
-      std::vector<double>& d = mstate->vec(dx);
+      std::vector<double>& d = mstate->write(dx);
       for (unsigned i : indices.get())
         for (int c = 0; c < w_; ++c) d[i * w_ + c] = 0.0;
     }
@@ -72,7 +72,7 @@ class LinearVelocityProjectiveConstraint final : public ProjectiveConstraint {
     const double t = node()->time.value();
     std::vector<double> v(w_);
     for (int c = 0; c < w_; ++c) v[c] = (next_v_[c] - prev_v_[c]) * ((t - prev_t_) / (next_t_ - prev_t_)) + prev_v_[c];
-    std::vector<double>& d = mstate->vec(vid);
+    std::vector<double>& d = mstate->write(vid);
     const auto& coords = coordinates.get();
     for (unsigned i : indices.get()) {
       if (coords.empty())
@@ -84,7 +84,7 @@ class LinearVelocityProjectiveConstraint final : public ProjectiveConstraint {
   }
 
   void project_position(int xid, double) override {
-    std::vector<double>& x = mstate->vec(xid);
+    std::vector<double>& x = mstate->write(xid);
     if (x0_.empty()) {  // remember the start positions at the first call
       x0_.assign(x.size(), 0.0);
       xp_.assign(x.size(), 0.0);

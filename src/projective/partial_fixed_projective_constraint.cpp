@@ -55,7 +55,7 @@ class PartialFixedProjectiveConstraint final : public ProjectiveConstraint {
 
  private:
   void zero(int id) {
-    std::vector<double>& d = mstate->vec(id);
+    std::vector<double>& d = mstate->write(id);
     const std::size_t w = mask_.size();
     auto clear = [&](std::size_t i) {
       for (std::size_t c = 0; c < w; ++c)

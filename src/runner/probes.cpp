@@ -52,15 +52,15 @@ std::string topology_file_suffix(const TopologyTarget& t) {
 
 void StateWriterProbe::handle_event(Event& e) {
   if (e.kind != Event::Kind::animate_begin) return;
-  const auto& x = state_->vec(kPosition);
-  const auto& v = state_->vec(kVelocity);
+  const auto& x = state_->read(kPosition);
+  const auto& v = state_->read(kVelocity);
   regression::append_state_block(text_, node()->time.value(), x.data(), x.size(), v.data(), v.size());
 }
 
 void StateCompareProbe::handle_event(Event& e) {
   if (e.kind != Event::Kind::animate_begin) return;
-  const auto& x = state_->vec(kPosition);
-  const auto& v = state_->vec(kVelocity);
+  const auto& x = state_->read(kPosition);
+  const auto& v = state_->read(kVelocity);
   comparer_.on_step_begin(node()->time.value(), x.data(), x.size(), v.data(), v.size(), state_->size());
 }
 

@@ -84,9 +84,10 @@ void MechanicalObject::resize(std::size_t n) {
   size_field.set(static_cast<int>(n));
 }
 
-std::vector<double>& MechanicalObject::vec(int id) {
+std::vector<double>& MechanicalObject::storage(int id) {
   if (Field<FlatVec>* f = standard(id)) {
-    std::vector<double>& d = f->edit().data;
+    f->get();  // follows a data link (position="@loader.position") like every read
+    std::vector<double>& d = f->raw().data;
     // Vectors other than externalForce always span all DOFs (allocated on demand).
     if (id != kExternalForce && d.size() != size_ * f->value().width) resize_vec(d, is_coord_vec(id), size_);
     return d;
@@ -101,14 +102,29 @@ std::vector<double>& MechanicalObject::vec(int id) {
   return it->second;
 }
 
+const std::vector<double>& MechanicalObject::read(int id) const {
+  // Sizing a vector on first use is not a change of value (an absent vector
+  // reads as zeros), so a read may allocate without being a write.
+  return const_cast<MechanicalObject*>(this)->storage(id);
+}
+
+std::vector<double>& MechanicalObject::write(int id) {
+  std::vector<double>& d = storage(id);
+  if (Field<FlatVec>* f = standard(id)) {
+    f->mark_set();
+    f->touch();
+  }
+  return d;
+}
+
 void MechanicalObject::touch(int id) {
   if (Field<FlatVec>* f = standard(id)) f->touch();
 }
 
 void MechanicalObject::add_deriv_to_coord(int x_out, int x_in, int v, double h) {
-  std::vector<double>& vv = vec(v);
-  const std::vector<double>* xi = &vec(x_in);
-  std::vector<double>& xo = vec(x_out);
+  const std::vector<double>& vv = read(v);
+  const std::vector<double>* xi = &read(x_in);
+  std::vector<double>& xo = write(x_out);
   if (type_ == StateType::rigid3) {
     for (std::size_t i = 0; i < size_; ++i) rigid3_add_deriv(&(*xi)[i * 7], &vv[i * 6], h, &xo[i * 7]);
   } else {
@@ -267,10 +283,11 @@ void MechanicalObject::store_reset_state() {
 }
 
 void MechanicalObject::reset() {
-  std::fill(vec(kForce).begin(), vec(kForce).end(), 0.0);
+  std::vector<double>& f = write(kForce);
+  std::fill(f.begin(), f.end(), 0.0);
   if (!reset_position.value().data.empty()) position.edit().data = reset_position.value().data;
   if (!reset_velocity.value().data.empty()) velocity.edit().data = reset_velocity.value().data;
-  else std::fill(vec(kVelocity).begin(), vec(kVelocity).end(), 0.0);
+  else std::fill(write(kVelocity).begin(), write(kVelocity).end(), 0.0);
 }
 
 void register_mechanical_object(Registry& r) {

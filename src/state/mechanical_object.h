@@ -19,14 +19,14 @@ class MechanicalObject final : public MechanicalState {
 
   Field<FlatVec> position, velocity, force, external_force, rest_position, deriv_x, free_position, free_velocity,
       reset_position, reset_velocity;
-  Field<Vec3> translation{this, "translation", Vec3::Zero(), "translation applied at init", "Transformation"};
+  Field<Vec3> translation{this, "translation", Vec3::Zero(), "translation applied at init", "Transformation", "length"};
   Field<Vec3> rotation{this, "rotation", Vec3::Zero(), "rotation applied at init (Euler angles, degrees)",
-                       "Transformation"};
+                       "Transformation", "degrees"};
   Field<Vec3> scale3d{this, "scale3d", Vec3::Ones(), "scale applied at init", "Transformation"};
   Field<Vec3> translation2{this, "translation2", Vec3::Zero(), "translation applied after rest_position is stored",
-                           "Transformation"};
+                           "Transformation", "length"};
   Field<Vec3> rotation2{this, "rotation2", Vec3::Zero(), "rotation applied after rest_position is stored (degrees)",
-                        "Transformation"};
+                        "Transformation", "degrees"};
   Field<double> rest_scale{this, "restScale", 1.0, "rest_position = restScale · position when derived", "Transformation"};
   Field<bool> use_topology{this, "useTopology", true, "take initial positions from the node's mesh topology",
                            "Topology"};
@@ -47,7 +47,8 @@ class MechanicalObject final : public MechanicalState {
   StateType state_type() const override { return type_; }
   std::size_t size() const override { return size_; }
   void resize(std::size_t n) override;
-  std::vector<double>& vec(int id) override;
+  const std::vector<double>& read(int id) const override;
+  std::vector<double>& write(int id) override;
   void touch(int id) override;
   void add_deriv_to_coord(int x_out, int x_in, int v, double h) override;
   void end_integration() override;
@@ -60,6 +61,7 @@ class MechanicalObject final : public MechanicalState {
 
  private:
   Field<FlatVec>* standard(int id);
+  std::vector<double>& storage(int id);  // sized to the state, no version change
   void resize_vec(std::vector<double>& v, bool coord, std::size_t n) const;
   void apply_transform(std::vector<double>& x, const Vec3& scale, const Vec3& rot_deg, const Vec3& trans) const;
 

@@ -32,7 +32,7 @@ void CubeTopology::init() {
   if (nx.value() < 1 || ny.value() < 1 || nz.value() < 1) {
     msg_error("nx, ny and nz must be at least 1 (got " + std::to_string(nx.value()) + " " +
               std::to_string(ny.value()) + " " + std::to_string(nz.value()) + ")");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   regenerate();

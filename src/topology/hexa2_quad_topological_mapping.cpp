@@ -10,7 +10,7 @@ void Hexa2QuadTopologicalMapping::init() {
   if (!find_from_output<QuadSetTopologyModifier>()) {
     msg_error("No QuadSetTopologyModifier found in the output topology node '" + output->node()->name.value() +
               "'.");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   const std::vector<Quad> quads = input->quads();

@@ -148,7 +148,7 @@ bool MeshContainer::load_file(const std::string& file) {
   else err = "this file format is not supported";
   if (!mesh) {
     msg_error("Unable to load Mesh \"" + file + "\": " + err);
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return false;
   }
   clear_topology();
@@ -176,6 +176,18 @@ bool MeshContainer::load_file(const std::string& file) {
   }
   set_nb_points(position.value().size());
   return true;
+}
+
+std::uint64_t MeshContainer::elements_version(Elements e) const {
+  // Read through the accessor first: a list derived or pulled on read moves its version then.
+  switch (e) {
+    case Elements::edges: return edges(), edges_f.version();
+    case Elements::triangles: return triangles(), triangles_f.version();
+    case Elements::quads: return quads(), quads_f.version();
+    case Elements::tetrahedra: return tetrahedra(), tetrahedra_f.version();
+    case Elements::hexahedra: return hexahedra(), hexahedra_f.version();
+  }
+  return 0;
 }
 
 std::size_t MeshContainer::nb_points() const {

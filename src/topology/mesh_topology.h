@@ -57,7 +57,7 @@ class MeshContainer : public MeshTopologyBase {
   MeshContainer();
   ~MeshContainer() override;
 
-  Field<std::vector<Vec3>> position{this, "position", {}, "point coordinates", "Topology"};
+  Field<std::vector<Vec3>> position{this, "position", {}, "point coordinates", "Topology", "length"};
   Field<std::vector<Edge>> edges_f{this, "edges", {}, "edges (vertex index pairs)", "Topology"};
   Field<std::vector<Triangle>> triangles_f{this, "triangles", {}, "triangles (3 vertex indices each)", "Topology"};
   Field<std::vector<Quad>> quads_f{this, "quads", {}, "quads (4 vertex indices each)", "Topology"};
@@ -73,6 +73,7 @@ class MeshContainer : public MeshTopologyBase {
   const std::vector<Quad>& quads() const override { return ensure(), quads_f.get(); }
   const std::vector<Tetra>& tetrahedra() const override { return ensure(), tetrahedra_f.get(); }
   const std::vector<Hexa>& hexahedra() const override { return ensure(), hexahedra_f.get(); }
+  std::uint64_t elements_version(Elements e) const override;
 
   // Neighbourhood queries (see MeshTopologyBase).
   const std::vector<IndexList>& edges_around_vertex() const override;

@@ -12,7 +12,7 @@ void PointSetGeometryAlgorithms::init() {
   state_ptr_ = node() ? node()->get_mechanical_state() : nullptr;
   if (!topology) {
     msg_error("no topology found in this node or its ancestors");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (!state_ptr_) msg_error("Unable to get a valid state from the context");

@@ -17,7 +17,7 @@ void PointSetTopologyModifier::init() {
       }
   if (!container_) {
     msg_error(std::string("no ") + container_kind() + " found in this node or its ancestors");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
   }
 }
 

@@ -10,7 +10,7 @@ void Quad2TriangleTopologicalMapping::init() {
   if (!find_from_output<TriangleSetTopologyModifier>()) {
     msg_error("No TriangleSetTopologyModifier found in the output topology node '" + output->node()->name.value() +
               "'.");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   const std::vector<Quad> quads = input->quads();
@@ -23,12 +23,12 @@ void Quad2TriangleTopologicalMapping::init() {
   const int scale = nx == 0 ? ny : nx;
   if (nx == 0 && ny == 0) {
     msg_error("Input topology is only 1D, this topology can't be mapped into a triangulation.");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (scale <= 0) {
     msg_error("the input grid has no cell along x or y");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   const unsigned s = static_cast<unsigned>(scale);

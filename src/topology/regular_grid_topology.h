@@ -15,7 +15,7 @@ class RegularGridTopology final : public MeshContainer {
   Field<Vec3> min{this, "min", Vec3::Zero(), "lower corner", "Grid"};
   Field<Vec3> max{this, "max", Vec3::Ones(), "upper corner", "Grid"};
   Field<Vec3> p0{this, "p0", Vec3::Zero(), "position of point 0 (default: min)", "Grid"};
-  Field<double> cell_width{this, "cellWidth", 0.0, "if > 0, n is computed from the box size and this width", "Grid"};
+  Field<double> cell_width{this, "cellWidth", 0.0, "if > 0, n is computed from the box size and this width", "Grid", "length"};
   Field<bool> compute_hexa_list{this, "computeHexaList", true, "generate the hexahedra", "Grid"};
   Field<bool> compute_quad_list{this, "computeQuadList", true, "generate the quads", "Grid"};
   Field<bool> compute_triangle_list{this, "computeTriangleList", true, "generate two triangles per quad", "Grid"};

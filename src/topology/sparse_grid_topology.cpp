@@ -203,7 +203,7 @@ void SparseGridTopology::init() {
   nb_points();  // builds the grid (lazily, so that a state initialised earlier already saw it)
   if (build_failed_ || hexahedra().empty()) {
     if (!build_failed_) msg_error("the sparse grid has no cell");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
   }
 }
 

@@ -19,7 +19,7 @@ class SparseGridTopology : public MeshTopology {
   Field<VecNi<3>> n{this, "n", VecNi<3>(2, 2, 2), "grid resolution", "Grid"};
   Field<Vec3> min{this, "min", Vec3::Zero(), "lower corner of the box", "Grid"};
   Field<Vec3> max{this, "max", Vec3::Zero(), "upper corner of the box", "Grid"};
-  Field<double> cell_width{this, "cellWidth", 0.0, "if > 0, cell size; n is derived from it", "Grid"};
+  Field<double> cell_width{this, "cellWidth", 0.0, "if > 0, cell size; n is derived from it", "Grid", "length"};
   Field<int> nb_virtual_finer_levels{this, "nbVirtualFinerLevels", 0,
                                      "number of finer hidden grid levels used to compute the coarse cells", "Grid"};
   Field<VecNi<3>> data_resolution{this, "dataResolution", VecNi<3>(0, 0, 0), "voxel file resolution", "Grid"};

@@ -40,12 +40,12 @@ const char* element_type_name(ElementType t) {
 bool TopologicalMapping::check_links(bool check_types, ElementType in, ElementType out) {
   if (!input) {
     msg_error("no input topology (set input=\"@...\")");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return false;
   }
   if (!output) {
     msg_error("No target topology container found.");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return false;
   }
   if (check_types) {
@@ -53,14 +53,14 @@ bool TopologicalMapping::check_links(bool check_types, ElementType in, ElementTy
     if (ti != in) {
       msg_error("The type of the input topology '" + input->describe() + "' (" + element_type_name(ti) +
                 ") does not correspond to a valid '" + element_type_name(in) + "' topology.");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return false;
     }
     const ElementType to = element_type(*output);
     if (to != out) {
       msg_error("The type of the output topology '" + output->describe() + "' (" + element_type_name(to) +
                 ") does not correspond to a valid '" + element_type_name(out) + "' topology.");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return false;
     }
   }

@@ -9,7 +9,7 @@ void Triangle2EdgeTopologicalMapping::init() {
   if (!check_links(true, ElementType::triangle, ElementType::edge)) return;
   if (!find_from_output<EdgeSetTopologyModifier>()) {
     msg_error("No EdgeSetTopologyModifier found in the Edge topology Node.");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   const std::vector<Edge> edges = input->edges();

@@ -11,7 +11,7 @@ void TriangleSetGeometryAlgorithms::init() {
   if (recompute_triangles_orientation.value()) {
     // Reorienting triangles is a topology change; not available yet.
     msg_error("recomputeTrianglesOrientation is not supported yet");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
   }
 }
 

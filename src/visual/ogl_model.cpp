@@ -145,7 +145,7 @@ void OglModel::from_topology() {
     } else if (t->node()) {
       if (MechanicalState* s = t->node()->get_mechanical_state()) {
         const int w = s->info().coord_width, dim = std::min(3, s->info().spatial_dim);
-        const std::vector<double>& sx = s->vec(kPosition);
+        const std::vector<double>& sx = s->read(kPosition);
         const std::size_t n = s->size();
         x.assign(n * 3, 0.0);
         for (std::size_t i = 0; i < n; ++i)
@@ -160,7 +160,7 @@ void OglModel::from_topology() {
 void OglModel::init() {
   if (!filename.get().empty()) {
     if (!load_file()) {
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
   } else if (position.get().data.empty() || (!triangles.is_set() && !quads.is_set())) {

@@ -49,9 +49,9 @@ class OglModel : public VisualState {
   Field<std::vector<unsigned>> vert_norm_idx{this, "vertNormIdx", {}, "normal index of each render vertex", "Vector"};
   Field<std::string> filename{this, "filename", "", "mesh file", "Visual"};
   Field<std::string> texturename{this, "texturename", "", "texture image file", "Visual"};
-  Field<Vec3> translation{this, "translation", Vec3::Zero(), "translation applied at load", "Transformation"};
+  Field<Vec3> translation{this, "translation", Vec3::Zero(), "translation applied at load", "Transformation", "length"};
   Field<Vec3> rotation{this, "rotation", Vec3::Zero(), "rotation applied at load (Euler angles, degrees)",
-                       "Transformation"};
+                       "Transformation", "degrees"};
   Field<Vec3> scale3d{this, "scale3d", Vec3::Ones(), "scale applied at load", "Transformation"};
   Field<Vec2> scale_tex{this, "scaleTex", Vec2(1, 1), "texture coordinate scale", "Visual"};
   Field<Vec2> translation_tex{this, "translationTex", Vec2(0, 0), "texture coordinate offset", "Visual"};

@@ -83,30 +83,30 @@ class StateSet {
 
   Coords coords(int id = kPosition) const {
     Coords x;
-    for (MechanicalState* s : states_) x.push_back(s->vec(id));
+    for (MechanicalState* s : states_) x.push_back(s->read(id));
     return x;
   }
   void set_coords(const Coords& x, int id = kPosition) const {
-    for (std::size_t k = 0; k < states_.size(); ++k) states_[k]->vec(id) = x[k];
+    for (std::size_t k = 0; k < states_.size(); ++k) states_[k]->write(id) = x[k];
   }
   std::vector<double> get(int id) const {
     std::vector<double> v;
     v.reserve(size_);
     for (MechanicalState* s : states_) {
-      const auto& a = s->vec(id);
+      const auto& a = s->read(id);
       v.insert(v.end(), a.begin(), a.end());
     }
     return v;
   }
   void set(int id, const std::vector<double>& v) const {
     for (std::size_t k = 0; k < states_.size(); ++k) {
-      auto& a = states_[k]->vec(id);
+      auto& a = states_[k]->write(id);
       std::copy(v.begin() + static_cast<long>(offset_[k]), v.begin() + static_cast<long>(offset_[k] + a.size()),
                 a.begin());
     }
   }
   void fill(int id, double value = 0.0) const {
-    for (MechanicalState* s : states_) std::fill(s->vec(id).begin(), s->vec(id).end(), value);
+    for (MechanicalState* s : states_) std::fill(s->write(id).begin(), s->write(id).end(), value);
   }
 
   // Whether scalar i of the derivative vector is a rotation (Rigid3d ω, Rigid2d θ̇).
@@ -173,7 +173,7 @@ class StateSet {
     Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
     for (MechanicalState* s : states_) {
       const int w = s->info().coord_width, d = std::min(3, std::min(w, s->info().spatial_dim));
-      const auto& x = s->vec(kPosition);
+      const auto& x = s->read(kPosition);
       for (std::size_t b = 0; b + static_cast<std::size_t>(w) <= x.size(); b += static_cast<std::size_t>(w))
         for (int c = 0; c < d; ++c) {
           lo[c] = std::min(lo[c], x[b + c]);

@@ -193,7 +193,7 @@ class MappingBattery : public ::testing::TestWithParam<MappingCase> {
   std::vector<double> mapped_at(const std::vector<double>& u, double h) const {
     in_.move(x_, u, h);
     map_->apply(kPosition);
-    return map_->output()->vec(kPosition);
+    return map_->output()->read(kPosition);
   }
 
   scene::LoadedScene scene_;

@@ -278,3 +278,30 @@ TEST(Engine, FieldLinkedToAnOutputRunsTheEngine) {
   EXPECT_EQ(consumer.get(), 42);
   EXPECT_EQ(e.runs, 2);
 }
+
+TEST(Field, UnitSlotDefaultsToNone) {
+  Owner o;
+  Field<double> k{&o, "stiffness", 1.0, "spring stiffness", "Spring", "force/length"};
+  Field<int> n{&o, "iterations", 25, "maximum iterations"};
+  EXPECT_STREQ(k.unit(), "force/length");
+  EXPECT_STREQ(n.unit(), "");
+  EXPECT_STREQ(o.find_field("stiffness")->unit(), "force/length");
+}
+
+// The change hook sees every write, and only writes.
+TEST(Field, ChangeHookFollowsWritesNotReads) {
+  Owner o;
+  static int calls;
+  calls = 0;
+  Field<int> a{&o, "a", 1, "watched"};
+  a.set_change_hook([](BaseField&) { ++calls; });
+  (void)a.get();
+  (void)a.value();
+  EXPECT_EQ(calls, 0);
+  a.set(2);
+  a.edit() = 3;
+  a.read("4");
+  a.touch();
+  EXPECT_EQ(calls, 4);
+  EXPECT_EQ(a.value(), 4);
+}

@@ -21,7 +21,8 @@ class TestState final : public MechanicalState {
   StateType state_type() const override { return StateType::vec3; }
   std::size_t size() const override { return 0; }
   void resize(std::size_t) override {}
-  std::vector<double>& vec(int) override { return data_; }
+  const std::vector<double>& read(int) const override { return data_; }
+  std::vector<double>& write(int) override { return data_; }
   void touch(int) override {}
   void add_deriv_to_coord(int, int, int, double) override {}
   void end_integration() override {}
@@ -346,4 +347,97 @@ TEST(NodeContext, DefaultGravityAndDt) {
   Node root("root");
   EXPECT_EQ(root.gravity.value(), Vec3(0, -9.81, 0));
   EXPECT_EQ(root.dt.value(), 0.01);
+}
+
+// ---------------------------------------------------------------- changes between steps
+
+TEST(NodeChanges, RemovedObjectLeavesItsSlotsAndLists) {
+  Node root("root");
+  auto* s = add<TestState>(root, "s");
+  auto* ff = add<TestForceField>(root, "ff");
+  auto* m = add<TestMass>(root, "m");
+  auto* c = add<TestConstraint>(root, "c");
+  auto taken = root.remove_object(m);
+  ASSERT_EQ(taken.get(), m);
+  EXPECT_EQ(root.mass, nullptr);
+  EXPECT_EQ(root.force_fields, (std::vector<ForceField*>{ff}));
+  EXPECT_EQ(m->node(), nullptr);
+  root.remove_object(c);
+  EXPECT_TRUE(root.projective_constraints.empty());
+  root.remove_object(s);
+  EXPECT_EQ(root.mechanical_state, nullptr);
+  EXPECT_EQ(root.objects().size(), 1u);
+  // Not an object of this node: nothing happens.
+  TestState other;
+  EXPECT_EQ(root.remove_object(&other), nullptr);
+}
+
+// The single slot empties when its holder leaves, even if an earlier object of the role remains (SOFA).
+TEST(NodeChanges, SingleSlotEmptiesWhenItsHolderLeaves) {
+  Node root("root");
+  add<TestState>(root, "s1");
+  auto* s2 = add<TestState>(root, "s2");
+  root.remove_object(s2);
+  EXPECT_EQ(root.mechanical_state, nullptr);
+  EXPECT_EQ(root.objects().size(), 1u);
+}
+
+TEST(NodeChanges, EveryStructuralChangeMovesTheVersion) {
+  Node root("root");
+  Node* a = child(root, "a");
+  auto v = root.structure_version();
+  auto moved = [&] {
+    const bool m = root.structure_version() != v;
+    v = root.structure_version();
+    return m;
+  };
+  auto* s = add<TestState>(*a, "s");
+  EXPECT_TRUE(moved());
+  EXPECT_EQ(a->structure_version(), root.structure_version());  // one counter, owned by the root
+  a->activated.set(false);
+  EXPECT_TRUE(moved());
+  a->sleeping.set(true);
+  EXPECT_TRUE(moved());
+  s->set_state(ComponentState::invalid);
+  EXPECT_TRUE(moved());
+  s->set_state(ComponentState::invalid);  // no change, no move
+  EXPECT_FALSE(moved());
+  (void)a->activated.get();
+  EXPECT_FALSE(moved());
+  root.remove_object(root.find_object_named("nothing"));
+  EXPECT_FALSE(moved());
+  EXPECT_NE(root.remove_child(a), nullptr);
+  EXPECT_TRUE(moved());
+}
+
+TEST(NodeChanges, LockedGraphRefusesEditsWithAnError) {
+  Node root("root");
+  Node* a = child(root, "a");
+  auto* s = add<TestState>(*a, "s");
+  root.set_graph_locked(true);
+  EXPECT_TRUE(a->graph_locked());
+  const auto v = root.structure_version();
+  EXPECT_EQ(a->add_object(std::make_unique<TestForceField>()), nullptr);
+  EXPECT_EQ(a->remove_object(s), nullptr);
+  EXPECT_EQ(root.add_child(std::make_unique<Node>("b")), nullptr);
+  EXPECT_EQ(root.remove_child(a), nullptr);
+  EXPECT_EQ(root.structure_version(), v);
+  EXPECT_EQ(root.diagnostics().error_count(), 4);
+  EXPECT_NE(root.diagnostics().messages()[0].text.find("while a step is running"), std::string::npos);
+  root.set_graph_locked(false);
+  EXPECT_NE(a->remove_object(s), nullptr);
+}
+
+// Links from the rest of the graph into a removed subtree are cut; their owners are disabled.
+TEST(NodeChanges, LinksIntoARemovedSubtreeAreCut) {
+  Node root("root");
+  Node* a = child(root, "a");
+  auto* s = add<TestState>(*a, "s");
+  auto* ff = add<TestForceField>(root, "ff");
+  ff->mstate.set(s);
+  auto gone = root.remove_child(a);
+  EXPECT_EQ(ff->mstate.get(), nullptr);
+  EXPECT_EQ(ff->state(), ComponentState::invalid);
+  EXPECT_EQ(gone->parent(), nullptr);
+  EXPECT_EQ(root.diagnostics().warning_count(), 1);
 }

@@ -21,7 +21,8 @@ class TestState final : public MechanicalState {
   StateType state_type() const override { return type_; }
   std::size_t size() const override { return 0; }
   void resize(std::size_t) override {}
-  std::vector<double>& vec(int) override { return data_; }
+  const std::vector<double>& read(int) const override { return data_; }
+  std::vector<double>& write(int) override { return data_; }
   void touch(int) override {}
   void add_deriv_to_coord(int, int, int, double) override {}
   void end_integration() override {}

@@ -61,15 +61,15 @@ struct BeamFixture {
   std::size_t ndof() const { return dofs->size() * 6; }
 
   std::vector<double> force(const std::vector<double>& x) {
-    dofs->vec(kPosition) = x;
-    auto& f = dofs->vec(kForce);
+    dofs->write(kPosition) = x;
+    auto& f = dofs->write(kForce);
     f.assign(ndof(), 0.0);
     ff->add_force(MechParams{});
     return f;
   }
   std::vector<double> dforce(const std::vector<double>& dx, double k = 1.0) {
-    dofs->vec(kDx) = dx;
-    auto& df = dofs->vec(kDforce);
+    dofs->write(kDx) = dx;
+    auto& df = dofs->write(kDforce);
     df.assign(ndof(), 0.0);
     MechParams p;
     p.k = k;
@@ -158,14 +158,14 @@ constexpr double kE = 2e7, kNu = 0.49, kR = 0.1;
 
 TEST(BeamFEM, ZeroForceAtRest) {
   BeamFixture b(7, 7.0, kE, kNu, kR);
-  const std::vector<double> x = b.dofs->vec(kPosition);
+  const std::vector<double> x = b.dofs->write(kPosition);
   EXPECT_EQ(max_abs(b.force(x)), 0.0);
   EXPECT_EQ(b.ff->beams().size(), 7u);
 }
 
 TEST(BeamFEM, RigidMotionGivesNoForce) {
   BeamFixture b(5, 3.0, kE, kNu, kR);
-  const std::vector<double> x = b.dofs->vec(kPosition);
+  const std::vector<double> x = b.dofs->write(kPosition);
   const double translated = max_abs(b.force(rigidly_moved(x, Eigen::Vector3d::Zero(), {0.3, -1.2, 2.5})));
   EXPECT_LT(translated, 1e-9);
   // Large rotation (about 1.6 rad about a skew axis) plus translation.
@@ -177,7 +177,7 @@ TEST(BeamFEM, RigidMotionGivesNoForce) {
 
 TEST(BeamFEM, DforceMatchesFiniteDifferencesWhereUnloaded) {
   BeamFixture b(4, 2.0, kE, kNu, kR);
-  const std::vector<double> x0 = b.dofs->vec(kPosition);
+  const std::vector<double> x0 = b.dofs->write(kPosition);
   const std::vector<double> d = wiggle(b.ndof(), 3);
   double scale = 0;
   const double e_rest = fd_error(b, x0, d, 1e-6, &scale);
@@ -194,7 +194,7 @@ TEST(BeamFEM, DforceApproximatesDerivativeWhenLoaded) {
   // Loaded beams: SOFA's K leaves out the derivative of the corotated frame,
   // so the gap grows with the deformation (first order in it).
   BeamFixture b(4, 2.0, kE, kNu, kR);
-  const std::vector<double> x0 = b.dofs->vec(kPosition);
+  const std::vector<double> x0 = b.dofs->write(kPosition);
   const std::vector<double> d = wiggle(b.ndof(), 5);
   for (double amp : {1e-4, 1e-3}) {
     const std::vector<double> x = displaced(x0, wiggle(b.ndof(), 9), amp);
@@ -209,7 +209,7 @@ TEST(BeamFEM, AssembledStiffnessEqualsMatrixFreeProduct) {
   for (bool sym : {false, true}) {
     BeamFixture b(4, 2.0, kE, kNu, kR, 0.02);
     b.ff->use_symmetric_assembly.set(sym);
-    const std::vector<double> x0 = b.dofs->vec(kPosition);
+    const std::vector<double> x0 = b.dofs->write(kPosition);
     b.force(displaced(x0, wiggle(b.ndof(), 11), 0.2));  // frames of a deformed, rotated state
     const Eigen::MatrixXd K = b.dense_stiffness();
     const std::vector<double> d = wiggle(b.ndof(), 13);
@@ -229,7 +229,7 @@ TEST(BeamFEM, CantileverMatchesEulerBernoulli) {
   // tip rotation PL²/(2EI), axial PL/(EA), twist TL/(GJ).
   const double L = 2.0, r = 0.05, ri = 0.02, E = 2e9, nu = 0.3, P = 10.0, T = 3.0;
   BeamFixture b(8, L, E, nu, r, ri);
-  b.force(b.dofs->vec(kPosition));
+  b.force(b.dofs->write(kPosition));
   const double I = M_PI * (std::pow(r, 4) - std::pow(ri, 4)) / 4, A = M_PI * (r * r - ri * ri);
   const double G = E / (2 * (1 + nu)), J = 2 * I;
   Eigen::VectorXd f = Eigen::VectorXd::Zero(b.ndof());
@@ -253,7 +253,7 @@ TEST(BeamFEM, NonlinearStaticCantileverSmallLoad) {
   // deflection for a small load: fixed-point iterations x ← x + K⁻¹(f_ext + f(x)).
   const double L = 7.0, P = -2.0;  // the example scene's beam, a small tip load along y
   BeamFixture b(7, L, kE, kNu, kR);
-  std::vector<double> x = b.dofs->vec(kPosition);
+  std::vector<double> x = b.dofs->write(kPosition);
   const int tip = 7;
   for (int it = 0; it < 50; ++it) {
     Eigen::VectorXd r = Eigen::Map<const Eigen::VectorXd>(b.force(x).data(), b.ndof());
@@ -296,7 +296,7 @@ TEST(BeamFEM, BadInputIsReported) {
   {
     BeamFixture b(3, 1.0, kE, kNu, kR, 0.0, StateType::rigid3, {{0, 1}, {1, 1}});
     EXPECT_TRUE(b.has_error("zero rest length"));
-    b.force(b.dofs->vec(kPosition));  // no crash, no force
+    b.force(b.dofs->write(kPosition));  // no crash, no force
   }
   {
     BeamFixture b(3, 1.0, kE, kNu, -0.1);
@@ -327,9 +327,9 @@ TEST(BeamFEM, NoEdgesIsReported) {
   for (const Message& m : root->diagnostics().messages())
     found |= m.severity == Severity::error && Diagnostics::format(m).find("no edges") != std::string::npos;
   EXPECT_TRUE(found);
-  dofs->vec(kForce).assign(12, 0.0);
+  dofs->write(kForce).assign(12, 0.0);
   ff->add_force(MechParams{});
-  EXPECT_EQ(max_abs(dofs->vec(kForce)), 0.0);
+  EXPECT_EQ(max_abs(dofs->write(kForce)), 0.0);
 }
 
 }  // namespace

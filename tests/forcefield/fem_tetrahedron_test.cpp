@@ -39,7 +39,7 @@ std::string beam(const std::string& ff) {
 }
 
 void displace(MechanicalObject& mo) {
-  std::vector<double>& x = mo.vec(kPosition);
+  std::vector<double>& x = mo.write(kPosition);
   for (std::size_t i = 0; i < x.size(); ++i) x[i] += 0.01 * std::sin(3.0 * static_cast<double>(i));
 }
 
@@ -154,10 +154,10 @@ TEST(TetrahedronFEMForceField, BuildStiffnessMatchesAddDForce) {
     ASSERT_TRUE(f->build_stiffness(K));
     Eigen::MatrixXd Kd = Eigen::MatrixXd::Zero(3 * n, 3 * n);
     for (const auto& e : K.entries()) Kd(e.row, e.col) += e.value;
-    std::vector<double>& dx = mo.vec(kDx);
+    std::vector<double>& dx = mo.write(kDx);
     Eigen::VectorXd d(3 * n);
     for (std::size_t i = 0; i < 3 * n; ++i) dx[i] = d[i] = std::cos(1.7 * static_cast<double>(i));
-    std::vector<double>& df = mo.vec(kDforce);
+    std::vector<double>& df = mo.write(kDforce);
     std::fill(df.begin(), df.end(), 0.0);
     MechParams p;
     f->add_dforce(p, 0.5);
@@ -170,9 +170,9 @@ TEST(TetrahedronFEMForceField, BuildStiffnessMatchesAddDForce) {
 TEST(TetrahedralCorotationalFEMForceField, NoForceAtRestOrUnderTranslation) {
   auto s = load(beam(R"(<TetrahedralCorotationalFEMForceField name="fem" method="large"/>)"));
   auto& mo = must<MechanicalObject>(s, "dofs");
-  std::vector<double>& x = mo.vec(kPosition);
+  std::vector<double>& x = mo.write(kPosition);
   for (std::size_t i = 0; i < x.size(); i += 3) x[i] += 5.0;
   MechanicalOps ops(*s.root);
   ops.compute_force(kForce);
-  for (double v : mo.vec(kForce)) EXPECT_NEAR(v, 0.0, 1e-9);
+  for (double v : mo.read(kForce)) EXPECT_NEAR(v, 0.0, 1e-9);
 }

@@ -31,7 +31,7 @@ TEST(HexahedronFEMForceFieldAndMass, GravityUsesTheLumpedPhysicalMass) {
   EXPECT_DOUBLE_EQ(fem->total(), 2.0);  // ρ·V
   auto* mo = test::get<MechanicalObject>(*s.root, "dofs");
   MechParams p;
-  auto& f = mo->vec(kForce);
+  auto& f = mo->write(kForce);
   std::fill(f.begin(), f.end(), 0.0);
   fem->add_force(p);  // at rest: no elastic force, gravity only
   for (std::size_t i = 0; i < 8; ++i) {
@@ -45,11 +45,11 @@ TEST(HexahedronFEMForceFieldAndMass, ElementMassCouplesEveryNodePair) {
   auto* fem = test::get<HexahedronFEMForceFieldAndMass>(*s.root, "fem");
   auto* mo = test::get<MechanicalObject>(*s.root, "dofs");
   const int dx = MechanicalOps::alloc_vec(), res = MechanicalOps::alloc_vec();
-  auto& d = mo->vec(dx);
+  auto& d = mo->write(dx);
   for (std::size_t i = 0; i < 8; ++i) d[3 * i] = 1.0;  // unit x translation
   MechParams p;
   fem->add_mdx(p, res, dx, 0.5);
-  const auto& r = mo->vec(res);
+  const auto& r = mo->read(res);
   const double block = 2.0 * 8.0 / 27.0;  // ρ·vol·8/27
   for (std::size_t i = 0; i < 8; ++i) {
     EXPECT_NEAR(r[3 * i], 0.5 * 8 * block, 1e-12);  // every pair (i, j) contributes
@@ -68,11 +68,11 @@ TEST(HexahedronFEMForceFieldAndMass, LumpedMassIsTheRowSum) {
   auto* fem = test::get<HexahedronFEMForceFieldAndMass>(*s.root, "fem");
   auto* mo = test::get<MechanicalObject>(*s.root, "dofs");
   const int dx = MechanicalOps::alloc_vec(), res = MechanicalOps::alloc_vec();
-  auto& d = mo->vec(dx);
+  auto& d = mo->write(dx);
   d[4] = 3.0;  // point 1, y
   MechParams p;
   fem->add_mdx(p, res, dx, 1.0);
-  const auto& r = mo->vec(res);
+  const auto& r = mo->read(res);
   EXPECT_NEAR(r[4], 3.0 * 8 * (2.0 * 8.0 / 27.0), 1e-12);
   EXPECT_EQ(r[1], 0.0);  // lumped: no coupling to other points
 }
@@ -81,7 +81,7 @@ TEST(HexahedronFEMForceFieldAndMass, FallsUnderGravityWithoutDeforming) {
   auto s = test::load(cube());
   for (int i = 0; i < 5; ++i) animate(*s.root);
   auto* mo = test::get<MechanicalObject>(*s.root, "dofs");
-  const auto x = as_vec3(mo->vec(kPosition));
+  const auto x = as_vec3(mo->read(kPosition));
   // A free body under uniform gravity translates: all points move alike.
   for (std::size_t i = 1; i < 8; ++i) EXPECT_NEAR(x[i].y() - x[0].y(), (i & 2) ? 1.0 : 0.0, 1e-9);
   EXPECT_LT(x[0].y(), 0.0);
@@ -118,7 +118,7 @@ TEST(HexahedronFEMForceFieldAndMass, SparseGridCoefficientsScaleMassAndStiffness
   // Gravity: ρ·V·g over coefficient-weighted cells, (26·0.5 + 1)/27 of the regular total.
   MechParams p;
   auto total_weight = [&](HexahedronFEMForceFieldAndMass& fem, MechanicalObject& mo) {
-    auto& f = mo.vec(kForce);
+    auto& f = mo.write(kForce);
     std::fill(f.begin(), f.end(), 0.0);
     fem.add_force(p);
     double sum = 0;
@@ -132,18 +132,18 @@ TEST(HexahedronFEMForceFieldAndMass, SparseGridCoefficientsScaleMassAndStiffness
   // Stiffness and element mass of a boundary cell: half the regular grid's.
   const int dx = MechanicalOps::alloc_vec(), df = MechanicalOps::alloc_vec();
   for (auto* mo : {ms, mr}) {
-    auto& d = mo->vec(dx);
+    auto& d = mo->write(dx);
     d.assign(3 * mo->size(), 0.0);
     d[0] = 1e-3;  // corner point 0: only in boundary cell 0
-    mo->vec(df).assign(3 * mo->size(), 0.0);
+    mo->write(df).assign(3 * mo->size(), 0.0);
   }
   p.dx = dx;
   p.df = df;
   fs->add_dforce(p, 1.0);
   fr->add_dforce(p, 1.0);
-  EXPECT_NEAR(ms->vec(df)[0] / mr->vec(df)[0], 0.5, 1e-12);
-  auto& rs = ms->vec(df);
-  auto& rr = mr->vec(df);
+  EXPECT_NEAR(ms->read(df)[0] / mr->read(df)[0], 0.5, 1e-12);
+  auto& rs = ms->write(df);
+  auto& rr = mr->write(df);
   std::fill(rs.begin(), rs.end(), 0.0);
   std::fill(rr.begin(), rr.end(), 0.0);
   fs->add_mdx(p, df, dx, 1.0);

@@ -41,7 +41,7 @@ std::string cell(const std::string& ff, const std::string& extra, const std::str
 }
 
 std::vector<double> f_at(ForceField& ff, MechanicalObject& mo) {
-  auto& f = mo.vec(kForce);
+  auto& f = mo.write(kForce);
   std::fill(f.begin(), f.end(), 0.0);
   MechParams p;
   ff.add_force(p);
@@ -69,7 +69,7 @@ double trajectory_gap(const std::string& sa, const std::string& sb, double* disp
   for (int step = 0; step < 60; ++step) {
     animate(*a.root);
     animate(*b.root);
-    const auto &xa = ma->vec(kPosition), &xb = mb->vec(kPosition), &x0 = mb->vec(kRestPosition);
+    const auto &xa = ma->read(kPosition), &xb = mb->read(kPosition), &x0 = mb->read(kRestPosition);
     for (std::size_t i = 0; i < xa.size(); ++i) {
       worst = std::max(worst, std::fabs(xa[i] - xb[i]));
       *disp = std::max(*disp, std::fabs(xb[i] - x0[i]));
@@ -108,8 +108,8 @@ TEST_P(HexahedralMethods, ZeroForceAtRestAndUnderRigidMotion) {
   ASSERT_TRUE(ff && mo);
   for (double v : f_at(*ff, *mo)) EXPECT_EQ(v, 0.0);
   const Mat3 Q = rot(0.7, 1.1);
-  auto& x = mo->vec(kPosition);
-  const auto& x0 = mo->vec(kRestPosition);
+  auto& x = mo->write(kPosition);
+  const auto& x0 = mo->read(kRestPosition);
   for (std::size_t i = 0; i < x.size() / 3; ++i) {
     const Vec3 y = Q * Vec3(x0[3 * i], x0[3 * i + 1], x0[3 * i + 2]) + Vec3(3, -2, 5);
     for (int c = 0; c < 3; ++c) x[3 * i + c] = y[c];
@@ -129,15 +129,15 @@ TEST_P(HexahedralMethods, DforceMatchesFiniteDifferencesAtRestFrame) {
   auto s = test::load(cell("HexahedralFEMForceField", std::string("method=\"") + GetParam() + "\""));
   auto* ff = test::get<HexahedralFEMForceField>(*s.root, "fem");
   auto* mo = test::get<MechanicalObject>(*s.root, "dofs");
-  auto& x = mo->vec(kPosition);
+  auto& x = mo->write(kPosition);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<double> dir(x.size());
   for (double& d : dir) d = u(rng);
   f_at(*ff, *mo);  // frames at rest (identity)
   const int dx = MechanicalOps::alloc_vec(), df = MechanicalOps::alloc_vec();
-  mo->vec(dx) = dir;
-  std::fill(mo->vec(df).begin(), mo->vec(df).end(), 0.0);
+  mo->write(dx) = dir;
+  std::fill(mo->write(df).begin(), mo->write(df).end(), 0.0);
   MechParams p;
   p.dx = dx;
   p.df = df;
@@ -151,7 +151,7 @@ TEST_P(HexahedralMethods, DforceMatchesFiniteDifferencesAtRestFrame) {
   double err = 0, ref = 0;
   for (std::size_t i = 0; i < x.size(); ++i) {
     const double fd = (fp[i] - fm[i]) / (2 * h);
-    err = std::max(err, std::fabs(fd - mo->vec(df)[i]));
+    err = std::max(err, std::fabs(fd - mo->write(df)[i]));
     ref = std::max(ref, std::fabs(fd));
   }
   std::printf("[%s] dforce vs FD: max err %.3e (max |df| %.3e)\n", GetParam(), err, ref);
@@ -195,13 +195,13 @@ TEST(HexahedralFEMForceField, ForcesMatchHexahedronOnCubes) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> u(-0.1, 0.1);
     const Mat3 Q = rot(0.4, -0.8);
-    auto& xa = ma->vec(kPosition);
-    const auto& x0 = ma->vec(kRestPosition);
+    auto& xa = ma->write(kPosition);
+    const auto& x0 = ma->read(kRestPosition);
     for (std::size_t i = 0; i < xa.size() / 3; ++i) {
       const Vec3 y = Q * Vec3(x0[3 * i] + u(rng), x0[3 * i + 1] + u(rng), x0[3 * i + 2] + u(rng)) + Vec3(0.3, 0.2, 0.1);
       for (int c = 0; c < 3; ++c) xa[3 * i + c] = y[c];
     }
-    mb->vec(kPosition) = xa;
+    mb->write(kPosition) = xa;
     const auto f1 = f_at(*fa, *ma), f2 = f_at(*fb, *mb);
     double err = 0, ref = 0;
     for (std::size_t i = 0; i < f1.size(); ++i) {
@@ -256,7 +256,7 @@ double assembled_vs_dforce(HexahedralFEMForceField& ff, MechanicalObject& mo, do
   f_at(ff, mo);  // frames from the current positions
   MatrixSink sink;
   ff.build_stiffness(sink);
-  const std::size_t n = mo.vec(kPosition).size();
+  const std::size_t n = mo.write(kPosition).size();
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n), H = Eigen::MatrixXd::Zero(n, n);
   for (const auto& e : sink.entries()) A(e.row, e.col) += e.value;
   const auto& k = ff.kernel();
@@ -269,14 +269,14 @@ double assembled_vs_dforce(HexahedralFEMForceField& ff, MechanicalObject& mo, do
   std::uniform_real_distribution<double> u(-1, 1);
   const int dx = MechanicalOps::alloc_vec(), df = MechanicalOps::alloc_vec();
   Eigen::VectorXd d(n);
-  for (std::size_t i = 0; i < n; ++i) d[i] = mo.vec(dx)[i] = u(rng);
-  std::fill(mo.vec(df).begin(), mo.vec(df).end(), 0.0);
+  for (std::size_t i = 0; i < n; ++i) d[i] = mo.write(dx)[i] = u(rng);
+  std::fill(mo.write(df).begin(), mo.write(df).end(), 0.0);
   MechParams p;
   p.dx = dx;
   p.df = df;
   ff.add_dforce(p, 1.0);
   const Eigen::VectorXd y = A * d;
-  const Eigen::VectorXd ref = Eigen::Map<const Eigen::VectorXd>(mo.vec(df).data(), n);
+  const Eigen::VectorXd ref = Eigen::Map<const Eigen::VectorXd>(mo.write(df).data(), n);
   return (y - ref).norm() / ref.norm();
 }
 
@@ -284,8 +284,8 @@ TEST(HexahedralFEMForceField, AssembledIsMinusRKRt) {
   auto s = test::load(cell("HexahedralFEMForceField", "method=\"large\""));
   auto* ff = test::get<HexahedralFEMForceField>(*s.root, "fem");
   auto* mo = test::get<MechanicalObject>(*s.root, "dofs");
-  auto& x = mo->vec(kPosition);
-  const std::vector<double> x0 = mo->vec(kRestPosition);
+  auto& x = mo->write(kPosition);
+  const std::vector<double> x0 = mo->write(kRestPosition);
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> u(-0.05, 0.05);
   auto place = [&](const Mat3& Q) {

@@ -108,7 +108,7 @@ void HyperelasticComponent::check_assembled_matches_matrix_free(const std::strin
     scene::LoadedScene s = load(scene("0 1 2 3  1 2 4 5", mat, solver));
     for (int i = 0; i < 10; ++i) animate(*s.root);
     auto* mo = get<MechanicalState>(*s.root, "dofs");
-    return mo ? mo->vec(kPosition) : std::vector<double>{};
+    return mo ? mo->write(kPosition) : std::vector<double>{};
   };
   const auto a = run("");
   const auto b = run("<SparseLDLSolver/>");

@@ -126,15 +126,15 @@ TEST(NfemFEMMass, GravityAndMassProduct) {
   auto& m = must<FEMMass>(s, "mass");
   auto& st = must<MechanicalObject>(s, "state");
   MechParams p;
-  std::fill(st.vec(kForce).begin(), st.vec(kForce).end(), 0.0);
+  std::fill(st.write(kForce).begin(), st.write(kForce).end(), 0.0);
   m.add_force(p);
   Vec3 sum = Vec3::Zero();
-  for (const Vec3& f : as_vec3(st.vec(kForce))) sum += f;
+  for (const Vec3& f : as_vec3(st.write(kForce))) sum += f;
   EXPECT_NEAR(m.total(), 6.0, 1e-12);
   EXPECT_LT((sum - 6.0 * Vec3(1, -2, 3)).norm(), 1e-12);
-  std::vector<double>& dx = st.vec(kDx);
+  std::vector<double>& dx = st.write(kDx);
   std::fill(dx.begin(), dx.end(), 1.0);
-  std::vector<double>& df = st.vec(kDforce);
+  std::vector<double>& df = st.write(kDforce);
   std::fill(df.begin(), df.end(), 0.0);
   m.add_mdx(p, kDforce, kDx, 2.0);
   double total = 0;
@@ -246,9 +246,9 @@ TEST(NfemForceField, ParallelStrategyMatchesSequencedOnAScene) {
       animate(*seq.root);
       animate(*par.root);
     }
-    const auto& xs = must<MechanicalObject>(seq, "state").vec(kPosition);
-    const auto& xp = must<MechanicalObject>(par, "state").vec(kPosition);
-    const auto& x0 = must<MechanicalObject>(seq, "state").vec(kRestPosition);
+    const auto& xs = must<MechanicalObject>(seq, "state").read(kPosition);
+    const auto& xp = must<MechanicalObject>(par, "state").read(kPosition);
+    const auto& x0 = must<MechanicalObject>(seq, "state").read(kRestPosition);
     ASSERT_EQ(xs.size(), xp.size());
     EXPECT_EQ(xs, xp) << type;
     // The free end (last point) moved down, the clamped one (point 0) did not.

@@ -59,15 +59,15 @@ struct Plate {
   std::size_t ndof() const { return dofs->size() * 3; }
 
   std::vector<double> force(const std::vector<double>& x) {
-    dofs->vec(kPosition) = x;
-    auto& f = dofs->vec(kForce);
+    dofs->write(kPosition) = x;
+    auto& f = dofs->write(kForce);
     std::fill(f.begin(), f.end(), 0.0);
     ff->add_force(MechParams{});
     return f;
   }
   std::vector<double> dforce(const std::vector<double>& dx, double k = 1.0) {
-    dofs->vec(kDx) = dx;
-    auto& df = dofs->vec(kDforce);
+    dofs->write(kDx) = dx;
+    auto& df = dofs->write(kDforce);
     std::fill(df.begin(), df.end(), 0.0);
     MechParams p;
     p.k = k;
@@ -130,13 +130,13 @@ TEST(QuadBendingFEM, ZeroForceAtRest) {
   Plate p = grid_plate(3);
   ASSERT_EQ(p.ff->state(), ComponentState::valid);
   EXPECT_EQ(p.ff->elements().size(), 9u);
-  const auto f = p.force(p.dofs->vec(kRestPosition));
+  const auto f = p.force(p.dofs->write(kRestPosition));
   EXPECT_LT(max_abs(f), 1e-12);
 }
 
 TEST(QuadBendingFEM, RigidTranslationGivesNoForce) {
   Plate p = grid_plate(3);
-  std::vector<double> x = p.dofs->vec(kRestPosition);
+  std::vector<double> x = p.dofs->write(kRestPosition);
   for (std::size_t i = 0; i < x.size(); i += 3) {
     x[i] += 0.7;
     x[i + 1] -= 1.3;
@@ -144,7 +144,7 @@ TEST(QuadBendingFEM, RigidTranslationGivesNoForce) {
   }
   EXPECT_LT(max_abs(p.force(x)), 1e-9);
   // A deformed state shifted as a whole keeps its forces.
-  std::vector<double> y = p.dofs->vec(kRestPosition);
+  std::vector<double> y = p.dofs->write(kRestPosition);
   const auto w = wiggle(y.size(), 3);
   for (std::size_t i = 0; i < y.size(); ++i) y[i] += 0.01 * w[i];
   const auto fy = p.force(y);
@@ -157,7 +157,7 @@ TEST(QuadBendingFEM, RigidTranslationGivesNoForce) {
 // when the displacement is zero), so central differences must agree with add_dforce.
 TEST(QuadBendingFEM, DforceMatchesFiniteDifferencesAtRest) {
   Plate p = grid_plate(3);
-  const std::vector<double> x0 = p.dofs->vec(kRestPosition);
+  const std::vector<double> x0 = p.dofs->write(kRestPosition);
   for (unsigned seed : {1u, 2u, 7u}) {
     const auto dx = wiggle(x0.size(), seed);
     const double h = 1e-6;
@@ -182,13 +182,13 @@ TEST(QuadBendingFEM, DforceMatchesFiniteDifferencesAtRest) {
 // and add_dforce is its exact derivative. Evaluate x through another vector id.
 TEST(QuadBendingFEM, DforceIsDerivativeForHeldShape) {
   Plate p = grid_plate(3);
-  std::vector<double> xs = p.dofs->vec(kRestPosition);
+  std::vector<double> xs = p.dofs->write(kRestPosition);
   const auto w = wiggle(xs.size(), 11);
   for (std::size_t i = 0; i < xs.size(); ++i) xs[i] += 0.05 * w[i];
-  p.dofs->vec(kPosition) = xs;
+  p.dofs->write(kPosition) = xs;
   auto force_of = [&](const std::vector<double>& x) {
-    p.dofs->vec(kFreePosition) = x;
-    auto& f = p.dofs->vec(kForce);
+    p.dofs->write(kFreePosition) = x;
+    auto& f = p.dofs->write(kForce);
     std::fill(f.begin(), f.end(), 0.0);
     MechParams mp;
     mp.x = kFreePosition;
@@ -210,7 +210,7 @@ TEST(QuadBendingFEM, DforceIsDerivativeForHeldShape) {
 
 TEST(QuadBendingFEM, AssembledStiffnessEqualsMatrixFreeProduct) {
   Plate p = grid_plate(3);
-  std::vector<double> x = p.dofs->vec(kRestPosition);
+  std::vector<double> x = p.dofs->write(kRestPosition);
   const auto w = wiggle(x.size(), 9);
   for (std::size_t i = 0; i < x.size(); ++i) x[i] += 0.03 * w[i];
   p.force(x);
@@ -267,11 +267,11 @@ TEST(QuadBendingFEM, ClampedPlateUnderUniformLoadSagsSymmetrically) {
   EXPECT_EQ(lowest, uz[id(n / 2, n / 2)]);
   // The static solution balances the load: the force field's own force there is
   // −load (K sized from the rest shape, as the linear solve assumed).
-  p.dofs->vec(kPosition) = p.dofs->vec(kRestPosition);
-  std::vector<double>& x = p.dofs->vec(kFreePosition);
-  x = p.dofs->vec(kRestPosition);
+  p.dofs->write(kPosition) = p.dofs->read(kRestPosition);
+  std::vector<double>& x = p.dofs->write(kFreePosition);
+  x = p.dofs->write(kRestPosition);
   for (int a = 0; a < m; ++a) x[free_dofs[a]] += u[a];
-  auto& fx = p.dofs->vec(kForce);
+  auto& fx = p.dofs->write(kForce);
   std::fill(fx.begin(), fx.end(), 0.0);
   MechParams mp;
   mp.x = kFreePosition;
@@ -282,7 +282,7 @@ TEST(QuadBendingFEM, ClampedPlateUnderUniformLoadSagsSymmetrically) {
 TEST(QuadBendingFEM, UniformMembraneStretchLeavesInteriorUnloaded) {
   const int n = 4;
   Plate p = grid_plate(n);
-  std::vector<double> x = p.dofs->vec(kRestPosition);
+  std::vector<double> x = p.dofs->write(kRestPosition);
   for (std::size_t i = 0; i < x.size(); i += 3) x[i] *= 1.01;  // ε_xx = 1 %
   const auto f = p.force(x);
   double sum_x = 0;
@@ -305,14 +305,14 @@ TEST(QuadBendingFEM, DegenerateQuadIsReported) {
   Plate p({Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}, {{0, 1, 2, 3}});
   EXPECT_EQ(p.ff->state(), ComponentState::invalid);
   EXPECT_TRUE(p.has_error("quad 0 is degenerate in its rest shape"));
-  EXPECT_LT(max_abs(p.force(p.dofs->vec(kRestPosition))), 1e-300);  // no crash, no force
+  EXPECT_LT(max_abs(p.force(p.dofs->write(kRestPosition))), 1e-300);  // no crash, no force
   EXPECT_LT(max_abs(p.dforce(std::vector<double>(p.ndof(), 1.0))), 1e-300);
 }
 
 TEST(QuadBendingFEM, QuadCollapsingDuringSimulationStops) {
   Plate p = grid_plate(1);
   ASSERT_EQ(p.ff->state(), ComponentState::valid);
-  std::vector<double> x = p.dofs->vec(kRestPosition);
+  std::vector<double> x = p.dofs->write(kRestPosition);
   for (int c = 0; c < 3; ++c) x[3 + c] = x[c];  // point 1 onto point 0
   const auto f = p.force(x);
   EXPECT_EQ(p.ff->state(), ComponentState::invalid);
@@ -330,7 +330,7 @@ TEST(QuadBendingFEM, MissingTopologyIsReported) {
   Plate p({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}, {{0, 1, 2, 3}}, /*with_topology=*/false);
   EXPECT_EQ(p.ff->state(), ComponentState::invalid);
   EXPECT_TRUE(p.has_error("no topology found"));
-  EXPECT_LT(max_abs(p.force(p.dofs->vec(kPosition))), 1e-300);
+  EXPECT_LT(max_abs(p.force(p.dofs->write(kPosition))), 1e-300);
 }
 
 }  // namespace

@@ -69,7 +69,7 @@ TEST(SpringForceField, ForceIsMinusTheGradientOfTheEnergy) {
   auto s = load(kTriangleOfSprings);
   auto* ff = get<SpringForceField>(*s.root, "ff");
   MechanicalState& st = *s.root->mechanical_state;
-  const std::vector<double> x = st.vec(kPosition);
+  const std::vector<double> x = st.write(kPosition);
   const auto f = force_at(*ff, st, x);
   EXPECT_NEAR(ff->potential_energy().value(), spring_energy(*ff, x), 1e-12);
   const double h = 1e-6;
@@ -86,7 +86,7 @@ TEST(SpringForceField, DForceMatchesFiniteDifferencesAndTheAssembledMatrix) {
   auto s = load(kTriangleOfSprings);
   auto* ff = get<SpringForceField>(*s.root, "ff");
   MechanicalState& st = *s.root->mechanical_state;
-  const std::vector<double> x = st.vec(kPosition);
+  const std::vector<double> x = st.write(kPosition);
   const auto dx = wiggle(x.size(), 3);
   const auto fd = fd_force(*ff, st, x, dx, 1e-6);
   const auto df = dforce(*ff, st, dx);
@@ -113,7 +113,7 @@ TEST(SpringForceField, TangentIncludesTheDampingForce) {
   </Node>)");
   auto* ff = get<SpringForceField>(*s.root, "ff");
   MechanicalState& st = *s.root->mechanical_state;
-  const auto f = force_at(*ff, st, st.vec(kPosition));
+  const auto f = force_at(*ff, st, st.write(kPosition));
   // At rest length: F = kd·(û·Δv) = 4·3 = 12 along x.
   EXPECT_DOUBLE_EQ(f[0], 12.0);
   EXPECT_DOUBLE_EQ(f[3], -12.0);
@@ -156,10 +156,10 @@ TEST(SpringForceField, ActsBetweenTwoStates) {
   ASSERT_EQ(ff->state(), ComponentState::valid);
   auto states = ff->states();
   ASSERT_EQ(states.size(), 2u);
-  for (auto* st : states) std::fill(st->vec(kForce).begin(), st->vec(kForce).end(), 0.0);
+  for (auto* st : states) std::fill(st->write(kForce).begin(), st->write(kForce).end(), 0.0);
   ff->add_force(MechParams{});
-  EXPECT_DOUBLE_EQ(states[0]->vec(kForce)[1], 20.0);   // pulled towards b
-  EXPECT_DOUBLE_EQ(states[1]->vec(kForce)[1], -20.0);  // and b towards a
+  EXPECT_DOUBLE_EQ(states[0]->write(kForce)[1], 20.0);   // pulled towards b
+  EXPECT_DOUBLE_EQ(states[1]->write(kForce)[1], -20.0);  // and b towards a
   MatrixSink sink;
   ff->build_stiffness(sink);
   bool cross = false;
@@ -180,7 +180,7 @@ TEST(SpringForceField, UndampedExplicitEnergyStaysBoundedOver10kSteps) {
   </Node>)");
   auto* ff = get<SpringForceField>(*s.root, "ff");
   MechanicalState& st = *s.root->mechanical_state;
-  std::vector<double> x = st.vec(kPosition), v(x.size(), 0.0);
+  std::vector<double> x = st.write(kPosition), v(x.size(), 0.0);
   const double dt = 1e-3, m = 1.0;
   auto energy = [&]() {
     double k = 0;
@@ -257,7 +257,7 @@ TEST(RegularGridSpringForceField, GeneratesLinesQuadsAndCubesInSofaOrder) {
   EXPECT_NEAR(cube.l0, std::sqrt(6.0), 1e-15);
   // At rest: no force; the tangent still matches finite differences.
   MechanicalState& st = *s.root->mechanical_state;
-  std::vector<double> x = st.vec(kPosition);
+  std::vector<double> x = st.write(kPosition);
   const auto f0 = force_at(*ff, st, x);
   EXPECT_LT(sinew::test::max_abs(f0), 1e-12);
   const auto xw = wiggle(x.size(), 7);
@@ -310,7 +310,7 @@ TEST(ConstantForceField, TotalForceIsSharedByAllPoints) {
   auto* ff = get<ConstantForceField>(*s.root, "ff");
   ASSERT_EQ(ff->state(), ComponentState::valid);
   MechanicalState& st = *s.root->mechanical_state;
-  const auto f = force_at(*ff, st, st.vec(kPosition));
+  const auto f = force_at(*ff, st, st.write(kPosition));
   for (int i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(f[3 * i + 2], -1.25);
 }
 
@@ -320,7 +320,7 @@ TEST(ConstantForceField, ForcesPerIndexAndBadIndex) {
     <ConstantForceField name="ff" indices="2 0" forces="1 0 0  0 2 0"/>
   </Node>)");
   MechanicalState& st = *s.root->mechanical_state;
-  const auto f = force_at(*get<ConstantForceField>(*s.root, "ff"), st, st.vec(kPosition));
+  const auto f = force_at(*get<ConstantForceField>(*s.root, "ff"), st, st.write(kPosition));
   EXPECT_DOUBLE_EQ(f[6], 1.0);
   EXPECT_DOUBLE_EQ(f[1], 2.0);
   auto bad = sinew::test::build(R"(<Node><MechanicalObject position="0 0 0"/>
@@ -336,7 +336,7 @@ TEST(PlaneForceField, PenaltyForceAndTangent) {
   </Node>)");
   auto* ff = get<PlaneForceField>(*s.root, "ff");
   MechanicalState& st = *s.root->mechanical_state;
-  const auto f = force_at(*ff, st, st.vec(kPosition));
+  const auto f = force_at(*ff, st, st.write(kPosition));
   // s = −0.5: F = n·(−k·s) − v·(−c·s) = 50000 − (−1)·2.5
   EXPECT_DOUBLE_EQ(f[1], 100000 * 0.5 + 5 * 0.5);
   EXPECT_DOUBLE_EQ(f[4], 0.0);
@@ -354,16 +354,16 @@ TEST(UniformVelocityDampingForceField, DampsAndAddsTheDampingMatrixWhenImplicit)
   </Node>)");
   auto* ff = get<UniformVelocityDampingForceField>(*s.root, "ff");
   MechanicalState& st = *s.root->mechanical_state;
-  const auto f = force_at(*ff, st, st.vec(kPosition));
+  const auto f = force_at(*ff, st, st.write(kPosition));
   EXPECT_DOUBLE_EQ(f[0], -0.5);
   EXPECT_DOUBLE_EQ(f[1], 1.0);
-  st.vec(kDx) = {1, 1, 1};
-  auto& df = st.vec(kDforce);
+  st.write(kDx) = {1, 1, 1};
+  auto& df = st.write(kDforce);
   std::fill(df.begin(), df.end(), 0.0);
   MechParams p;
   p.b = 2.0;
   ff->add_dforce(p, 0.0);
-  EXPECT_DOUBLE_EQ(st.vec(kDforce)[2], -1.0);
+  EXPECT_DOUBLE_EQ(st.write(kDforce)[2], -1.0);
   MatrixSink B;
   ff->build_damping(B);
   ASSERT_EQ(B.entries().size(), 3u);
@@ -384,7 +384,7 @@ TEST(InteractionEllipsoidForceField, PushesPointsOutOfTheRotatedEllipsoidWithExa
   ASSERT_NE(ff, nullptr);
   ASSERT_EQ(ff->state(), ComponentState::valid);
   MechanicalState& st = *P.mechanical_state;
-  const std::vector<double> x = st.vec(kPosition);
+  const std::vector<double> x = st.write(kPosition);
   const auto f = force_at(*ff, st, x);
   ASSERT_EQ(ff->contacts().size(), 2u);  // the point at (1.5, 0, 0) is outside
   EXPECT_EQ(f[3], 0.0);
@@ -411,7 +411,7 @@ TEST(InteractionEllipsoidForceField, TangentDiffersFromTheDerivativeByTheDocumen
   Node& P = *s.root->find_child_named("P");
   auto* ff = get<InteractionEllipsoidForceField>(P, "ff");
   MechanicalState& st = *P.mechanical_state;
-  const std::vector<double> x = st.vec(kPosition);
+  const std::vector<double> x = st.write(kPosition);
   force_at(*ff, st, x);
   ASSERT_EQ(ff->contacts().size(), 1u);
   const double p[3] = {0.4, 0.1, -0.1}, r[3] = {1, 0.8, 0.6}, k = 100;
@@ -451,7 +451,7 @@ TEST(QuadularBendingSprings, TwoCrossingSpringsPerSharedEdgeWithExactTangent) {
   EXPECT_EQ(ff->springs()[1].e1, 1u);
   EXPECT_NEAR(ff->springs()[0].rest_length, std::sqrt(2.0), 1e-15);
   MechanicalState& st = *s.root->mechanical_state;
-  std::vector<double> x = st.vec(kRestPosition);
+  std::vector<double> x = st.write(kRestPosition);
   EXPECT_LT(sinew::test::max_abs(force_at(*ff, st, x)), 1e-12);
   x[2] += 0.3;
   x[17] -= 0.2;
@@ -476,7 +476,7 @@ TEST(EdgePressureForceField, HalfOfPressureTimesRestLengthOnEachVertex) {
   ASSERT_NE(ff, nullptr);
   ASSERT_EQ(ff->state(), ComponentState::valid);
   MechanicalState& st = *s.root->mechanical_state;
-  const auto f = force_at(*ff, st, st.vec(kPosition));
+  const auto f = force_at(*ff, st, st.write(kPosition));
   EXPECT_DOUBLE_EQ(f[2], 0.0);
   EXPECT_DOUBLE_EQ(f[5], 0.5);
   EXPECT_DOUBLE_EQ(f[8], 0.5);
@@ -490,7 +490,7 @@ TEST(SpringForceField, StiffSpringForceFieldIsTheOldName) {
   auto* ff = get<SpringForceField>(*s.root, "ff");
   ASSERT_NE(ff, nullptr);
   MechanicalState& st = *s.root->mechanical_state;
-  const auto f = force_at(*ff, st, st.vec(kPosition));
+  const auto f = force_at(*ff, st, st.write(kPosition));
   EXPECT_DOUBLE_EQ(f[0], -10.0);  // compressed by 1: pushes point 0 away from point 1
   EXPECT_DOUBLE_EQ(f[3], 10.0);
 }
@@ -505,7 +505,7 @@ TEST(TrianglePressureForceField, ConstantForceIsPressureTimesRestAreaOverThree) 
   ASSERT_NE(ff, nullptr);
   ASSERT_EQ(ff->state(), ComponentState::valid);
   MechanicalState& st = *s.root->mechanical_state;
-  std::vector<double> x = st.vec(kPosition);
+  std::vector<double> x = st.write(kPosition);
   x[0] += 1.0;  // the force uses the rest area (3), not the current one
   const auto f = force_at(*ff, st, x);
   for (int v = 0; v < 3; ++v) {

@@ -70,7 +70,7 @@ TEST(TriangularFEMForceFieldOptim, NoForceAtRestNorUnderRigidMotion) {
   ASSERT_NE(ff, nullptr);
   ASSERT_EQ(ff->state(), ComponentState::valid);
   MechanicalState& st = *s.root->mechanical_state;
-  const std::vector<double> x0 = st.vec(kRestPosition);
+  const std::vector<double> x0 = st.write(kRestPosition);
   EXPECT_LT(max_abs(force_at(*ff, st, x0)), 1e-12);
   EXPECT_LT(max_abs(force_at(*ff, st, rigid_motion(x0, 0.7))), 1e-11);
 }
@@ -95,7 +95,7 @@ TEST(TriangularFEMForceFieldOptim, TangentMatchesFiniteDifferencesAtRest) {
   auto s = load(square(R"(<TriangularFEMForceFieldOptim name="ff" youngModulus="600" poissonRatio="0.3"/>)"));
   auto* ff = get<TriangularFEMForceFieldOptim>(*s.root, "ff");
   MechanicalState& st = *s.root->mechanical_state;
-  const std::vector<double> x0 = rigid_motion(st.vec(kRestPosition), 0.4);
+  const std::vector<double> x0 = rigid_motion(st.write(kRestPosition), 0.4);
   force_at(*ff, st, x0);
   const auto dx = wiggle(x0.size(), 5);
   expect_near_rel(dforce(*ff, st, dx), fd_force(*ff, st, x0, dx, 1e-6), 1e-6, "Optim tangent at rest");
@@ -107,7 +107,7 @@ TEST(TriangularFEMForceFieldOptim, TangentOmitsTheFrameDerivativeWhenStressed) {
   auto s = load(square(R"(<TriangularFEMForceFieldOptim name="ff" youngModulus="600" poissonRatio="0.3"/>)"));
   auto* ff = get<TriangularFEMForceFieldOptim>(*s.root, "ff");
   MechanicalState& st = *s.root->mechanical_state;
-  std::vector<double> x = st.vec(kRestPosition);
+  std::vector<double> x = st.write(kRestPosition);
   const auto w = wiggle(x.size(), 11);
   for (std::size_t i = 0; i < x.size(); ++i) x[i] += 0.05 * w[i];
   force_at(*ff, st, x);
@@ -128,7 +128,7 @@ TEST(TriangularFEMForceField, NoForceAtRestNorUnderRigidMotion) {
   ASSERT_NE(ff, nullptr);
   ASSERT_EQ(ff->state(), ComponentState::valid);
   MechanicalState& st = *s.root->mechanical_state;
-  const std::vector<double> x0 = st.vec(kRestPosition);
+  const std::vector<double> x0 = st.write(kRestPosition);
   EXPECT_LT(max_abs(force_at(*ff, st, x0)), 1e-12);
   EXPECT_LT(max_abs(force_at(*ff, st, rigid_motion(x0, -1.1))), 1e-11);
 }
@@ -152,7 +152,7 @@ TEST(TriangularFEMForceField, TangentMatchesFiniteDifferencesAtRestAndTheMatrix)
   auto s = load(square(R"(<TriangularFEMForceField name="ff" youngModulus="60" poissonRatio="0.3"/>)"));
   auto* ff = get<TriangularFEMForceField>(*s.root, "ff");
   MechanicalState& st = *s.root->mechanical_state;
-  const std::vector<double> x0 = rigid_motion(st.vec(kRestPosition), 0.3);
+  const std::vector<double> x0 = rigid_motion(st.write(kRestPosition), 0.3);
   force_at(*ff, st, x0);
   const auto dx = wiggle(x0.size(), 21);
   expect_near_rel(dforce(*ff, st, dx), fd_force(*ff, st, x0, dx, 1e-6), 1e-6, "TriangularFEM tangent at rest");
@@ -183,7 +183,7 @@ TEST(TriangularFEMForceField, SmallMethodUsesWorldAxesAndMatchesFiniteDifference
   auto* ff = get<TriangularFEMForceField>(*s.root, "ff");
   ASSERT_EQ(ff->state(), ComponentState::valid);
   MechanicalState& st = *s.root->mechanical_state;
-  std::vector<double> x0 = st.vec(kRestPosition);
+  std::vector<double> x0 = st.write(kRestPosition);
   EXPECT_LT(max_abs(force_at(*ff, st, x0)), 1e-12);
   auto xt = x0;
   for (std::size_t i = 0; i < xt.size(); ++i) xt[i] += (i % 3 == 0 ? 0.7 : -0.2);
@@ -227,7 +227,7 @@ TEST(FastTriangularBendingSprings, ForceIsMinusTheGradientAndTheTangentIsExact) 
   auto s = load(square(R"(<FastTriangularBendingSprings name="ff" bendingStiffness="10"/>)"));
   auto* ff = get<FastTriangularBendingSprings>(*s.root, "ff");
   MechanicalState& st = *s.root->mechanical_state;
-  std::vector<double> x = st.vec(kRestPosition);
+  std::vector<double> x = st.write(kRestPosition);
   EXPECT_LT(max_abs(force_at(*ff, st, x)), 1e-12);                    // flat rest shape
   EXPECT_LT(max_abs(force_at(*ff, st, rigid_motion(x, 0.0))), 1e-12);  // translation
   x[11] += 0.2;  // lift vertex 3 out of the plane
@@ -265,7 +265,7 @@ TEST(TriangularBendingSprings, SpringBetweenTheOppositeVertices) {
   EXPECT_EQ(sp.m2, 0u);
   EXPECT_NEAR(sp.l0, std::sqrt(1.1 * 1.1 + 0.9 * 0.9), 1e-15);
   MechanicalState& st = *s.root->mechanical_state;
-  std::vector<double> x = st.vec(kRestPosition);
+  std::vector<double> x = st.write(kRestPosition);
   x[9] += 0.1;
   x[11] += 0.2;
   force_at(*ff, st, x);

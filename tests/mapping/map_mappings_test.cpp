@@ -57,19 +57,19 @@ double max_abs(const std::vector<double>& v) {
 // J·u for random u on every input (kDx), returned per output scalar.
 std::vector<double> apply_j_of(Mapping& m, const std::vector<std::vector<double>>& u) {
   auto ins = m.inputs();
-  for (std::size_t k = 0; k < ins.size(); ++k) ins[k]->vec(kDx) = u[k];
+  for (std::size_t k = 0; k < ins.size(); ++k) ins[k]->write(kDx) = u[k];
   m.apply_j(kDx, kDx);
-  return m.output()->vec(kDx);
+  return m.output()->write(kDx);
 }
 
 // Jᵀ·w, per input.
 std::vector<std::vector<double>> apply_jt_of(Mapping& m, const std::vector<double>& w) {
   auto ins = m.inputs();
-  for (MechanicalState* s : ins) std::fill(s->vec(kForce).begin(), s->vec(kForce).end(), 0.0);
-  m.output()->vec(kForce) = w;
+  for (MechanicalState* s : ins) std::fill(s->write(kForce).begin(), s->write(kForce).end(), 0.0);
+  m.output()->write(kForce) = w;
   m.apply_jt(kForce, kForce);
   std::vector<std::vector<double>> out;
-  for (MechanicalState* s : ins) out.push_back(s->vec(kForce));
+  for (MechanicalState* s : ins) out.push_back(s->write(kForce));
   return out;
 }
 
@@ -105,19 +105,19 @@ std::vector<double> mapped_at(Mapping& m, const std::vector<std::vector<double>>
                               const std::vector<std::vector<double>>& u, double h) {
   auto ins = m.inputs();
   for (std::size_t k = 0; k < ins.size(); ++k) {
-    ins[k]->vec(kPosition) = x0[k];
-    ins[k]->vec(kDx) = u[k];
+    ins[k]->write(kPosition) = x0[k];
+    ins[k]->write(kDx) = u[k];
     ins[k]->add_deriv_to_coord(kPosition, kPosition, kDx, h);
   }
   m.apply(kPosition);
-  return m.output()->vec(kPosition);
+  return m.output()->write(kPosition);
 }
 
 // apply_j = central finite differences of apply (Vec outputs).
 void expect_j_is_derivative(Mapping& m, unsigned seed = 7, double tol = 1e-7) {
   auto ins = m.inputs();
   std::vector<std::vector<double>> x0;
-  for (MechanicalState* s : ins) x0.push_back(s->vec(kPosition));
+  for (MechanicalState* s : ins) x0.push_back(s->write(kPosition));
   const auto u = random_input_derivs(m, seed);
   const double h = 1e-6;
   const auto yp = mapped_at(m, x0, u, h);
@@ -133,7 +133,7 @@ void expect_j_is_derivative(Mapping& m, unsigned seed = 7, double tol = 1e-7) {
 void expect_djt_is_derivative(Mapping& m, const std::vector<double>& w, unsigned seed = 11, double tol = 1e-6) {
   auto ins = m.inputs();
   std::vector<std::vector<double>> x0;
-  for (MechanicalState* s : ins) x0.push_back(s->vec(kPosition));
+  for (MechanicalState* s : ins) x0.push_back(s->write(kPosition));
   const auto u = random_input_derivs(m, seed);
   const double h = 1e-6;
   mapped_at(m, x0, u, h);
@@ -141,17 +141,17 @@ void expect_djt_is_derivative(Mapping& m, const std::vector<double>& w, unsigned
   mapped_at(m, x0, u, -h);
   const auto gm = apply_jt_of(m, w);
   mapped_at(m, x0, u, 0.0);
-  m.output()->vec(kForce) = w;
+  m.output()->write(kForce) = w;
   for (std::size_t k = 0; k < ins.size(); ++k) {
-    ins[k]->vec(kDx) = u[k];
-    std::fill(ins[k]->vec(kDforce).begin(), ins[k]->vec(kDforce).end(), 0.0);
+    ins[k]->write(kDx) = u[k];
+    std::fill(ins[k]->write(kDforce).begin(), ins[k]->write(kDforce).end(), 0.0);
   }
   m.apply_djt(kDforce, kDx, 1.0);
   double scale = 0;
-  for (std::size_t k = 0; k < ins.size(); ++k) scale = std::max(scale, max_abs(ins[k]->vec(kDforce)));
+  for (std::size_t k = 0; k < ins.size(); ++k) scale = std::max(scale, max_abs(ins[k]->write(kDforce)));
   EXPECT_GT(scale, 1e-6) << "geometric stiffness is zero in this test";
   for (std::size_t k = 0; k < ins.size(); ++k) {
-    const auto& df = ins[k]->vec(kDforce);
+    const auto& df = ins[k]->read(kDforce);
     for (std::size_t i = 0; i < df.size(); ++i)
       EXPECT_NEAR((gp[k][i] - gm[k][i]) / (2 * h), df[i], tol * (1 + scale)) << m.class_name() << " input " << k
                                                                              << " scalar " << i;
@@ -159,7 +159,7 @@ void expect_djt_is_derivative(Mapping& m, const std::vector<double>& w, unsigned
 }
 
 std::vector<double> pos(scene::LoadedScene& s, std::string_view name) {
-  return find_named<MechanicalState>(*s.root, name).vec(kPosition);
+  return find_named<MechanicalState>(*s.root, name).write(kPosition);
 }
 
 }  // namespace
@@ -175,7 +175,7 @@ TEST(MapIdentity, CopiesPositionsAndVelocitiesAndResizesOutput) {
     </Node>
   </Node>)");
   EXPECT_EQ(pos(s, "out"), (std::vector<double>{1, 2, 3, 4, 5, 6}));
-  EXPECT_EQ(find_named<MechanicalState>(*s.root, "out").vec(kVelocity), (std::vector<double>{0.1, 0.2, 0.3, 0.4, 0.5, 0.6}));
+  EXPECT_EQ(find_named<MechanicalState>(*s.root, "out").write(kVelocity), (std::vector<double>{0.1, 0.2, 0.3, 0.4, 0.5, 0.6}));
   auto& m = mapping_of(s);
   EXPECT_TRUE(m.is_mechanical());
   EXPECT_FALSE(find_named<MechanicalState>(*s.root, "out").independent());
@@ -209,7 +209,7 @@ TEST(MapIdentity, RigidToVec3CopiesCentres) {
   auto& m = mapping_of(s);
   EXPECT_EQ(m.template_name(), "Rigid3d,Vec3d");
   EXPECT_EQ(pos(s, "out"), (std::vector<double>{1, 2, 3}));
-  EXPECT_EQ(find_named<MechanicalState>(*s.root, "out").vec(kVelocity), (std::vector<double>{0.1, 0.2, 0.3}));
+  EXPECT_EQ(find_named<MechanicalState>(*s.root, "out").write(kVelocity), (std::vector<double>{0.1, 0.2, 0.3}));
   expect_adjoint(m);
   expect_j_is_derivative(m);
   const auto jt = apply_jt_of(m, {4, 5, 6});
@@ -263,7 +263,7 @@ TEST(MapBarycentric, RegularGridReproducesAffineFieldsAndExtrapolates) {
   auto& in = find_named<MechanicalState>(*s.root, "in");
   const Mat3 A = (Mat3() << 1.1, 0.2, -0.3, 0.05, 0.9, 0.1, 0.4, -0.2, 1.3).finished();
   const Vec3 b(0.3, -1, 2);
-  auto& xin = in.vec(kPosition);
+  auto& xin = in.write(kPosition);
   for (std::size_t i = 0; i < in.size(); ++i) {
     const Vec3 p = A * Vec3(xin[3 * i], xin[3 * i + 1], xin[3 * i + 2]) + b;
     for (int c = 0; c < 3; ++c) xin[3 * i + c] = p[c];
@@ -355,7 +355,7 @@ TEST(MapRigid, LocalCoordinatesPositionsVelocitiesAndGeometricStiffness) {
   EXPECT_NEAR(p[4], 2, 1e-12);
   EXPECT_NEAR(p[5], 4, 1e-12);
   // v = v_r + ω × r = (0.1,0,0) + (0,0,2) × (0.28,0.96,0) = (−1.82, 0.56, 0).
-  const auto v = find_named<MechanicalState>(*s.root, "pts").vec(kVelocity);
+  const auto v = find_named<MechanicalState>(*s.root, "pts").write(kVelocity);
   EXPECT_NEAR(v[0], -1.82, 1e-12);
   EXPECT_NEAR(v[1], 0.56, 1e-12);
   EXPECT_NEAR(v[2], 0, 1e-12);
@@ -458,7 +458,7 @@ TEST(MapDistance, LengthsRestLengthsAndExactGeometricStiffness) {
   EXPECT_NEAR(m.rest_lengths.get()[1], std::sqrt(1.2 * 1.2 + 0.9 * 0.9 + 0.16), 1e-15);
   // Stretch the input so that lengths differ from the rest lengths.
   auto& in = find_named<MechanicalState>(*s.root, "in");
-  in.vec(kPosition)[3] = 1.8;
+  in.write(kPosition)[3] = 1.8;
   expect_adjoint(m);
   expect_j_is_derivative(m);
   expect_djt_is_derivative(m, {0.5, -1.0, 2.0, 0.25});
@@ -480,11 +480,11 @@ TEST(MapDistance, StabilizedKeepsOnlyTensionAndNoneIsZero) {
   auto& in = find_named<MechanicalState>(*s.root, "in");
   auto djt = [&](Mapping& m, const std::vector<double>& w) {
     m.apply(kPosition);
-    m.output()->vec(kForce) = w;
-    in.vec(kDx) = random_vec(12, 3);
-    std::fill(in.vec(kDforce).begin(), in.vec(kDforce).end(), 0.0);
+    m.output()->write(kForce) = w;
+    in.write(kDx) = random_vec(12, 3);
+    std::fill(in.write(kDforce).begin(), in.write(kDforce).end(), 0.0);
     m.apply_djt(kDforce, kDx, 1.0);
-    return in.vec(kDforce);
+    return in.write(kDforce);
   };
   // Only edge 1 in tension: Stabilized equals Exact restricted to that edge.
   const auto a = djt(mapping_of(s, "stab"), {0.0, -2.0, 3.0, 0.0});
@@ -600,7 +600,7 @@ TEST(MapOglModel, VisualOutputIsNonMechanicalAndFollowsTheSimulation) {
   EXPECT_TRUE(ops.mappings().empty());
   EXPECT_EQ(ops.all_states().size(), 1u);
   animate(*s.root, 0.1);
-  const auto& x = find_named<MechanicalState>(*s.root, "in").vec(kPosition);
+  const auto& x = find_named<MechanicalState>(*s.root, "in").read(kPosition);
   EXPECT_LT(x[1], -1e-3);
   EXPECT_EQ(vis.position.get().data, x);
   auto& vis2 = find_named<OglModel>(*s.root, "visual2");

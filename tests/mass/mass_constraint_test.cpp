@@ -92,7 +92,7 @@ TEST(UniformMass, GravityForceIsMassTimesGravityOnEveryDof) {
   auto s = load(scene8(R"(<UniformMass name="mass" totalMass="4"/>)"));
   MechanicalOps ops(*s.root);
   ops.compute_force(kForce);
-  const auto& f = must<MechanicalObject>(s, "dofs").vec(kForce);
+  const auto& f = must<MechanicalObject>(s, "dofs").read(kForce);
   ASSERT_EQ(f.size(), 24u);
   for (std::size_t i = 0; i < 8; ++i) {
     EXPECT_EQ(f[i * 3 + 0], 0.5) << i;
@@ -108,7 +108,7 @@ TEST(UniformMass, IndicesSubsetGetsGravityOnly) {
   EXPECT_EQ(m.total_mass.value(), 4.0);
   MechanicalOps ops(*s.root);
   ops.compute_force(kForce);
-  const auto& f = must<MechanicalObject>(s, "dofs").vec(kForce);
+  const auto& f = must<MechanicalObject>(s, "dofs").read(kForce);
   EXPECT_EQ(f[0 * 3 + 1], 0.0);
   EXPECT_EQ(f[1 * 3 + 1], -4.0);
   EXPECT_EQ(f[6 * 3 + 1], -4.0);
@@ -121,11 +121,11 @@ TEST(UniformMass, SeparateGravityGoesToTheVelocity) {
   auto& mo = must<MechanicalObject>(s, "dofs");
   MechanicalOps ops(*s.root);
   ops.compute_force(kForce);
-  EXPECT_EQ(mo.vec(kForce), std::vector<double>(24, 0.0));
+  EXPECT_EQ(mo.write(kForce), std::vector<double>(24, 0.0));
   ops.add_separate_gravity(0.5, kVelocity);
-  EXPECT_EQ(mo.vec(kVelocity)[0], 0.5);
-  EXPECT_EQ(mo.vec(kVelocity)[1], -1.0);
-  EXPECT_EQ(mo.vec(kVelocity)[23], 1.5);
+  EXPECT_EQ(mo.write(kVelocity)[0], 0.5);
+  EXPECT_EQ(mo.write(kVelocity)[1], -1.0);
+  EXPECT_EQ(mo.write(kVelocity)[23], 1.5);
 }
 
 // §1.1: addMDx: res_i += factor · m · dx_i.
@@ -133,9 +133,9 @@ TEST(UniformMass, AddMdxScalesByMassAndFactor) {
   auto s = load(scene8(R"(<UniformMass name="mass" totalMass="4"/>)"));
   auto& m = must<UniformMass>(s, "mass");
   auto& mo = must<MechanicalObject>(s, "dofs");
-  auto& dx = mo.vec(kDx);
+  auto& dx = mo.write(kDx);
   for (std::size_t i = 0; i < dx.size(); ++i) dx[i] = static_cast<double>(i);
-  auto& res = mo.vec(kDforce);
+  auto& res = mo.write(kDforce);
   res.assign(24, 1.0);
   m.add_mdx(MechParams{}, kDforce, kDx, 3.0);
   for (std::size_t i = 0; i < 24; ++i) EXPECT_EQ(res[i], 1.0 + 1.5 * static_cast<double>(i)) << i;
@@ -145,11 +145,11 @@ TEST(UniformMass, AddMdxScalesByMassAndFactor) {
 TEST(UniformMass, AccFromForceDividesByMass) {
   auto s = load(scene8(R"(<UniformMass name="mass" vertexMass="4"/>)"));
   auto& mo = must<MechanicalObject>(s, "dofs");
-  auto& f = mo.vec(kForce);
+  auto& f = mo.write(kForce);
   f.assign(24, 2.0);
   const int a = kFirstDynamicVec + 50;
   must<UniformMass>(s, "mass").acc_from_f(MechParams{}, a, kForce);
-  EXPECT_EQ(mo.vec(a), std::vector<double>(24, 0.5));
+  EXPECT_EQ(mo.write(a), std::vector<double>(24, 0.5));
 }
 
 // §1.1 Rigid3: M·dx = (m·v, inertia·m·ω); vertexMass = "mass volume I00 … I22"; gravity on the linear part.
@@ -161,13 +161,13 @@ TEST(UniformMass, RigidMassUsesTheInertiaTimesMass) {
   auto& m = must<UniformMass>(s, "mass");
   auto& mo = must<MechanicalObject>(s, "dofs");
   EXPECT_EQ(m.template_name(), "Rigid3d");
-  mo.vec(kDx) = {1, 1, 1, 1, 1, 1};
-  mo.vec(kDforce).assign(6, 0.0);
+  mo.write(kDx) = {1, 1, 1, 1, 1, 1};
+  mo.write(kDforce).assign(6, 0.0);
   m.add_mdx(MechParams{}, kDforce, kDx, 1.0);
-  EXPECT_EQ(mo.vec(kDforce), (std::vector<double>{2, 2, 2, 2, 6, 10}));
+  EXPECT_EQ(mo.write(kDforce), (std::vector<double>{2, 2, 2, 2, 6, 10}));
   MechanicalOps ops(*s.root);
   ops.compute_force(kForce);
-  EXPECT_EQ(mo.vec(kForce), (std::vector<double>{0, -20, 0, 0, 0, 0}));
+  EXPECT_EQ(mo.write(kForce), (std::vector<double>{0, -20, 0, 0, 0, 0}));
 }
 
 // ---------------------------------------------------------------- FixedProjectiveConstraint
@@ -178,9 +178,9 @@ TEST(FixedProjectiveConstraint, DefaultIndicesAreZero) {
   auto& fix = must<FixedProjectiveConstraint>(s, "fix");
   EXPECT_EQ(fix.indices.get(), (std::vector<unsigned>{0}));
   auto& mo = must<MechanicalObject>(s, "dofs");
-  mo.vec(kDx).assign(24, 1.0);
+  mo.write(kDx).assign(24, 1.0);
   fix.project_response(kDx);
-  for (std::size_t i = 0; i < 24; ++i) EXPECT_EQ(mo.vec(kDx)[i], i < 3 ? 0.0 : 1.0) << i;
+  for (std::size_t i = 0; i < 24; ++i) EXPECT_EQ(mo.write(kDx)[i], i < 3 ? 0.0 : 1.0) << i;
 }
 
 // §4: projectResponse sets dx_i = 0 for the listed DoFs only.
@@ -188,7 +188,7 @@ TEST(FixedProjectiveConstraint, ProjectResponseZeroesTheListedDofs) {
   auto s = load(scene8(R"(<FixedProjectiveConstraint name="fix" indices="1 3-4"/>)"));
   auto& fix = must<FixedProjectiveConstraint>(s, "fix");
   auto& mo = must<MechanicalObject>(s, "dofs");
-  auto& dx = mo.vec(kDx);
+  auto& dx = mo.write(kDx);
   for (std::size_t i = 0; i < dx.size(); ++i) dx[i] = static_cast<double>(i + 1);
   fix.project_response(kDx);
   for (std::size_t d = 0; d < 8; ++d)
@@ -205,19 +205,19 @@ TEST(FixedProjectiveConstraint, OutOfRangeIndicesAreDroppedWithAWarning) {
   EXPECT_TRUE(any_contains(messages(s.root->diagnostics(), Severity::warning), "99"));
   EXPECT_EQ(fix.state(), ComponentState::valid);
   auto& mo = must<MechanicalObject>(s, "dofs");
-  mo.vec(kDx).assign(24, 1.0);
+  mo.write(kDx).assign(24, 1.0);
   fix.project_response(kDx);
-  EXPECT_EQ(mo.vec(kDx).size(), 24u);
-  for (std::size_t i = 0; i < 24; ++i) EXPECT_EQ(mo.vec(kDx)[i], (i / 3 == 2) ? 0.0 : 1.0) << i;
+  EXPECT_EQ(mo.write(kDx).size(), 24u);
+  for (std::size_t i = 0; i < 24; ++i) EXPECT_EQ(mo.write(kDx)[i], (i / 3 == 2) ? 0.0 : 1.0) << i;
 }
 
 // §4: fixAll zeroes every DoF.
 TEST(FixedProjectiveConstraint, FixAllZeroesEverything) {
   auto s = load(scene8(R"(<FixedProjectiveConstraint name="fix" fixAll="1" indices="3"/>)"));
   auto& mo = must<MechanicalObject>(s, "dofs");
-  mo.vec(kDx).assign(24, 1.0);
+  mo.write(kDx).assign(24, 1.0);
   must<FixedProjectiveConstraint>(s, "fix").project_response(kDx);
-  EXPECT_EQ(mo.vec(kDx), std::vector<double>(24, 0.0));
+  EXPECT_EQ(mo.write(kDx), std::vector<double>(24, 0.0));
 }
 
 // §4 / framework §6.5: projectVelocity is a no-op unless activate_projectVelocity.
@@ -225,13 +225,13 @@ TEST(FixedProjectiveConstraint, ProjectVelocityOnlyWhenActivated) {
   auto s = load(scene8(R"(<FixedProjectiveConstraint name="off" indices="0"/>
                           <FixedProjectiveConstraint name="on" indices="1" activate_projectVelocity="1"/>)"));
   auto& mo = must<MechanicalObject>(s, "dofs");
-  mo.vec(kVelocity).assign(24, 1.0);
+  mo.write(kVelocity).assign(24, 1.0);
   must<FixedProjectiveConstraint>(s, "off").project_velocity(kVelocity, 0);
-  EXPECT_EQ(mo.vec(kVelocity), std::vector<double>(24, 1.0));
+  EXPECT_EQ(mo.write(kVelocity), std::vector<double>(24, 1.0));
   must<FixedProjectiveConstraint>(s, "on").project_velocity(kVelocity, 0);
-  EXPECT_EQ(mo.vec(kVelocity)[3], 0.0);
-  EXPECT_EQ(mo.vec(kVelocity)[5], 0.0);
-  EXPECT_EQ(mo.vec(kVelocity)[6], 1.0);
+  EXPECT_EQ(mo.write(kVelocity)[3], 0.0);
+  EXPECT_EQ(mo.write(kVelocity)[5], 0.0);
+  EXPECT_EQ(mo.write(kVelocity)[6], 1.0);
 }
 
 // Rigid: the whole 6-scalar derivative of a fixed DoF is zeroed.
@@ -241,9 +241,9 @@ TEST(FixedProjectiveConstraint, RigidDofsZeroAllSixComponents) {
     <FixedProjectiveConstraint name="fix" indices="1"/>
   </Node>)");
   auto& mo = must<MechanicalObject>(s, "dofs");
-  mo.vec(kDx).assign(12, 1.0);
+  mo.write(kDx).assign(12, 1.0);
   must<FixedProjectiveConstraint>(s, "fix").project_response(kDx);
-  EXPECT_EQ(mo.vec(kDx), (std::vector<double>{1, 1, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0}));
+  EXPECT_EQ(mo.write(kDx), (std::vector<double>{1, 1, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0}));
 }
 
 // mechanics §0.8 (BoxConstraint pattern): indices linked to a BoxROI's output.
@@ -253,7 +253,7 @@ TEST(FixedProjectiveConstraint, IndicesFromABoxROI) {
   auto& fix = must<FixedProjectiveConstraint>(s, "fix");
   EXPECT_EQ(fix.indices.get(), (std::vector<unsigned>{0, 1, 2, 3}));
   auto& mo = must<MechanicalObject>(s, "dofs");
-  mo.vec(kDx).assign(24, 1.0);
+  mo.write(kDx).assign(24, 1.0);
   fix.project_response(kDx);
-  for (std::size_t i = 0; i < 24; ++i) EXPECT_EQ(mo.vec(kDx)[i], i < 12 ? 0.0 : 1.0) << i;
+  for (std::size_t i = 0; i < 24; ++i) EXPECT_EQ(mo.write(kDx)[i], i < 12 ? 0.0 : 1.0) << i;
 }

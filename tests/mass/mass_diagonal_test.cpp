@@ -48,7 +48,7 @@ TEST(DiagonalMass, MassDensityLumpsTetraVolumesOfTheLastTopology) {
   auto& topo = *get<MeshTopologyBase>(*s.root, "tetras");
   auto& mo = must<MechanicalObject>(s, "dofs");
   ASSERT_EQ(topo.tetrahedra().size(), 12u);
-  const auto X = as_vec3(mo.vec(kRestPosition));
+  const auto X = as_vec3(mo.read(kRestPosition));
   std::vector<double> expect(12, 0.0);
   for (const Tetra& t : topo.tetrahedra()) {
     const double v = fem::tetra_volume(X[t[0]], X[t[1]], X[t[2]], X[t[3]]);
@@ -127,19 +127,19 @@ TEST(DiagonalMass, GravityMdxAccFromFAndMatrix) {
   auto& mo = must<MechanicalObject>(s, "dofs");
   MechanicalOps ops(*s.root);
   ops.compute_force(kForce);
-  const auto& f = mo.vec(kForce);
+  const auto& f = mo.read(kForce);
   for (std::size_t i = 0; i < 12; ++i) {
     EXPECT_DOUBLE_EQ(f[3 * i + 1], -10 * m.masses()[i]);
     EXPECT_EQ(f[3 * i], 0.0);
   }
-  std::vector<double>& dx = mo.vec(kDx);
+  std::vector<double>& dx = mo.write(kDx);
   for (std::size_t i = 0; i < dx.size(); ++i) dx[i] = 0.1 * static_cast<double>(i);
-  std::vector<double>& res = mo.vec(kDforce);
+  std::vector<double>& res = mo.write(kDforce);
   std::fill(res.begin(), res.end(), 1.0);
   m.add_mdx(MechParams{}, kDforce, kDx, 0.5);
   for (std::size_t i = 0; i < dx.size(); ++i) EXPECT_NEAR(res[i], 1.0 + 0.5 * m.masses()[i / 3] * dx[i], 1e-14);
   m.acc_from_f(MechParams{}, kDx, kForce);
-  for (std::size_t i = 0; i < 12; ++i) EXPECT_NEAR(mo.vec(kDx)[3 * i + 1], -10.0, 1e-12);
+  for (std::size_t i = 0; i < 12; ++i) EXPECT_NEAR(mo.write(kDx)[3 * i + 1], -10.0, 1e-12);
   MatrixSink M;
   ASSERT_TRUE(m.build_mass(M));
   ASSERT_EQ(M.entries().size(), 36u);

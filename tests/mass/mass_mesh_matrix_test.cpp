@@ -76,8 +76,8 @@ TEST(MeshMatrixMass, TotalMassAndGravityRowSums) {
   ops.compute_force(kForce);
   const Eigen::MatrixXd M = dense_mass(m, 4);
   for (int i = 0; i < 4; ++i) {
-    EXPECT_NEAR(mo.vec(kForce)[3 * i + 2], -2 * M.row(3 * i + 2).sum(), 1e-12);
-    EXPECT_NEAR(mo.vec(kForce)[3 * i + 2], -2 * 2.5 * m.vertex_mass.value()[i], 1e-12);
+    EXPECT_NEAR(mo.write(kForce)[3 * i + 2], -2 * M.row(3 * i + 2).sum(), 1e-12);
+    EXPECT_NEAR(mo.write(kForce)[3 * i + 2], -2 * 2.5 * m.vertex_mass.value()[i], 1e-12);
   }
 }
 
@@ -98,9 +98,9 @@ TEST(MeshMatrixMass, AddMdxMatchesAssembledMatrix) {
   const Eigen::MatrixXd M = dense_mass(m, n);
   Eigen::VectorXd dx(3 * n);
   for (std::size_t i = 0; i < 3 * n; ++i) dx[i] = std::sin(static_cast<double>(i));
-  std::vector<double>& d = mo.vec(kDx);
+  std::vector<double>& d = mo.write(kDx);
   for (std::size_t i = 0; i < 3 * n; ++i) d[i] = dx[i];
-  std::vector<double>& r = mo.vec(kDforce);
+  std::vector<double>& r = mo.write(kDforce);
   std::fill(r.begin(), r.end(), 0.0);
   m.add_mdx(MechParams{}, kDforce, kDx, 0.3);
   const Eigen::VectorXd ref = 0.3 * M * dx;
@@ -121,7 +121,7 @@ TEST(MeshMatrixMass, LumpedMassIsDiagonal) {
   MechanicalOps ops(*s.root);
   ops.compute_force(kForce);
   m.acc_from_f(MechParams{}, kDx, kForce);
-  for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(mo.vec(kDx)[3 * i + 2], -2.0, 1e-12);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(mo.write(kDx)[3 * i + 2], -2.0, 1e-12);
 }
 
 // Non-lumped accFromF is refused with an error (as SOFA).

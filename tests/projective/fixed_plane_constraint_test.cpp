@@ -59,7 +59,7 @@ std::string chain(const std::string& solver, const std::string& constraint) {
 
 std::vector<double> positions(Node& root) {
   MechanicalOps ops(root);
-  return ops.independent_states().front()->vec(kPosition);
+  return ops.independent_states().front()->write(kPosition);
 }
 
 std::vector<std::vector<double>> trajectory(const std::string& xml, int steps) {
@@ -190,7 +190,7 @@ TEST(FixedPlaneConstraint, ProjectsOnlyTheComponentAlongTheDirection) {
   auto s = load(block(kCG, R"(<FixedPlaneProjectiveConstraint name="fp" indices="0" direction="0.6 0 0.8"/>)"));
   auto* fp = get<FixedPlaneProjectiveConstraint>(*s.root, "fp");
   ASSERT_NE(fp, nullptr);
-  std::vector<double>& v = fp->mstate->vec(kVelocity);
+  std::vector<double>& v = fp->mstate->write(kVelocity);
   v[0] = 1.0, v[1] = 2.0, v[2] = 3.0, v[3] = 4.0;
   fp->project_response(kVelocity);
   const double dot = 0.6 * 1.0 + 0.8 * 3.0;
@@ -219,7 +219,7 @@ TEST(FixedPlaneConstraint, RigidAndVec6Templates) {
   auto* fp = dynamic_cast<FixedPlaneProjectiveConstraint*>(s.root->children()[0]->find_object_named("fp"));
   ASSERT_NE(fp, nullptr);
   EXPECT_EQ(fp->constrained(), std::vector<unsigned>{0});
-  std::vector<double>& v = fp->mstate->vec(kVelocity);
+  std::vector<double>& v = fp->mstate->write(kVelocity);
   ASSERT_EQ(v.size(), 12u);
   for (int i = 0; i < 12; ++i) v[i] = i + 1;
   fp->project_response(kVelocity);
@@ -234,7 +234,7 @@ TEST(FixedPlaneConstraint, RigidAndVec6Templates) {
   auto* fp6 = dynamic_cast<FixedPlaneProjectiveConstraint*>(s.root->children()[1]->find_object_named("fp6"));
   ASSERT_NE(fp6, nullptr);
   EXPECT_EQ(fp6->constrained(), std::vector<unsigned>{0});
-  std::vector<double>& w = fp6->mstate->vec(kVelocity);
+  std::vector<double>& w = fp6->mstate->write(kVelocity);
   for (int i = 0; i < 12; ++i) w[i] = 1.0;
   fp6->project_response(kVelocity);
   EXPECT_EQ(w[5], 0.0);

@@ -151,13 +151,13 @@ TEST(LinsysAllocation, MappedAssemblyDoesNotAllocateAfterTheFirstStepAndMatchesT
 
     // A·dx against P·(mM + bB + kK)·dx through the mappings.
     for (MechanicalState* st : ops.independent_states())
-      for (double& x : st->vec(dx)) x = u(rng);
+      for (double& x : st->write(dx)) x = u(rng);
     ops.project_response(dx);
     ops.propagate_dx_and_reset_df(dx, df);
     ops.add_mbk_dx(df, 1.01, -0.02, -0.0004, dx, /*clear=*/false);
     ops.project_response(df);
-    const auto& x = ops.independent_states().front()->vec(dx);
-    const auto& ref = ops.independent_states().front()->vec(df);
+    const auto& x = ops.independent_states().front()->read(dx);
+    const auto& ref = ops.independent_states().front()->read(df);
     std::vector<double> y(12);
     A.mult(x.data(), y.data());
     double err = 0, norm = 0;

@@ -48,13 +48,13 @@ void randomize(MechanicalOps& ops, int id, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-1, 1);
   for (MechanicalState* s : ops.independent_states())
-    for (double& x : s->vec(id)) x = u(rng);
+    for (double& x : s->write(id)) x = u(rng);
 }
 
 Eigen::VectorXd gather(MechanicalOps& ops, int id) {
   std::vector<double> all;
   for (MechanicalState* s : ops.independent_states()) {
-    const auto& v = s->vec(id);
+    const auto& v = s->read(id);
     all.insert(all.end(), v.begin(), v.end());
   }
   return Eigen::Map<Eigen::VectorXd>(all.data(), static_cast<Eigen::Index>(all.size()));
@@ -83,7 +83,7 @@ void expect_assembled_equals_matrix_free(Node& root, double m, double b, double 
 
 std::vector<double> positions(Node& root) {
   MechanicalOps ops(root);
-  return ops.independent_states().front()->vec(kPosition);
+  return ops.independent_states().front()->write(kPosition);
 }
 
 }  // namespace
@@ -115,7 +115,7 @@ TEST(LinsysAssembly, DirichletRowsAreIdentityAndPatternIsBuiltOnce) {
   EXPECT_EQ(sys->matrix_size.value(), VecNi<2>(960, 960));
   // The 16 points of the z = 0 face are fixed.
   MechanicalOps ops(root);
-  const auto& x = ops.independent_states().front()->vec(kPosition);
+  const auto& x = ops.independent_states().front()->read(kPosition);
   int fixed = 0;
   for (int i = 0; i < 320; ++i) {
     if (std::abs(x[3 * i + 2]) > 1e-4) continue;

@@ -18,8 +18,8 @@ std::string particle(const std::string& solver, const std::string& extra = "") {
          "<MechanicalObject name=\"dofs\" position=\"1 2 3\"/><UniformMass totalMass=\"2\"/>" + extra + "</Node>";
 }
 
-Vec3 pos(Node& root) { return as_vec3(get<MechanicalObject>(root, "dofs")->vec(kPosition))[0]; }
-Vec3 vel(Node& root) { return as_vec3(get<MechanicalObject>(root, "dofs")->vec(kVelocity))[0]; }
+Vec3 pos(Node& root) { return as_vec3(get<MechanicalObject>(root, "dofs")->write(kPosition))[0]; }
+Vec3 vel(Node& root) { return as_vec3(get<MechanicalObject>(root, "dofs")->write(kVelocity))[0]; }
 
 TEST(EulerExplicitSolver, SymplecticUsesTheNewVelocity) {
   auto s = test::load(particle("<EulerExplicitSolver/>"));
@@ -57,7 +57,7 @@ TEST(RungeKutta4Solver, HarmonicOscillatorFourthOrder) {
       "<UniformMass totalMass=\"1\"/><RestShapeSpringsForceField stiffness=\"1\"/></Node>";
   auto s = test::load(xml);
   auto* mo = get<MechanicalObject>(*s.root, "dofs");
-  mo->vec(kPosition)[0] = 1.0;  // start displaced by 1 along x
+  mo->write(kPosition)[0] = 1.0;  // start displaced by 1 along x
   for (int i = 0; i < 100; ++i) animate(*s.root);
   EXPECT_NEAR(pos(*s.root).x(), std::cos(1.0), 1e-9);   // global error O(h⁴)
   EXPECT_NEAR(vel(*s.root).x(), -std::sin(1.0), 1e-9);

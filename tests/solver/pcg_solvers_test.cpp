@@ -46,8 +46,8 @@ class DenseMatrixForceField final : public ForceField, public RotationFinder {
   MechanicalState* rotation_state() const override { return mstate.get(); }
   void add_force(const MechParams&) override {}
   void add_dforce(const MechParams& p, double kfactor) override {
-    const auto& dx = mstate->vec(p.dx);
-    auto& df = mstate->vec(p.df);
+    const auto& dx = mstate->read(p.dx);
+    auto& df = mstate->write(p.df);
     const Eigen::Index n = K.rows();
     for (Eigen::Index i = 0; i < n; ++i) {
       double s = 0;
@@ -96,8 +96,8 @@ struct MatrixFreeScene {
   LinearSolver& solver() { return *s.root->linear_solvers.front(); }
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs, const Eigen::VectorXd* guess = nullptr) {
     MechanicalState* st = s.root->mechanical_state;
-    auto& bv = st->vec(b);
-    auto& xv = st->vec(x);
+    auto& bv = st->write(b);
+    auto& xv = st->write(x);
     for (Eigen::Index i = 0; i < rhs.size(); ++i) {
       bv[static_cast<std::size_t>(i)] = rhs[i];
       xv[static_cast<std::size_t>(i)] = guess ? (*guess)[i] : 0.0;
@@ -333,13 +333,13 @@ TEST(PcgCompositeLinearSystem, BuildsEverySystemAndSolvesWithTheSolverSystem) {
   // A = 1·M + 1·K with M = 2·I.
   MechanicalState* st = sc.s.root->mechanical_state;
   const Eigen::VectorXd b = random_vec(n, 4);
-  auto& bv = st->vec(sc.b);
+  auto& bv = st->write(sc.b);
   for (int i = 0; i < n; ++i) bv[static_cast<std::size_t>(i)] = b[i];
   sc.solver().build_system(*sc.ops, 1.0, 0.0, 1.0);
   sc.solver().solve_system(*sc.ops, sc.x, sc.b);
   const Eigen::MatrixXd full = A + 2.0 * Eigen::MatrixXd::Identity(n, n);
   Eigen::VectorXd x(n);
-  for (int i = 0; i < n; ++i) x[i] = st->vec(sc.x)[static_cast<std::size_t>(i)];
+  for (int i = 0; i < n; ++i) x[i] = st->write(sc.x)[static_cast<std::size_t>(i)];
   EXPECT_LT((x - full.ldlt().solve(b)).norm(), 1e-10 * x.norm());
   EXPECT_LT((K->matrix().to_dense() - A).norm(), 1e-12 * A.norm());
   EXPECT_LT((comp->matrix().to_dense() - full).norm(), 1e-12 * A.norm());

@@ -297,16 +297,16 @@ TEST(MechanicalObjectInit, RigidLinkedToPointsGetsIdentityOrientation) {
 TEST(MechanicalObjectRigid, CoordPlusDerivRotatesAboutTheWorldAxis) {
   MechanicalObject mo(StateType::rigid3);
   mo.resize(1);
-  auto& x = mo.vec(kPosition);
+  auto& x = mo.write(kPosition);
   ASSERT_EQ(x.size(), 7u);
   // Start rotated by 90° about x: q0 = (sin45, 0, 0, cos45).
   const double r = std::sqrt(0.5);
   x = {1, 2, 3, r, 0, 0, r};
-  auto& v = mo.vec(kVelocity);
+  auto& v = mo.write(kVelocity);
   ASSERT_EQ(v.size(), 6u);
   v = {1, 0, -1, 0, 0, M_PI / 2};  // ω h = 90° about z with h = 1
   mo.add_deriv_to_coord(kPosition, kPosition, kVelocity, 1.0);
-  const auto& y = mo.vec(kPosition);
+  const auto& y = mo.read(kPosition);
   EXPECT_EQ(y[0], 2.0);
   EXPECT_EQ(y[1], 2.0);
   EXPECT_EQ(y[2], 2.0);
@@ -321,11 +321,11 @@ TEST(MechanicalObjectRigid, CoordPlusDerivRotatesAboutTheWorldAxis) {
 TEST(MechanicalObjectRigid, SmallStepFromIdentity) {
   MechanicalObject mo(StateType::rigid3);
   mo.resize(1);
-  auto& v = mo.vec(kVelocity);
+  auto& v = mo.write(kVelocity);
   const double w = 0.3, h = 0.01;
   v = {0, 0, 0, 0, 0, w};
   mo.add_deriv_to_coord(kPosition, kPosition, kVelocity, h);
-  const auto& y = mo.vec(kPosition);
+  const auto& y = mo.read(kPosition);
   EXPECT_EQ(y[3], 0.0);
   EXPECT_EQ(y[4], 0.0);
   EXPECT_NEAR(y[5], std::sin(w * h / 2), 1e-17);
@@ -335,18 +335,18 @@ TEST(MechanicalObjectRigid, SmallStepFromIdentity) {
 TEST(MechanicalObjectVec3, CoordPlusDerivIsComponentWise) {
   MechanicalObject mo(StateType::vec3);
   mo.resize(2);
-  mo.vec(kPosition) = {0, 1, 2, 3, 4, 5};
-  mo.vec(kVelocity) = {1, 1, 1, -1, 0, 2};
+  mo.write(kPosition) = {0, 1, 2, 3, 4, 5};
+  mo.write(kVelocity) = {1, 1, 1, -1, 0, 2};
   mo.add_deriv_to_coord(kFreePosition, kPosition, kVelocity, 0.5);
-  EXPECT_EQ(mo.vec(kFreePosition), (std::vector<double>{0.5, 1.5, 2.5, 2.5, 4, 6}));
-  EXPECT_EQ(mo.vec(kPosition), (std::vector<double>{0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(mo.write(kFreePosition), (std::vector<double>{0.5, 1.5, 2.5, 2.5, 4, 6}));
+  EXPECT_EQ(mo.write(kPosition), (std::vector<double>{0, 1, 2, 3, 4, 5}));
 }
 
 // §5.3: endIntegration empties externalForce.
 TEST(MechanicalObjectVec3, EndIntegrationEmptiesExternalForce) {
   MechanicalObject mo(StateType::vec3);
   mo.resize(2);
-  mo.vec(kExternalForce).assign(6, 1.0);
+  mo.write(kExternalForce).assign(6, 1.0);
   mo.end_integration();
   EXPECT_TRUE(mo.external_force.value().data.empty());
 }
@@ -355,8 +355,8 @@ TEST(MechanicalObjectVec3, EndIntegrationEmptiesExternalForce) {
 TEST(MechanicalObjectVec3, ResetRestoresStoredPositions) {
   auto s = load(R"(<Node><MechanicalObject name="dofs" position="1 2 3"/></Node>)");
   auto& mo = mo_of(s);
-  mo.vec(kPosition) = {9, 9, 9};
-  mo.vec(kVelocity) = {1, 1, 1};
+  mo.write(kPosition) = {9, 9, 9};
+  mo.write(kVelocity) = {1, 1, 1};
   mo.reset();
   EXPECT_EQ(mo.position.get().data, (std::vector<double>{1, 2, 3}));
   EXPECT_EQ(mo.velocity.get().data, (std::vector<double>{0, 0, 0}));
@@ -366,8 +366,8 @@ TEST(MechanicalObjectVec3, ResetRestoresStoredPositions) {
 TEST(MechanicalObjectVec3, DynamicVectorsAreZeroFilledAndPersistent) {
   MechanicalObject mo(StateType::vec3);
   mo.resize(3);
-  auto& t = mo.vec(kFirstDynamicVec + 100);
+  auto& t = mo.write(kFirstDynamicVec + 100);
   EXPECT_EQ(t, std::vector<double>(9, 0.0));
   t[4] = 5;
-  EXPECT_EQ(mo.vec(kFirstDynamicVec + 100)[4], 5.0);
+  EXPECT_EQ(mo.write(kFirstDynamicVec + 100)[4], 5.0);
 }

@@ -48,7 +48,7 @@ inline bool all_finite(Node& root) {
   root.collect_down(states);
   for (MechanicalState* s : states)
     for (int id : {kPosition, kVelocity})
-      for (double x : s->vec(id))
+      for (double x : s->read(id))
         if (!std::isfinite(x)) return false;
   return true;
 }

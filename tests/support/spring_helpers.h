@@ -17,9 +17,9 @@ namespace sinew::test {
 // f(x, v) of `ff` alone on state `s` (other vectors untouched).
 inline std::vector<double> force_at(ForceField& ff, MechanicalState& s, const std::vector<double>& x,
                                     const std::vector<double>* v = nullptr) {
-  s.vec(kPosition) = x;
-  if (v) s.vec(kVelocity) = *v;
-  auto& f = s.vec(kForce);
+  s.write(kPosition) = x;
+  if (v) s.write(kVelocity) = *v;
+  auto& f = s.write(kForce);
   std::fill(f.begin(), f.end(), 0.0);
   ff.add_force(MechParams{});
   return f;
@@ -27,8 +27,8 @@ inline std::vector<double> force_at(ForceField& ff, MechanicalState& s, const st
 
 // kfactor·K·dx via add_dforce (after add_force at the current positions).
 inline std::vector<double> dforce(ForceField& ff, MechanicalState& s, const std::vector<double>& dx, double k = 1.0) {
-  s.vec(kDx) = dx;
-  auto& df = s.vec(kDforce);
+  s.write(kDx) = dx;
+  auto& df = s.write(kDforce);
   std::fill(df.begin(), df.end(), 0.0);
   MechParams p;
   p.k = k;

@@ -4,7 +4,8 @@
 
 #include "core/mechanical_ops.h"
 #include "core/registry.h"
-#include "core/timer.h"
+#include "core/node.h"
+#include "core/profile.h"
 #include "solver/linear/assembled_cg_linear_solver.h"
 
 namespace sinew {
@@ -40,7 +41,7 @@ void CGLinearSolver::build_system(MechanicalOps& ops, double m, double b, double
 }
 
 void CGLinearSolver::product(MechanicalOps& ops, int p, int q) {
-  SINEW_TIMED("linear solve/matrix-free product");
+  SINEW_TIMED(ops.node().root()->profile(), "linear solve/matrix-free product");
   ops.propagate_dx_and_reset_df(p, q);
   ops.add_mbk_dx(q, m_, b_, k_, p, /*clear=*/false);
   ops.project_response(q);

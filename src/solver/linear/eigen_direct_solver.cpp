@@ -11,7 +11,7 @@ void EigenDirectSolver::init() {
   factor_ = make(ordering_name_);
   if (!factor_) {
     msg_error("the ordering method '" + ordering_name_ + "' is not supported by this solver");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
   }
 }
 

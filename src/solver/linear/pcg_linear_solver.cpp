@@ -17,7 +17,7 @@ void PCGLinearSolver::init() {
     system_ = dynamic_cast<PreconditionedMatrixFreeSystem*>(linear_system.get());
     if (!system_) {
       msg_error("the linear system " + linear_system->describe() + " is not a PreconditionedMatrixFreeSystem");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
   } else {
@@ -58,25 +58,25 @@ void PCGLinearSolver::init() {
              "gradient. Without preconditioner, the solver will act as a regular conjugate gradient solver.");
   } else if (!preconditioner) {
     msg_error("No preconditioner found at path: " + preconditioner.path());
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   } else {
     precond_ = dynamic_cast<MatrixLinearSolver*>(preconditioner.get());
     if (!precond_) {
       msg_error("Can not use the preconditioner " + preconditioner->describe() +
                 " because it is templated on GraphScatteredType");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
   }
   r_ = MechanicalOps::alloc_vec();
   w_ = MechanicalOps::alloc_vec();
   s_ = MechanicalOps::alloc_vec();
-  state_ = ComponentState::valid;
+  set_state(ComponentState::valid);
 }
 
 void PCGLinearSolver::bwd_init() {
-  if (state_ == ComponentState::invalid || !precond_ || !system_) return;
+  if (state() == ComponentState::invalid || !precond_ || !system_) return;
   // The preconditioner's matrix is assembled through the PCG's system.
   if (MatrixLinearSystem* ps = precond_->system()) system_->preconditioner_system.set(ps);
 }
@@ -89,7 +89,7 @@ void PCGLinearSolver::handle_event(Event& e) {
 }
 
 void PCGLinearSolver::build_system(MechanicalOps& ops, double m, double b, double k) {
-  if (state_ == ComponentState::invalid || !system_) return;
+  if (state() == ComponentState::invalid || !system_) return;
   system_->build_system_matrix(ops, m, b, k);
 }
 
@@ -102,7 +102,7 @@ void PCGLinearSolver::apply_preconditioner(MechanicalOps& ops, int z, int r) {
 }
 
 void PCGLinearSolver::solve_system(MechanicalOps& ops, int x, int rhs) {
-  if (state_ == ComponentState::invalid || !system_) return;
+  if (state() == ComponentState::invalid || !system_) return;
   ++newton_iter_;
   errors_.clear();
   const PreconditionedMatrixFreeSystem& A = *system_;

@@ -11,8 +11,7 @@ void EulerExplicitSolver::init() {
 }
 
 void EulerExplicitSolver::solve(double dt, int x_result, int v_result) {
-  if (!ops_) ops_ = std::make_unique<MechanicalOps>(*node());
-  MechanicalOps& ops = *ops_;
+  MechanicalOps& ops = scope();
   const double h = dt;
 
   if (v_result != kVelocity) ops.v_eq(v_result, kVelocity);
@@ -30,7 +29,7 @@ void EulerExplicitSolver::solve(double dt, int x_result, int v_result) {
     ops.project_response(kForce);
     if (!linear_solver) {
       msg_error("the mass is not diagonal: a linear solver is needed (none found in this node or above)");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
     linear_solver->build_system(ops, 1.0, 0.0, 0.0);
@@ -43,11 +42,6 @@ void EulerExplicitSolver::solve(double dt, int x_result, int v_result) {
     // Positions move with the velocity of the start of the step.
     for (MechanicalState* s : ops.independent_states()) s->add_deriv_to_coord(x_result, kPosition, v_result, h);
     ops.v_peq(v_result, acc_, h);
-  }
-  if (!ops.all_finite(x_result) || !ops.all_finite(v_result)) {
-    msg_error("the simulation diverged at step " + std::to_string(node()->root()->step_index) + ", t = " +
-              parse::format_double(node()->time.value() + h) + " (non-finite positions or velocities); reduce dt");
-    state_ = ComponentState::invalid;
   }
 }
 

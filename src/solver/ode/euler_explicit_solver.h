@@ -22,7 +22,6 @@ class EulerExplicitSolver final : public OdeSolver {
   void solve(double dt, int x_result, int v_result) override;
 
  private:
-  std::unique_ptr<MechanicalOps> ops_;
   int acc_ = -1;
 };
 

@@ -17,10 +17,10 @@ namespace sinew {
 class EulerImplicitSolver final : public OdeSolver {
  public:
   Field<double> rayleigh_stiffness{this, "rayleighStiffness", 0.0, "Rayleigh damping related to stiffness (rK)",
-                                   "Solver"};
-  Field<double> rayleigh_mass{this, "rayleighMass", 0.0, "Rayleigh damping related to mass (rM)", "Solver"};
+                                   "Solver", "time"};
+  Field<double> rayleigh_mass{this, "rayleighMass", 0.0, "Rayleigh damping related to mass (rM)", "Solver", "1/time"};
   Field<double> vdamping{this, "vdamping", 0.0, "velocity decay rate: v *= exp(−dt·vdamping) after each step",
-                         "Solver"};
+                         "Solver", "1/time"};
   Field<bool> first_order{this, "firstOrder", false, "use the first-order variant (velocity = solution)", "Solver"};
   Field<bool> trapezoidal_scheme{this, "trapezoidalScheme", false, "use 0.5 instead of 1 in the factors",
                                  "Solver"};
@@ -36,7 +36,6 @@ class EulerImplicitSolver final : public OdeSolver {
   void solve(double dt, int x_result, int v_result) override;
 
  private:
-  std::unique_ptr<MechanicalOps> ops_;
   int x_ = -1, b_ = -1;  // solution (kept between steps) and right-hand side
 };
 

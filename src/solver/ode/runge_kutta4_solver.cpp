@@ -10,7 +10,7 @@ void RungeKutta4Solver::init() {
 }
 
 void RungeKutta4Solver::acceleration(double t, int X, int V, int a) {
-  MechanicalOps& ops = *ops_;
+  MechanicalOps& ops = scope();
   ops.project_position(X, t);
   ops.project_velocity(V, t);
   ops.propagate_x_and_v(X, V);
@@ -20,8 +20,7 @@ void RungeKutta4Solver::acceleration(double t, int X, int V, int a) {
 }
 
 void RungeKutta4Solver::solve(double dt, int x_result, int v_result) {
-  if (!ops_) ops_ = std::make_unique<MechanicalOps>(*node());
-  MechanicalOps& ops = *ops_;
+  MechanicalOps& ops = scope();
   const double h = dt, t0 = node()->time.value();
   const double h2 = h / 2.0, h3 = h / 3.0, h6 = h / 6.0;
   const int pos = kPosition, vel = kVelocity;
@@ -54,11 +53,6 @@ void RungeKutta4Solver::solve(double dt, int x_result, int v_result) {
   ops.v_peq(v_result, k2a_, h3);
   ops.v_peq(v_result, k3a_, h3);
   ops.v_peq(v_result, k4a_, h6);
-  if (!ops.all_finite(x_result) || !ops.all_finite(v_result)) {
-    msg_error("the simulation diverged at step " + std::to_string(node()->root()->step_index) +
-              ", t = " + parse::format_double(t0 + h) + " (non-finite positions or velocities); reduce dt");
-    state_ = ComponentState::invalid;
-  }
 }
 
 void register_runge_kutta4_solver(Registry& r) {

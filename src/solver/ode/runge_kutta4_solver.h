@@ -19,7 +19,6 @@ class RungeKutta4Solver final : public OdeSolver {
   // a = M⁻¹ f(X, V) at time t, with X and V projected in place first.
   void acceleration(double t, int X, int V, int a);
 
-  std::unique_ptr<MechanicalOps> ops_;
   int k1a_ = -1, k2a_ = -1, k3a_ = -1, k4a_ = -1, k2v_ = -1, k3v_ = -1, k4v_ = -1, X_ = -1;
 };
 

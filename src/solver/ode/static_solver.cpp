@@ -26,7 +26,7 @@ class StaticFunction final : public NonlinearFunction {
   double x_norm2() override {
     double n = 0;
     for (MechanicalState* s : ops_.independent_states())
-      for (double v : s->vec(x_)) n += v * v;
+      for (double v : s->read(x_)) n += v * v;
     return n;
   }
 
@@ -61,7 +61,7 @@ void StaticSolver::init() {
   if (!linear_solver) linear_solver.set(node()->find_down<LinearSolver>());
   if (!linear_solver) {
     msg_error("no linear solver found in this node or below it");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (!newton_solver) newton_solver.set(node()->find_down<NewtonRaphsonSolver>());
@@ -79,14 +79,10 @@ void StaticSolver::init() {
 }
 
 void StaticSolver::solve(double, int x_result, int) {
-  if (!ops_) ops_ = std::make_unique<MechanicalOps>(*node());
-  if (x_result != kPosition) ops_->v_eq(x_result, kPosition);
-  StaticFunction fn(*ops_, *linear_solver, x_result, dx_);
+  MechanicalOps& ops = scope();
+  if (x_result != kPosition) ops.v_eq(x_result, kPosition);
+  StaticFunction fn(ops, *linear_solver, x_result, dx_);
   newton_solver->solve(fn);
-  if (!ops_->all_finite(x_result)) {
-    msg_error("the static solution is not finite (singular or indefinite stiffness?)");
-    state_ = ComponentState::invalid;
-  }
 }
 
 void register_static_solver(Registry& r) {

@@ -19,9 +19,9 @@ class StaticSolver final : public OdeSolver {
   void parse(AttributeMap& attrs, Diagnostics& diag) override;
   void init() override;
   void solve(double dt, int x_result, int v_result) override;
+  const char* divergence_hint() const override { return "singular or indefinite stiffness?"; }
 
  private:
-  std::unique_ptr<MechanicalOps> ops_;
   int dx_ = -1;
   // Deprecated attributes forwarded to the Newton solver it creates.
   std::vector<std::pair<std::string, std::string>> forwarded_;

@@ -27,7 +27,7 @@ void PrecomputedWarpPreconditioner::init() {
   MechanicalState* s = node()->get_mechanical_state();
   if (!s || s->state_type() != StateType::vec3) {
     msg_error("PrecomputedWarpPreconditioner needs a Vec3d MechanicalObject in its context");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (!linear_system) {
@@ -157,7 +157,7 @@ void PrecomputedWarpPreconditioner::rotate() {
 }
 
 void PrecomputedWarpPreconditioner::invert(const BlockCsrMatrix& A) {
-  if (state_ == ComponentState::invalid) return;
+  if (state() == ComponentState::invalid) return;
   if (first_) {
     first_ = false;
     load_matrix(A);

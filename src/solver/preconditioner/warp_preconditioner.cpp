@@ -36,12 +36,12 @@ void WarpPreconditioner::init() {
   rotations_ = dynamic_cast<RotationMatrixSystem*>(linear_system.get());
   if (!rotations_) {
     msg_error("the linear system " + linear_system->describe() + " is not a RotationMatrixSystem");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
   }
 }
 
 void WarpPreconditioner::bwd_init() {
-  if (state_ == ComponentState::invalid) return;
+  if (state() == ComponentState::invalid) return;
   if (!linear_solver) {
     msg_info("Link \"linearSolver\" to the desired linear solver should be set to ensure right behavior. First "
              "LinearSolver found in current context will be used.");
@@ -54,19 +54,19 @@ void WarpPreconditioner::bwd_init() {
   if (!linear_solver) {
     msg_error("No LinearSolver component found at path '" + linear_solver.path() + "', nor in the current context " +
               node()->describe());
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   inner_ = dynamic_cast<MatrixLinearSolver*>(linear_solver.get());
   if (!inner_ || inner_ == this) {
     msg_error("Can not use the solver " + linear_solver->describe() + " because it is templated on GraphScatteredType");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     inner_ = nullptr;
     return;
   }
   if (!inner_->system()) {
     msg_error("the solver " + linear_solver->describe() + " has no linear system");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     inner_ = nullptr;
   }
 }
@@ -74,7 +74,7 @@ void WarpPreconditioner::bwd_init() {
 void WarpPreconditioner::solve(const BlockCsrMatrix&, Eigen::VectorXd& z, const Eigen::VectorXd& r) {
   const Eigen::Index n = r.size();
   if (z.size() != n) z.setZero(n);
-  if (state_ == ComponentState::invalid || !inner_ || !rotations_) return;
+  if (state() == ComponentState::invalid || !inner_ || !rotations_) return;
   MatrixLinearSystem& sys = *inner_->system();
   if (!sys.assembled() || static_cast<Eigen::Index>(sys.size()) != n) {
     if (!warned_) {

@@ -11,13 +11,13 @@ void CompositeLinearSystem::init() {
   systems_ = linear_systems.targets();
   if (std::find(systems_.begin(), systems_.end(), this) != systems_.end()) {
     msg_error("the composite linear system cannot contain itself");
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   if (systems_.empty()) {
     if (!solver_linear_system) {
       msg_error("no linear system given: set 'linearSystems' and/or 'solverLinearSystem'");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
     systems_.push_back(solver_linear_system.get());
@@ -37,7 +37,7 @@ void CompositeLinearSystem::init() {
     }
     if (!solver_linear_system) {
       msg_error("no linear system of type " + mine + " in 'linearSystems' to be used by the linear solver");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
   }
@@ -49,7 +49,7 @@ void CompositeLinearSystem::init() {
 }
 
 void CompositeLinearSystem::build_system_matrix(MechanicalOps& ops, double m, double b, double k) {
-  if (state_ == ComponentState::invalid || !enable_assembly.value()) return;
+  if (state() == ComponentState::invalid || !enable_assembly.value()) return;
   for (MatrixLinearSystem* s : systems_) s->build_system_matrix(ops, m, b, k);
   MatrixLinearSystem& solver = *solver_linear_system;
   // The linear solver works on the solver system's matrix; the composite holds a copy

@@ -26,6 +26,12 @@ class LinearSystemListLink final : public BaseLink {
   void add_target(Base* b) override {
     if (auto* s = dynamic_cast<MatrixLinearSystem*>(b)) targets_.push_back(s);
   }
+  bool references(const Base* b) const override {
+    for (MatrixLinearSystem* s : targets_)
+      if (static_cast<const Base*>(s) == b) return true;
+    return false;
+  }
+  void forget(const Base* b) override { std::erase_if(targets_, [&](MatrixLinearSystem* s) { return static_cast<const Base*>(s) == b; }); }
   const std::vector<MatrixLinearSystem*>& targets() const { return targets_; }
 
  private:

@@ -27,7 +27,7 @@ void RotationMatrixSystem::init() {
     finder_ = dynamic_cast<RotationFinder*>(rotation_finder.get());
     if (!finder_) {
       msg_error(rotation_finder->describe() + " is not a rotation finder (a corotational FEM force field)");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
   } else {
@@ -35,7 +35,7 @@ void RotationMatrixSystem::init() {
     if (!finder_) {
       msg_error("A RotationFinder is required by RotationMatrixSystem but has not been found. The available "
                 "rotation finders are: HexahedronFEMForceField, TetrahedronFEMForceField");
-      state_ = ComponentState::invalid;
+      set_state(ComponentState::invalid);
       return;
     }
     rotation_finder.set(dynamic_cast<Component*>(finder_));
@@ -53,7 +53,7 @@ void RotationMatrixSystem::init() {
   if (!main_system) {
     msg_error("No linear system component found at path '" + main_system.path() + "', nor in the current context " +
               node()->describe());
-    state_ = ComponentState::invalid;
+    set_state(ComponentState::invalid);
     return;
   }
   counter_ = assembling_rate.value();  // assemble at the first build
@@ -100,7 +100,7 @@ void RotationMatrixSystem::fill_rotations() {
 }
 
 void RotationMatrixSystem::build_system_matrix(MechanicalOps& ops, double m, double b, double k) {
-  if (state_ == ComponentState::invalid) return;
+  if (state() == ComponentState::invalid) return;
   main_assembled_last_ = false;
   if (main_system && ++counter_ >= assembling_rate.value()) {
     main_system->build_system_matrix(ops, m, b, k);

@@ -171,7 +171,7 @@ void SystemAssembler::assemble_mapped(MechanicalOps& ops, const Component& owner
 void SystemAssembler::gather(int id, Eigen::VectorXd& out) const {
   if (static_cast<std::size_t>(out.size()) != n_) out.setZero(static_cast<Eigen::Index>(n_));
   for (const StateBlock& b : layout_) {
-    const auto& v = b.state->vec(id);
+    const auto& v = b.state->read(id);
     const std::size_t m = std::min(v.size(), b.size);
     for (std::size_t i = 0; i < m; ++i) out[static_cast<Eigen::Index>(b.offset + i)] = v[i];
     for (std::size_t i = m; i < b.size; ++i) out[static_cast<Eigen::Index>(b.offset + i)] = 0.0;
@@ -180,7 +180,7 @@ void SystemAssembler::gather(int id, Eigen::VectorXd& out) const {
 
 void SystemAssembler::scatter(const Eigen::VectorXd& in, int id) const {
   for (const StateBlock& b : layout_) {
-    auto& v = b.state->vec(id);
+    auto& v = b.state->write(id);
     if (v.size() < b.size) v.resize(b.size, 0.0);
     for (std::size_t i = 0; i < b.size && b.offset + i < static_cast<std::size_t>(in.size()); ++i)
       v[i] = in[static_cast<Eigen::Index>(b.offset + i)];

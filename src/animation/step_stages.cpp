@@ -1,0 +1,198 @@
+#include "animation/step_stages.h"
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include <oneapi/tbb/parallel_for.h>
+
+#include "core/simulation.h"
+
+namespace sinew {
+
+namespace {
+
+void gather(Node& node, GraphView& v) {
+  if (!node.activated.value() || node.sleeping.value()) return;
+  if (!node.solvers.empty()) {
+    // A solver integrates its whole subtree; solvers below it never run.
+    v.solver_nodes.push_back(&node);
+    v.solve_order.push_back({&node, true});
+    return;
+  }
+  if (!node.interaction_force_fields.empty()) {
+    if (v.solver_nodes.empty()) v.early_interactions.push_back(&node);
+    else v.solve_order.push_back({&node, false});
+  }
+  for (std::size_t i = 0; i < node.children().size(); ++i) gather(*node.children()[i], v);
+}
+
+// Interaction force fields above the solver nodes are explicit: computed
+// once, from the positions of that moment, into the states' externalForce.
+void add_interaction_forces(Node& node) {
+  MechParams p;
+  p.f = kExternalForce;
+  for (ForceField* ff : node.interaction_force_fields)
+    if (ff->state() == ComponentState::valid) ff->add_force(p);
+}
+
+void solve_node(Node& node, double dt) {
+  for (OdeSolver* s : node.solvers)
+    if (s->state() == ComponentState::valid) s->solve(dt, kPosition, kVelocity);
+}
+
+// Index of the first non-finite scalar, or -1.
+long first_non_finite(const std::vector<double>& v) {
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (!std::isfinite(v[i])) return static_cast<long>(i);
+  return -1;
+}
+
+OdeSolver* solver_of(const MechanicalState& s) {
+  for (Node* n = s.node(); n; n = n->parent())
+    for (OdeSolver* solver : n->solvers)
+      if (solver->state() == ComponentState::valid) return solver;
+  return nullptr;
+}
+
+void run_stage(StepContext& s, Stage stage) {
+  switch (stage) {
+    case Stage::begin_events: return stage_begin_events(s);
+    case Stage::collision: return stage_collision(s);
+    case Stage::interaction_forces: return stage_interaction_forces(s);
+    case Stage::solve: return stage_solve(s);
+    case Stage::constraint_correction: return stage_constraint_correction(s);
+    case Stage::project_and_propagate: return stage_project_and_propagate(s);
+    case Stage::check_state: return stage_check_state(s);
+    case Stage::end_integration: return stage_end_integration(s);
+    case Stage::advance_time: return stage_advance_time(s);
+    case Stage::end_events: return stage_end_events(s);
+  }
+}
+
+// Event stages leave the graph open: controllers may add or remove components there.
+bool locks_graph(Stage stage) { return stage != Stage::begin_events && stage != Stage::end_events; }
+
+}  // namespace
+
+void build_graph_view(Node& root, GraphView& v) {
+  v.version = root.structure_version();
+  if (!v.whole) v.whole = std::make_unique<MechanicalOps>(root);
+  v.whole->rebuild();
+  v.early_interactions.clear();
+  v.solve_order.clear();
+  v.solver_nodes.clear();
+  gather(root, v);
+}
+
+void stage_begin_events(StepContext& s) {
+  Event begin{Event::Kind::animate_begin, s.dt};
+  propagate_event(s.root, begin);
+}
+
+// Collision detection and response (spec/interaction.md §1–4) land here.
+void stage_collision(StepContext&) {}
+
+void stage_interaction_forces(StepContext& s) {
+  for (Node* n : s.view.early_interactions) add_interaction_forces(*n);
+  if (s.parallel_solvers)  // every one before any solver runs: the solver nodes then run concurrently
+    for (const GraphView::SolveItem& item : s.view.solve_order)
+      if (!item.solves) add_interaction_forces(*item.node);
+}
+
+void stage_solve(StepContext& s) {
+  if (s.parallel_solvers) {
+    // Scopes of sibling solvers are disjoint: same results as in sequence.
+    const auto& nodes = s.view.solver_nodes;
+    tbb::parallel_for(std::size_t{0}, nodes.size(), [&](std::size_t i) { solve_node(*nodes[i], s.dt); });
+    return;
+  }
+  for (const GraphView::SolveItem& item : s.view.solve_order) {
+    if (item.solves) solve_node(*item.node, s.dt);
+    else add_interaction_forces(*item.node);
+  }
+}
+
+// Lagrangian constraints (spec/interaction.md §5) land here.
+void stage_constraint_correction(StepContext&) {}
+
+void stage_project_and_propagate(StepContext& s) {
+  MechanicalOps& ops = *s.view.whole;
+  ops.project_position(kPosition, s.t1);
+  ops.project_velocity(kVelocity, s.t1);
+  ops.propagate_x_and_v(kPosition, kVelocity);
+}
+
+void stage_check_state(StepContext& s) {
+  // The one place where numerical health is checked (MuJoCo's mj_checkPos/Vel):
+  // a state that stopped being finite stops its solver, with one message
+  // naming the step, the state and the first bad point.
+  for (MechanicalState* st : s.view.whole->independent_states()) {
+    for (int id : {kPosition, kVelocity}) {
+      const long bad = first_non_finite(st->read(id));
+      if (bad < 0) continue;
+      OdeSolver* solver = solver_of(*st);
+      const int width = id == kPosition ? st->info().coord_width : st->info().deriv_width;
+      const std::string text =
+          "the simulation diverged at step " + std::to_string(s.root.step_index) + ", t = " +
+          parse::format_double(s.t1) + ": non-finite " + (id == kPosition ? "position" : "velocity") +
+          " of point " + std::to_string(bad / width) + " in " + st->describe() + "; " +
+          (solver ? solver->divergence_hint() : "reduce dt");
+      if (solver) {
+        solver->msg_error(text);
+        solver->set_state(ComponentState::invalid);
+      } else {
+        st->msg_error(text);
+        st->set_state(ComponentState::invalid);
+      }
+      break;
+    }
+  }
+}
+
+void stage_end_integration(StepContext& s) {
+  for (MechanicalState* st : s.view.whole->all_states()) st->end_integration();
+}
+
+void stage_advance_time(StepContext& s) {
+  s.root.time.set(s.t1);
+  for_each_node(s.root, [](Node& n) { n.update_context(); });
+}
+
+void stage_end_events(StepContext& s) {
+  Event end{Event::Kind::animate_end, s.dt};
+  propagate_event(s.root, end);
+}
+
+void run_stages(StepContext& s, std::span<const Stage> stages) {
+  using clock = std::chrono::steady_clock;
+  StepProfile& profile = s.root.profile();
+  const bool timed = profile.enabled();
+  const auto step_start = timed ? clock::now() : clock::time_point{};
+  // Unlocked on every way out, exceptions included.
+  struct Unlock {
+    Node& root;
+    ~Unlock() { root.set_graph_locked(false); }
+  } unlock{s.root};
+  for (Stage stage : stages) {
+    if (!locks_graph(stage)) {
+      s.root.set_graph_locked(false);
+    } else if (!s.root.graph_locked()) {
+      // Leaving the event stages: bring the view up to date with what changed
+      // since (components added by controllers are initialised first).
+      if (s.view.version != s.root.structure_version()) {
+        init_added(s.root);
+        build_graph_view(s.root, s.view);
+      }
+      s.root.set_graph_locked(true);
+    }
+    notify_step_observers(s.root, stage, /*after=*/false);
+    const auto t = timed ? clock::now() : clock::time_point{};
+    run_stage(s, stage);
+    if (timed) profile.add_stage(stage, std::chrono::duration<double>(clock::now() - t).count());
+    notify_step_observers(s.root, stage, /*after=*/true);
+  }
+  if (timed) profile.add_step(std::chrono::duration<double>(clock::now() - step_start).count());
+}
+
+}  // namespace sinew
