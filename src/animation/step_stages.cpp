@@ -48,11 +48,31 @@ long first_non_finite(const std::vector<double>& v) {
   return -1;
 }
 
-OdeSolver* solver_of(const MechanicalState& s) {
-  for (Node* n = s.node(); n; n = n->parent())
-    for (OdeSolver* solver : n->solvers)
-      if (solver->state() == ComponentState::valid) return solver;
+// The solver that integrates a state: the first one up the graph (valid or not).
+OdeSolver* solver_of(const Component& c) {
+  for (Node* n = c.node(); n; n = n->parent())
+    if (!n->solvers.empty()) return n->solvers.front();
   return nullptr;
+}
+
+// States whose solver (or, without one, the state itself) was stopped are not checked again.
+bool stopped(const Component& c) {
+  const OdeSolver* solver = solver_of(c);
+  return (solver ? solver->state() : c.state()) != ComponentState::valid;
+}
+
+// Reports a non-finite value and stops the solver that integrates it (or the
+// state itself when none does), so that its other states are not reported again.
+void report_divergence(StepContext& s, Component& state, const char* what, long point, const Mapping* via) {
+  OdeSolver* solver = solver_of(state);
+  std::string text = "the simulation diverged at step " + std::to_string(s.root.step_index) + ", t = " +
+                     parse::format_double(s.t1) + ": non-finite " + what + " of point " + std::to_string(point) +
+                     " in " + state.describe();
+  if (via) text += " (mapped by " + via->describe() + ")";
+  text += std::string("; ") + (solver ? solver->divergence_hint() : "reduce dt");
+  Component& culprit = solver ? static_cast<Component&>(*solver) : state;
+  culprit.msg_error(text);
+  culprit.set_state(ComponentState::invalid);
 }
 
 void run_stage(StepContext& s, Stage stage) {
@@ -126,26 +146,29 @@ void stage_project_and_propagate(StepContext& s) {
 void stage_check_state(StepContext& s) {
   // The one place where numerical health is checked (MuJoCo's mj_checkPos/Vel):
   // a state that stopped being finite stops its solver, with one message
-  // naming the step, the state and the first bad point.
-  for (MechanicalState* st : s.view.whole->independent_states()) {
+  // naming the step, the state and the first bad point. Independent states
+  // first (where a divergence starts), then every mapping's output, visual
+  // models included (a mapping can produce what its input does not hold).
+  MechanicalOps& ops = *s.view.whole;
+  auto check = [&](MechanicalState& st, const Mapping* via) {
     for (int id : {kPosition, kVelocity}) {
-      const long bad = first_non_finite(st->read(id));
+      const long bad = first_non_finite(st.read(id));
       if (bad < 0) continue;
-      OdeSolver* solver = solver_of(*st);
-      const int width = id == kPosition ? st->info().coord_width : st->info().deriv_width;
-      const std::string text =
-          "the simulation diverged at step " + std::to_string(s.root.step_index) + ", t = " +
-          parse::format_double(s.t1) + ": non-finite " + (id == kPosition ? "position" : "velocity") +
-          " of point " + std::to_string(bad / width) + " in " + st->describe() + "; " +
-          (solver ? solver->divergence_hint() : "reduce dt");
-      if (solver) {
-        solver->msg_error(text);
-        solver->set_state(ComponentState::invalid);
-      } else {
-        st->msg_error(text);
-        st->set_state(ComponentState::invalid);
-      }
-      break;
+      const int width = id == kPosition ? st.info().coord_width : st.info().deriv_width;
+      report_divergence(s, st, id == kPosition ? "position" : "velocity", bad / width, via);
+      return;
+    }
+  };
+  for (MechanicalState* st : ops.independent_states())
+    if (!stopped(*st)) check(*st, nullptr);
+  for (Mapping* m : ops.all_mappings()) {
+    if (m->state() != ComponentState::valid) continue;
+    if (MechanicalState* out = m->output()) {
+      if (!stopped(*out)) check(*out, m);
+    } else if (VisualState* vis = m->visual_output(); vis && !stopped(*vis)) {
+      const std::vector<double>* x = vis->visual_vec(kPosition);
+      const long bad = x ? first_non_finite(*x) : -1;
+      if (bad >= 0) report_divergence(s, *vis, "position", bad / 3, m);
     }
   }
 }

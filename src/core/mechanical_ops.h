@@ -34,6 +34,8 @@ class MechanicalOps {
   const std::vector<ForceField*>& force_fields() const { return force_fields_; }
   const std::vector<Mass*>& masses() const { return masses_; }
   const std::vector<Mapping*>& mappings() const { return mappings_; }
+  // Every valid mapping of the scope, top-down: mechanical ones and those to visual models or pruned states.
+  const std::vector<Mapping*>& all_mappings() const { return all_mappings_; }
   const std::vector<ProjectiveConstraint*>& projective_constraints() const { return constraints_; }
 
   // A fresh vector id (zero on first use, kept afterwards).

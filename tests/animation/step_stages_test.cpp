@@ -2,6 +2,7 @@
 // the per-simulation profile, and the seam where outside code acts.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -133,6 +134,61 @@ TEST(StepProfile, SolverScopesGoToTheirSimulation) {
   for (const auto& e : a.root->profile().scopes()) forces |= e.name == "solve/forces" && e.count == 1;
   EXPECT_TRUE(forces);
   EXPECT_TRUE(b.root->profile().scopes().empty());
+}
+
+}  // namespace
+}  // namespace sinew
+
+namespace sinew {
+namespace {
+
+// A mapping that writes NaN into its output: a divergence that starts in a mapping.
+class NanMapping final : public Mapping {
+ public:
+  MechanicalState* in = nullptr;
+  MechanicalState* out = nullptr;
+  std::vector<MechanicalState*> inputs() const override { return {in}; }
+  MechanicalState* output() const override { return out; }
+  void apply(int x) override {
+    std::vector<double>& o = out->write(x);
+    o.assign(o.size(), 0.0);
+    if (node()->root()->time.value() > 0.015) o[4] = std::nan("");
+  }
+  void apply_j(int, int) override {}
+  void apply_jt(int, int) override {}
+};
+
+const char* kFallingBodyWithMappedChild = R"(<Node name="root" dt="0.01" gravity="0 -10 0">
+  <EulerExplicitSolver name="ode"/>
+  <MechanicalObject name="dofs" position="0 0 0"/>
+  <UniformMass name="mass" totalMass="1"/>
+  <Node name="child">
+    <MechanicalObject name="tip" position="0 0 0  0 0 0"/>
+  </Node>
+</Node>)";
+
+// The check stage covers mapped states: it names the state, the point and the mapping, once.
+TEST(CheckStage, NonFiniteMappedStateStopsItsSolverOnce) {
+  auto s = test::build(kFallingBodyWithMappedChild);
+  Node* child = s.root->find_child_named("child");
+  auto m = std::make_unique<NanMapping>();
+  m->name.set("nan");
+  m->set_type("NanMapping", "");
+  m->in = s.root->mechanical_state;
+  m->out = child->mechanical_state;
+  child->add_object(std::move(m));
+  init_root(*s.root);
+  animate(*s.root);  // t = 0.01: finite
+  EXPECT_FALSE(s.root->diagnostics().has_errors());
+  animate(*s.root);  // the mapping writes NaN when t reaches 0.02
+  animate(*s.root);
+  const auto errors = test::messages(s.root->diagnostics(), Severity::error);
+  ASSERT_EQ(errors.size(), 1u) << ::testing::PrintToString(errors);
+  EXPECT_TRUE(test::any_contains(errors, "component 'ode' (EulerExplicitSolver)"));
+  EXPECT_TRUE(test::any_contains(errors, "diverged at step"));
+  EXPECT_TRUE(test::any_contains(errors, "non-finite position of point 1 in component 'tip' (MechanicalObject)"));
+  EXPECT_TRUE(test::any_contains(errors, "(mapped by component 'nan' (NanMapping))"));
+  EXPECT_EQ(s.root->solvers[0]->state(), ComponentState::invalid);
 }
 
 }  // namespace
