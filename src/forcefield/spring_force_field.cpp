@@ -101,6 +101,19 @@ void SpringForceField::init() {
       }
     }
   }
+  for (std::size_t i = 0; i < springs_.size(); ++i)
+    if (springs_[i].ks < 0) {
+      msg_warning("spring " + std::to_string(i) + " has a negative stiffness (" +
+                  parse::format_double(springs_[i].ks) + "): the motion may be unstable and the system indefinite");
+      break;
+    }
+}
+
+// The ends are checked once every state is initialised: object1/object2 may be
+// states of child nodes, which SOFA (and Sinew) initialise after this node's
+// objects.
+void SpringForceField::bwd_init() {
+  if (state() != ComponentState::valid || !s1_ || !s2_) return;
   // Bad indices are refused with the spring named, never read out of range.
   const std::size_t n1 = s1_->size(), n2 = s2_->size();
   for (std::size_t i = 0; i < springs_.size(); ++i) {
@@ -113,12 +126,6 @@ void SpringForceField::init() {
       return;
     }
   }
-  for (std::size_t i = 0; i < springs_.size(); ++i)
-    if (springs_[i].ks < 0) {
-      msg_warning("spring " + std::to_string(i) + " has a negative stiffness (" +
-                  parse::format_double(springs_[i].ks) + "): the motion may be unstable and the system indefinite");
-      break;
-    }
   for (const auto& s : grid_springs_)
     if (s.m1 >= n1 || s.m2 >= n2) {
       msg_error("a generated spring refers to a point out of range (" + std::to_string(s.m1) + ", " +

@@ -39,6 +39,7 @@ class SpringForceField : public ForceField {
   Field<int> draw_mode{this, "drawMode", 0, "how springs are drawn: 0 line, 1 cylinder, 2 arrow", "Visualization"};
 
   void init() override;
+  void bwd_init() override;
   void add_force(const MechParams& p) override;
   void add_dforce(const MechParams& p, double kfactor) override;
   bool is_interaction() const override { return true; }

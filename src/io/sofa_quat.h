@@ -1,8 +1,8 @@
 // Quaternion arithmetic with SOFA's formulas and evaluation order
 // (sofa::type::Quat): Euler angles → quaternion (default ZYX order, i.e.
-// R = Rz·Ry·Rx), rotation matrix, rotate, product, inverse. Used by the mesh
-// loaders' transforms and by TransformEngine, where results must match SOFA
-// to round-off. Storage (x, y, z, w), scalar last.
+// R = Rz·Ry·Rx), rotation matrix, rotate, product, inverse, slerp2. Used by
+// the mesh loaders' transforms, TransformEngine and LinearMovementProjective-
+// Constraint, where results must match SOFA to round-off. Storage (x, y, z, w), scalar last.
 #pragma once
 
 #include <array>
@@ -74,6 +74,24 @@ struct SQuat {
     return true;
   }
 };
+
+// SOFA's Quat::slerp2: a.slerp2(b, t). Equal (or opposite) quaternions give
+// a; a half-angle whose sine is below 1e-3 gives the mean of a and b; no
+// shortest-path flip and no renormalisation.
+inline SQuat slerp2(const SQuat& a, const SQuat& b, double t) {
+  const double cos_half = a.q[3] * b.q[3] + a.q[0] * b.q[0] + a.q[1] * b.q[1] + a.q[2] * b.q[2];
+  if (std::abs(cos_half) >= 1.0) return a;
+  const double half = std::acos(cos_half);
+  const double sin_half = std::sqrt(1.0 - cos_half * cos_half);
+  SQuat r;
+  if (std::abs(sin_half) < 0.001) {
+    for (int i = 0; i < 4; ++i) r.q[i] = a.q[i] * 0.5 + b.q[i] * 0.5;
+    return r;
+  }
+  const double ra = std::sin((1 - t) * half) / sin_half, rb = std::sin(t * half) / sin_half;
+  for (int i = 0; i < 4; ++i) r.q[i] = a.q[i] * ra + b.q[i] * rb;
+  return r;
+}
 
 // SOFA's Vec equality (every component within 1e-6).
 inline bool sofa_vec_eq(const Vec3& a, const Vec3& b) {

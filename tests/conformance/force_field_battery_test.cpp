@@ -194,6 +194,8 @@ const std::vector<ForceFieldCase> kCases = {
     // Small displacements with K sized from the current shape, as SOFA: exact tangent at rest only.
     {"TriangularFEMForceField_small", triangles(ff("TriangularFEMForceField", kSoft + "method='small'")),
      kStiffness | kNetForce | kExactAtRest, 0.2},
+    {"TriangleFEMForceField_small", triangles(ff("TriangleFEMForceField", kSoft + "method='small'")),
+     kStiffness | kNetForce | kExactAtRest, 0.2},
     {"QuadBendingFEMForceField",
      quads(ff("QuadBendingFEMForceField", "youngModulus='2000' poissonRatio='0.3' thickness='0.1'")),
      kStiffness | kNetForce | kExactAtRest, 0.3},
@@ -225,6 +227,10 @@ const std::vector<ForceFieldCase> kCases = {
     // J rebuilt from the current shape, not differentiated (as SOFA).
     {"TriangularFEMForceField_large", triangles(ff("TriangularFEMForceField", kSoft + "method='large'")),
      kCorotational, 0.3},
+    {"TriangleFEMForceField_large", triangles(ff("TriangleFEMForceField", kSoft + "method='large'")),
+     kCorotational, 0.3},
+    {"TriangleFEMForceField_planeStrain",
+     triangles(ff("TriangleFEMForceField", kSoft + "thickness='0.2' planeStrain='true'")), kCorotational, 0.3},
     {"TriangularFEMForceFieldOptim", triangles(ff("TriangularFEMForceFieldOptim", kSoft)), kCorotational, 0.2},
     {"BeamFEMForceField", beam(ff("BeamFEMForceField", "youngModulus='20000' poissonRatio='0.3' radius='0.1'")),
      kCorotational, 0.2},

@@ -171,7 +171,8 @@ INSTANTIATE_TEST_SUITE_P(
                       FemCase{"LinearSmallStrainFEMForceField", "Vec3d,Hexahedron", Elem::hexa},
                       FemCase{"CorotationalFEMForceField", "Vec3d,Hexahedron", Elem::hexa},
                       FemCase{"TriangularFEMForceField", "", Elem::triangle},
-                      FemCase{"TriangularFEMForceFieldOptim", "", Elem::triangle}),
+                      FemCase{"TriangularFEMForceFieldOptim", "", Elem::triangle},
+                      FemCase{"TriangleFEMForceField", "", Elem::triangle}),
     [](const ::testing::TestParamInfo<FemCase>& info) {
       std::string n = info.param.type;
       if (std::string(info.param.tmpl).find("Hexa") != std::string::npos) n += "Hexa";

@@ -171,6 +171,84 @@ TEST(SpringForceField, ActsBetweenTwoStates) {
   EXPECT_TRUE(cross);
 }
 
+// States sized at their own init (positions from the node's topology) in child
+// nodes, which are initialised after the force field above them: the spring
+// ends are checked once every state is initialised (SOFA's
+// StiffSpringForceField.scn, whose cubes take their positions from loaders).
+TEST(SpringForceField, StatesOfChildNodesSizedAtTheirInit) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <SpringForceField name="ff" object1="@A/a" object2="@B/b" spring="1 0 10 0.5 1"/>
+    <Node name="A"><MeshTopology position="0 0 0  1 0 0"/><MechanicalObject name="a"/></Node>
+    <Node name="B"><MeshTopology position="1 3 0  5 5 5"/><MechanicalObject name="b"/></Node>
+  </Node>)");
+  auto* ff = get<SpringForceField>(*s.root, "ff");
+  ASSERT_EQ(ff->state(), ComponentState::valid);
+  auto states = ff->states();
+  ASSERT_EQ(states.size(), 2u);
+  ASSERT_EQ(states[0]->size(), 2u);
+  ASSERT_EQ(states[1]->size(), 2u);
+  // u = b0 − a1 = (0, 3, 0): d = 3, e = 2; ė = û·(v_b0 − v_a1) = −2; F = 10·2 + 0.5·(−2) = 19.
+  states[0]->write(kVelocity) = {0, 0, 0, 0, 1, 0};
+  states[1]->write(kVelocity) = {0, -1, 0, 0, 0, 0};
+  for (auto* st : states) std::fill(st->write(kForce).begin(), st->write(kForce).end(), 0.0);
+  ff->add_force(MechParams{});
+  EXPECT_EQ(states[0]->read(kForce), (std::vector<double>{0, 0, 0, 0, 19, 0}));
+  EXPECT_EQ(states[1]->read(kForce), (std::vector<double>{0, -19, 0, 0, 0, 0}));
+  // K = (ks − F/d)·ûûᵀ + (F/d)·I: the y entry is ks = 10, the others F/d = 19/3.
+  MatrixSink sink;
+  ff->build_stiffness(sink);
+  for (const auto& e : sink.entries())
+    if (e.row_state == states[0] && e.col_state == states[1] && e.row == 3 && e.col == 0)
+      EXPECT_NEAR(e.value, 19.0 / 3.0, 1e-15);
+  // An end still out of range once the states are initialised is refused.
+  auto bad = sinew::test::build(R"(<Node gravity="0 0 0">
+    <SpringForceField name="ff" object1="@A/a" object2="@B/b" spring="1 2 10 0.5 1"/>
+    <Node name="A"><MeshTopology position="0 0 0  1 0 0"/><MechanicalObject name="a"/></Node>
+    <Node name="B"><MeshTopology position="1 3 0  5 5 5"/><MechanicalObject name="b"/></Node>
+  </Node>)");
+  init_root(*bad.root);
+  EXPECT_EQ(get<SpringForceField>(*bad.root, "ff")->state(), ComponentState::invalid);
+  EXPECT_TRUE(sinew::test::any_contains(sinew::test::messages(bad.root->diagnostics(), Severity::error),
+                                        "spring 0 (1, 2) refers to a point out of range (object1 has 2 points, "
+                                        "object2 2)"));
+}
+
+// Within one solver scope an interaction spring is implicit: two states joined
+// by springs step as the same points in one state with the same springs.
+TEST(SpringForceField, InteractionSpringsInsideASolverScopeAreImplicit) {
+  const std::string solver = R"(<DefaultAnimationLoop/>
+    <EulerImplicitSolver rayleighStiffness="0.1" rayleighMass="0.1"/>
+    <CGLinearSolver iterations="200" tolerance="1e-20" threshold="1e-30"/>)";
+  auto two = load(R"(<Node gravity="0 -10 0" dt="0.05">)" + solver + R"(
+    <SpringForceField name="ext" object1="@A/a" object2="@B/b" spring="1 0 2000 1 1  1 1 2000 1 1.2"/>
+    <Node name="A"><MeshTopology position="0 0 0  1 0 0"/><MechanicalObject name="a"/>
+      <UniformMass vertexMass="0.5"/><FixedProjectiveConstraint indices="0"/>
+      <SpringForceField spring="0 1 2000 1 1"/></Node>
+    <Node name="B"><MeshTopology position="1 -1 0  1.5 -1.5 0.5"/><MechanicalObject name="b"/>
+      <UniformMass vertexMass="0.5"/><SpringForceField spring="0 1 2000 1 0.8"/></Node>
+  </Node>)");
+  auto one = load(R"(<Node gravity="0 -10 0" dt="0.05">)" + solver + R"(
+    <MechanicalObject name="ab" position="0 0 0  1 0 0  1 -1 0  1.5 -1.5 0.5"/>
+    <UniformMass vertexMass="0.5"/><FixedProjectiveConstraint indices="0"/>
+    <SpringForceField spring="0 1 2000 1 1  2 3 2000 1 0.8  1 2 2000 1 1  1 3 2000 1 1.2"/>
+  </Node>)");
+  MechanicalState& a = *get<MechanicalState>(*two.root->children()[0], "a");
+  MechanicalState& b = *get<MechanicalState>(*two.root->children()[1], "b");
+  MechanicalState& ab = *one.root->mechanical_state;
+  for (int step = 0; step < 100; ++step) {
+    animate(*two.root);
+    animate(*one.root);
+  }
+  const auto& x = ab.read(kPosition);
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_NEAR(a.read(kPosition)[i], x[i], 1e-9) << i;
+    EXPECT_NEAR(b.read(kPosition)[i], x[6 + i], 1e-9) << i;
+  }
+  // dt·k/m = 200: an explicit treatment of the coupling springs would have diverged.
+  EXPECT_TRUE(std::isfinite(x[9]));
+  EXPECT_LT(std::abs(x[10]), 10.0);
+}
+
 // The issue's physics test: an undamped spring network integrated with
 // symplectic Euler keeps its energy bounded over 10 000 steps.
 TEST(SpringForceField, UndampedExplicitEnergyStaysBoundedOver10kSteps) {
