@@ -2,7 +2,7 @@
 // force-differential throughput, the two hot operations of a matrix-free step.
 #include <benchmark/benchmark.h>
 
-#include "forcefield/hexa_fem.h"
+#include "forcefield/fem/hexa_fem.h"
 
 namespace {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "topology/regular_grid_topology.h"
-#include "topology/sparse_grid_topology.h"
+#include "topology/grid/regular_grid_topology.h"
+#include "topology/grid/sparse_grid_topology.h"
 
 namespace sinew {
 

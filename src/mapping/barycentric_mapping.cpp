@@ -2,8 +2,8 @@
 
 #include "core/node.h"
 #include "core/registry.h"
-#include "topology/regular_grid_topology.h"
-#include "topology/sparse_grid_topology.h"
+#include "topology/grid/regular_grid_topology.h"
+#include "topology/grid/sparse_grid_topology.h"
 
 namespace sinew {
 

@@ -3,7 +3,7 @@
 // K omits the geometric term, as SOFA's), build_stiffness equals add_dforce,
 // cantilever deflections match Euler–Bernoulli (and the kernel matches
 // Timoshenko when shear areas are given), and bad input is reported.
-#include "forcefield/beam_fem_force_field.h"
+#include "forcefield/fem/beam_fem_force_field.h"
 
 #include <gtest/gtest.h>
 

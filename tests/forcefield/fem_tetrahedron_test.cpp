@@ -1,8 +1,8 @@
 // TetrahedronFEMForceField and TetrahedralCorotationalFEMForceField as scene
 // components (spec/mechanics.md §2.1, §2.2, §0.4): topology look-up, hexa
 // split, material broadcast and validation, matrix assembly.
-#include "forcefield/tetrahedral_corotational_fem_force_field.h"
-#include "forcefield/tetrahedron_fem_force_field.h"
+#include "forcefield/fem/tetrahedral_corotational_fem_force_field.h"
+#include "forcefield/fem/tetrahedron_fem_force_field.h"
 
 #include <gtest/gtest.h>
 

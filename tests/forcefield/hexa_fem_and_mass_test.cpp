@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/mechanical_ops.h"
-#include "forcefield/hexahedron_fem_force_field.h"
+#include "forcefield/fem/hexahedron_fem_force_field.h"
 #include "state/mechanical_object.h"
 #include "test_scene.h"
 

@@ -1,4 +1,4 @@
-#include "forcefield/hexa_fem.h"
+#include "forcefield/fem/hexa_fem.h"
 
 #include <gtest/gtest.h>
 

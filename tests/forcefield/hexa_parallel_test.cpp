@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "forcefield/hexa_fem.h"
+#include "forcefield/fem/hexa_fem.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 
 #include <random>
 
-#include "forcefield/hexa_fem.h"
+#include "forcefield/fem/hexa_fem.h"
 
 namespace {
 

@@ -9,8 +9,8 @@
 
 #include "core/mechanical_ops.h"
 #include "core/simulation.h"
-#include "forcefield/hexahedral_fem_force_field.h"
-#include "forcefield/hexahedron_fem_force_field.h"
+#include "forcefield/fem/hexahedral_fem_force_field.h"
+#include "forcefield/fem/hexahedron_fem_force_field.h"
 #include "state/mechanical_object.h"
 #include "test_scene.h"
 

@@ -2,7 +2,7 @@
 // for every supported material: forces against finite differences of the
 // energy, add_dforce against finite differences of the forces, assembled
 // blocks against the matrix-free product, zero force at rest, bad input.
-#include "forcefield/hyperelastic_tetra.h"
+#include "forcefield/hyperelastic/hyperelastic_tetra.h"
 
 #include <gtest/gtest.h>
 

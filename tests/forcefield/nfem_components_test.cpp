@@ -2,8 +2,8 @@
 // LinearSmallStrainFEMForceField / CorotationalFEMForceField (§2.5) as scene
 // components: mass totals against analytic volumes, gravity, M·dx, material
 // checks, error messages, and parallel == sequenced on a stepped scene.
-#include "forcefield/corotational_fem_force_field.h"
-#include "forcefield/linear_small_strain_fem_force_field.h"
+#include "forcefield/fem/corotational_fem_force_field.h"
+#include "forcefield/fem/linear_small_strain_fem_force_field.h"
 #include "mass/fem_mass.h"
 #include "mass/nodal_mass_density.h"
 

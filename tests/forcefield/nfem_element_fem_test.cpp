@@ -2,7 +2,7 @@
 // element stiffness against independent formulas, force/energy/stiffness
 // consistency by finite differences, corotational invariance and tangent,
 // parallel == sequential, and a cantilever beam against Euler–Bernoulli.
-#include "forcefield/element_fem.h"
+#include "forcefield/fem/element_fem.h"
 
 #include <gtest/gtest.h>
 

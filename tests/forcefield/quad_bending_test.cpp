@@ -3,7 +3,7 @@
 // (K sized from the state's positions, as SOFA does), build_stiffness equals
 // add_dforce, a clamped plate under a uniform load sags symmetrically, and
 // bad input is reported without crashing.
-#include "forcefield/quad_bending_fem_force_field.h"
+#include "forcefield/fem/quad_bending_fem_force_field.h"
 
 #include <gtest/gtest.h>
 

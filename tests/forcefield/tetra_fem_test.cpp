@@ -2,7 +2,7 @@
 // (spec/mechanics.md §2.0–§2.2): element stiffness against an independent
 // B·D·B construction, derivatives, rigid-motion invariance, plasticity rule,
 // hexahedron split.
-#include "forcefield/tetra_fem.h"
+#include "forcefield/fem/tetra_fem.h"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 
 #include <random>
 
-#include "forcefield/tetra_fem.h"
+#include "forcefield/fem/tetra_fem.h"
 
 namespace {
 

@@ -9,10 +9,10 @@
 
 #include <Eigen/Geometry>
 
-#include "forcefield/fast_triangular_bending_springs.h"
-#include "forcefield/triangular_bending_springs.h"
-#include "forcefield/triangular_fem_force_field.h"
-#include "forcefield/triangular_fem_force_field_optim.h"
+#include "forcefield/spring/fast_triangular_bending_springs.h"
+#include "forcefield/spring/triangular_bending_springs.h"
+#include "forcefield/fem/triangular_fem_force_field.h"
+#include "forcefield/fem/triangular_fem_force_field_optim.h"
 #include "spring_helpers.h"
 #include "test_scene.h"
 

@@ -8,7 +8,7 @@
 
 #include <Eigen/Geometry>
 
-#include "forcefield/triangle_fem_force_field.h"
+#include "forcefield/fem/triangle_fem_force_field.h"
 #include "spring_helpers.h"
 #include "test_scene.h"
 

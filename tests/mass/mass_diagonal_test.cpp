@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "core/mechanical_ops.h"
-#include "forcefield/tetra_fem.h"
+#include "forcefield/fem/tetra_fem.h"
 #include "state/mechanical_object.h"
 #include "test_scene.h"
 

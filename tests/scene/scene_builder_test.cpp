@@ -12,7 +12,7 @@
 #include "solver/ode/euler_implicit_solver.h"
 #include "state/mechanical_object.h"
 #include "test_scene.h"
-#include "topology/regular_grid_topology.h"
+#include "topology/grid/regular_grid_topology.h"
 
 using namespace sinew;
 using sinew::test::any_contains;

@@ -13,7 +13,7 @@
 #include "solver/system/constant_sparsity_pattern_system.h"
 #include "solver/linear/matrix_linear_solver.h"
 #include "solver/system/matrix_linear_system.h"
-#include "forcefield/spring_force_field.h"
+#include "forcefield/spring/spring_force_field.h"
 #include "solver/linear/sparse_ldl_solver.h"
 #include "test_scene.h"
 

@@ -1,6 +1,6 @@
 // RegularGridTopology (spec/mechanics.md §5.2, §0.3) and BoxROI (§7.7).
 #include "engine/box_roi.h"
-#include "topology/regular_grid_topology.h"
+#include "topology/grid/regular_grid_topology.h"
 
 #include <gtest/gtest.h>
 

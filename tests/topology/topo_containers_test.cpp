@@ -1,15 +1,15 @@
 // Topology containers (spec/mechanics.md §5.1, §5.6): derived element lists
 // and neighbourhood queries on small meshes, checked against hand-derived lists.
-#include "topology/cube_topology.h"
-#include "topology/edge_set_topology_container.h"
-#include "topology/sparse_grid_topology.h"
-#include "topology/hexahedron_set_topology_container.h"
+#include "topology/grid/cube_topology.h"
+#include "topology/dynamic/edge_set_topology_container.h"
+#include "topology/grid/sparse_grid_topology.h"
+#include "topology/dynamic/hexahedron_set_topology_container.h"
 #include "topology/mesh_topology.h"
-#include "topology/point_set_topology_container.h"
-#include "topology/quad_set_topology_container.h"
-#include "topology/tetrahedron_set_topology_container.h"
-#include "topology/triangle_set_topology_container.h"
-#include "topology/triangle_set_topology_modifier.h"
+#include "topology/dynamic/point_set_topology_container.h"
+#include "topology/dynamic/quad_set_topology_container.h"
+#include "topology/dynamic/tetrahedron_set_topology_container.h"
+#include "topology/dynamic/triangle_set_topology_container.h"
+#include "topology/dynamic/triangle_set_topology_modifier.h"
 
 #include <gtest/gtest.h>
 

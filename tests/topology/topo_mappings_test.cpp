@@ -1,11 +1,11 @@
 // Topological mappings (spec/mechanics.md §5.7): output lists in SOFA's order,
 // checked against hand-derived indices on small grids and meshes.
-#include "topology/hexa2_tetra_topological_mapping.h"
+#include "topology/mapping/hexa2_tetra_topological_mapping.h"
 #include "topology/mesh_topology.h"
-#include "topology/quad_set_topology_container.h"
-#include "topology/tetrahedron_set_topology_container.h"
-#include "topology/triangle_set_topology_container.h"
-#include "topology/edge_set_topology_container.h"
+#include "topology/dynamic/quad_set_topology_container.h"
+#include "topology/dynamic/tetrahedron_set_topology_container.h"
+#include "topology/dynamic/triangle_set_topology_container.h"
+#include "topology/dynamic/edge_set_topology_container.h"
 
 #include <gtest/gtest.h>
 

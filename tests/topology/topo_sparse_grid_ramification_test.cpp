@@ -6,7 +6,7 @@
 #include <set>
 
 #include "test_scene.h"
-#include "topology/sparse_grid_ramification_topology.h"
+#include "topology/grid/sparse_grid_ramification_topology.h"
 
 using namespace sinew;
 using sinew::test::get;

@@ -1,0 +1,60 @@
+#include "forcefield/fem/tetrahedral_corotational_fem_force_field.h"
+
+#include "core/node.h"
+#include "core/registry.h"
+#include "forcefield/fem/tetra_fem_setup.h"
+
+namespace sinew {
+
+TetrahedralCorotationalFEMForceField::TetrahedralCorotationalFEMForceField() { assembling.add_alias("assembling"); }
+
+void TetrahedralCorotationalFEMForceField::init() {
+  ForceField::init();
+  if (state() != ComponentState::valid) return;
+  bool known = true;
+  TetraFEMSetup in = read_tetra_fem_fields(*this, false, known);
+  if (!known) msg_warning("unknown method '" + method.get() + "' (expected small, large or polar): large is used");
+
+  fem_.update_stiffness_matrix = update_stiffness_matrix.get();
+  fem_.assembling = assembling.get();
+  fem_.symmetric_update = true;
+  in.von_mises = compute_von_mises_stress.get();
+  if (!setup_tetra_fem(*this, in, fem_)) {
+    set_state(ComponentState::invalid);
+    return;
+  }
+  if (!fem_.forces_supported())
+    msg_error("computeGlobalMatrix is not supported with method " + method.get() +
+              ": this force field adds no force (as SOFA)");
+}
+
+void TetrahedralCorotationalFEMForceField::add_force(const MechParams& p) {
+  MechanicalState& s = *mstate;
+  add_tetra_fem_force(fem_, s, p);
+  // SOFA computes it after each addForce, from the state's current positions.
+  if (compute_von_mises_stress.value() && state() == ComponentState::valid)
+    fem_.von_mises(as_vec3(s.read(kPosition)), 3, von_mises_per_element.edit(), von_mises_per_node.edit());
+}
+
+void TetrahedralCorotationalFEMForceField::add_dforce(const MechParams& p, double kfactor) {
+  add_tetra_fem_dforce(fem_, *mstate, p, kfactor);
+}
+
+bool TetrahedralCorotationalFEMForceField::build_stiffness(MatrixSink& K) {
+  add_tetra_fem_stiffness(fem_, mstate.get(), K);
+  return true;
+}
+
+void register_tetrahedral_corotational_fem_force_field(Registry& r) {
+  ComponentInfo info;
+  info.name = "TetrahedralCorotationalFEMForceField";
+  info.category = "ForceField/FEM";
+  info.description = "tetrahedral corotational finite elements (large, polar) or linear (small)";
+  info.templates = {"Vec3d"};
+  info.default_template = "Vec3d";
+  info.requirement = Requirement::state;
+  info.create = creator<TetrahedralCorotationalFEMForceField>();
+  r.add(std::move(info));
+}
+
+}  // namespace sinew

@@ -1,0 +1,121 @@
+#include "forcefield/load/plane_force_field.h"
+
+#include <cmath>
+
+#include "core/node.h"
+#include "core/registry.h"
+
+namespace sinew {
+
+void PlaneForceField::init() {
+  ForceField::init();
+  if (state() != ComponentState::valid) return;
+  if (mstate->state_type() != StateType::vec3) {
+    msg_error("only Vec3d states are supported");
+    set_state(ComponentState::invalid);
+    return;
+  }
+  k_ = stiffness.get();
+  c_ = damping.get();
+  max_ = max_force.get();
+  if (k_ < 0) {
+    msg_warning("stiffness " + parse::format_double(k_) + " is negative: using 500");
+    k_ = 500;
+  }
+  if (c_ < 0) {
+    msg_warning("damping " + parse::format_double(c_) + " is negative: using 5");
+    c_ = 5;
+  }
+  if (max_ < 0) {
+    msg_warning("maxForce " + parse::format_double(max_) + " is negative: using 0 (no limit)");
+    max_ = 0;
+  }
+  const VecNi<2> r = local_range.get();
+  if (local_range.is_set() && (r[0] < 0 || r[1] < 0 || r[0] > r[1])) {
+    msg_warning("localRange must hold two indices in increasing order: ignored");
+    local_range.set(VecNi<2>(-1, -1));
+  }
+}
+
+void PlaneForceField::add_force(const MechParams& p) {
+  MechanicalState& s = *mstate;
+  const std::vector<double>& x = s.read(p.x);
+  const std::vector<double>& v = s.read(p.v);
+  std::vector<double>& f = s.write(p.f);
+  contacts_.clear();
+  unsigned ibegin = 0, iend = static_cast<unsigned>(x.size() / 3);
+  const VecNi<2> r = local_range.value();
+  if (r[0] >= 0) ibegin = static_cast<unsigned>(r[0]);
+  if (r[1] >= 0 && static_cast<unsigned>(r[1]) + 1 < iend) iend = static_cast<unsigned>(r[1]) + 1;
+  const double limit = max_ * max_;
+  const Vec3 n = normal.value();
+  const double pd = d.value();
+  for (unsigned i = ibegin; i < iend; i++) {
+    const double dist = x[3 * i] * n[0] + x[3 * i + 1] * n[1] + x[3 * i + 2] * n[2] - pd;
+    if (bilateral.value() || dist < 0) {
+      const double fi = -k_ * dist;
+      const double di = -c_ * dist;
+      double F[3];
+      for (int c = 0; c < 3; ++c) F[c] = n[c] * fi - v[3 * i + c] * di;
+      const double amp = F[0] * F[0] + F[1] * F[1] + F[2] * F[2];
+      if (limit > 0 && amp > limit) {
+        const double sc = std::sqrt(limit / amp);
+        for (double& c : F) c *= sc;
+      }
+      for (int c = 0; c < 3; ++c) f[3 * i + c] += F[c];
+      contacts_.push_back(i);
+    }
+  }
+}
+
+std::optional<double> PlaneForceField::potential_energy() const {
+  if (state() != ComponentState::valid || max_ > 0) return std::nullopt;
+  const std::vector<double>& x = mstate->read(kPosition);
+  unsigned ibegin = 0, iend = static_cast<unsigned>(x.size() / 3);
+  const VecNi<2> r = local_range.value();
+  if (r[0] >= 0) ibegin = static_cast<unsigned>(r[0]);
+  if (r[1] >= 0 && static_cast<unsigned>(r[1]) + 1 < iend) iend = static_cast<unsigned>(r[1]) + 1;
+  const Vec3 n = normal.value();
+  double e = 0;
+  for (unsigned i = ibegin; i < iend; i++) {
+    const double dist = x[3 * i] * n[0] + x[3 * i + 1] * n[1] + x[3 * i + 2] * n[2] - d.value();
+    if (bilateral.value() || dist < 0) e += 0.5 * k_ * dist * dist;
+  }
+  return e;
+}
+
+void PlaneForceField::add_dforce(const MechParams& p, double kfactor) {
+  MechanicalState& s = *mstate;
+  const std::vector<double>& dx = s.read(p.dx);
+  std::vector<double>& df = s.write(p.df);
+  const double fact = -k_ * kfactor;
+  const Vec3 n = normal.value();
+  for (unsigned i : contacts_) {
+    const double t = fact * (dx[3 * i] * n[0] + dx[3 * i + 1] * n[1] + dx[3 * i + 2] * n[2]);
+    for (int c = 0; c < 3; ++c) df[3 * i + c] += n[c] * t;
+  }
+}
+
+bool PlaneForceField::build_stiffness(MatrixSink& K) {
+  const MechanicalState* s = mstate.get();
+  const Vec3 n = normal.value();
+  Mat3 m;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) m(a, b) = -k_ * (n[a] * n[b]);
+  for (unsigned i : contacts_) K.add_block(s, 3 * i, s, 3 * i, m);
+  return true;
+}
+
+void register_plane_force_field(Registry& r) {
+  ComponentInfo info;
+  info.name = "PlaneForceField";
+  info.category = "ForceField/MechanicalLoad";
+  info.description = "penalty force keeping points on one side of a plane";
+  info.templates = {"Vec3d"};
+  info.default_template = "Vec3d";
+  info.requirement = Requirement::state;
+  info.create = creator<PlaneForceField>();
+  r.add(std::move(info));
+}
+
+}  // namespace sinew

@@ -1,0 +1,242 @@
+#include "forcefield/spring/spring_force_field.h"
+
+#include "core/node.h"
+#include "core/parse.h"
+#include "core/registry.h"
+
+namespace sinew {
+
+SpringForceField::SpringForceField() {
+  springs_indices1.add_alias("indices1");
+  springs_indices2.add_alias("indices2");
+  lengths.add_alias("length");
+  file_springs.add_alias("fileSprings");
+  file_springs.set_file(true);
+}
+
+std::vector<MechanicalState*> SpringForceField::states() const {
+  if (s1_ && s1_ == s2_) return {s1_};
+  return {s1_, s2_};
+}
+
+bool SpringForceField::bind_states() {
+  MechanicalState* local = node() ? node()->get_mechanical_state() : nullptr;
+  s1_ = object1 ? object1.get() : local;
+  s2_ = object2 ? object2.get() : local;
+  if (!s1_ || !s2_) {
+    msg_error("no mechanical state found (object1/object2 or the node's state)");
+    set_state(ComponentState::invalid);
+    return false;
+  }
+  if (!mstate) mstate.set(s1_);
+  const StateType t1 = s1_->state_type(), t2 = s2_->state_type();
+  if (t1 != t2) {
+    msg_error(std::string("object1 is ") + s1_->info().name + " but object2 is " + s2_->info().name);
+    set_state(ComponentState::invalid);
+    return false;
+  }
+  if (t1 == StateType::vec1) dim_ = 1;
+  else if (t1 == StateType::vec2) dim_ = 2;
+  else if (t1 == StateType::vec3) dim_ = 3;
+  else {
+    msg_error(std::string("states of type ") + s1_->info().name + " are not supported (Vec1d, Vec2d, Vec3d only)");
+    set_state(ComponentState::invalid);
+    return false;
+  }
+  return true;
+}
+
+void SpringForceField::init() {
+  if (!bind_states()) return;
+  if (!file_springs.value().empty()) {
+    msg_error("spring files (filename=" + file_springs.value() + ") are not supported");
+    set_state(ComponentState::invalid);
+    return;
+  }
+  if (!generated_) {
+    springs_.clear();
+    if (spring.is_set()) {
+      // Authoritative "i j ks kd L0" list; the split lists are rewritten from it.
+      const auto& v = spring.get();
+      if (v.size() % 5 != 0) {
+        msg_error("'spring' must hold 5 numbers per spring (index1 index2 stiffness damping restLength); got " +
+                  std::to_string(v.size()) + " numbers");
+        set_state(ComponentState::invalid);
+        return;
+      }
+      for (std::size_t i = 0; i + 4 < v.size(); i += 5) {
+        if (v[i] < 0 || v[i + 1] < 0 || v[i] != std::floor(v[i]) || v[i + 1] != std::floor(v[i + 1])) {
+          msg_error("spring " + std::to_string(i / 5) + ": the indices must be non-negative integers");
+          set_state(ComponentState::invalid);
+          return;
+        }
+        springs::LinearSpring s;
+        s.m1 = static_cast<unsigned>(v[i]);
+        s.m2 = static_cast<unsigned>(v[i + 1]);
+        s.ks = v[i + 2];
+        s.kd = v[i + 3];
+        s.l0 = v[i + 4];
+        springs_.push_back(s);
+      }
+    } else {
+      const auto& i1 = springs_indices1.get();
+      const auto& i2 = springs_indices2.get();
+      if (i1.size() != i2.size()) {
+        msg_error("indices1 has " + std::to_string(i1.size()) + " entries but indices2 has " +
+                  std::to_string(i2.size()) + ": no spring is created");
+      } else if (!i1.empty()) {
+        // Per-spring lists resized to the number of springs with their last value (SOFA's rule).
+        auto fit = [&](auto list, auto fill) {
+          if (list.empty()) list.push_back(fill);
+          if (list.size() != i1.size()) list.resize(i1.size(), list.back());
+          return list;
+        };
+        const auto L = fit(lengths.get(), 0.0);
+        const auto KS = fit(stiffness.get(), 100.0);
+        const auto KD = fit(damping.get(), 5.0);
+        const auto EO = fit(elongation_only.get(), 0);
+        const auto EN = fit(enabled.get(), 1);
+        for (std::size_t i = 0; i < i1.size(); ++i)
+          springs_.push_back({i1[i], i2[i], KS[i], KD[i], L[i], EO[i] != 0, EN[i] != 0});
+      }
+    }
+  }
+  for (std::size_t i = 0; i < springs_.size(); ++i)
+    if (springs_[i].ks < 0) {
+      msg_warning("spring " + std::to_string(i) + " has a negative stiffness (" +
+                  parse::format_double(springs_[i].ks) + "): the motion may be unstable and the system indefinite");
+      break;
+    }
+}
+
+// The ends are checked once every state is initialised: object1/object2 may be
+// states of child nodes, which SOFA (and Sinew) initialise after this node's
+// objects.
+void SpringForceField::bwd_init() {
+  if (state() != ComponentState::valid || !s1_ || !s2_) return;
+  // Bad indices are refused with the spring named, never read out of range.
+  const std::size_t n1 = s1_->size(), n2 = s2_->size();
+  for (std::size_t i = 0; i < springs_.size(); ++i) {
+    const auto& s = springs_[i];
+    if (s.m1 >= n1 || s.m2 >= n2) {
+      msg_error("spring " + std::to_string(i) + " (" + std::to_string(s.m1) + ", " + std::to_string(s.m2) +
+                ") refers to a point out of range (object1 has " + std::to_string(n1) + " points, object2 " +
+                std::to_string(n2) + ")");
+      set_state(ComponentState::invalid);
+      return;
+    }
+  }
+  for (const auto& s : grid_springs_)
+    if (s.m1 >= n1 || s.m2 >= n2) {
+      msg_error("a generated spring refers to a point out of range (" + std::to_string(s.m1) + ", " +
+                std::to_string(s.m2) + ")");
+      set_state(ComponentState::invalid);
+      return;
+    }
+  dfdx_.assign(springs_.size() + grid_springs_.size(), springs::Block{});
+  n1_ = n1;
+  n2_ = n2;
+}
+
+bool SpringForceField::sizes_ok() {
+  if (s1_->size() == n1_ && s2_->size() == n2_) return true;
+  // The states were resized (topological change): keep going only if every spring still fits.
+  n1_ = s1_->size();
+  n2_ = s2_->size();
+  auto fits = [&](const springs::LinearSpring& s) { return s.m1 < n1_ && s.m2 < n2_; };
+  for (std::size_t i = 0; i < springs_.size() + grid_springs_.size(); ++i) {
+    const auto& s = i < springs_.size() ? springs_[i] : grid_springs_[i - springs_.size()];
+    if (!fits(s)) {
+      msg_error("spring " + std::to_string(i) + " (" + std::to_string(s.m1) + ", " + std::to_string(s.m2) +
+                ") refers to a point removed from the state at step " + std::to_string(node()->root()->step_index) +
+                ": the force field stops");
+      set_state(ComponentState::invalid);
+      springs_.clear();
+      grid_springs_.clear();
+      return false;
+    }
+  }
+  return true;
+}
+
+template <int N>
+void SpringForceField::add_force_n(const MechParams& p) {
+  MechanicalState& a = *s1_;
+  MechanicalState& b = *s2_;
+  const double* x1 = a.read(vec_for(a, p.x, kPosition)).data();
+  const double* v1 = a.read(vec_for(a, p.v, kVelocity)).data();
+  double* f1 = a.write(vec_for(a, p.f, kForce)).data();
+  const double* x2 = b.read(vec_for(b, p.x, kPosition)).data();
+  const double* v2 = b.read(vec_for(b, p.v, kVelocity)).data();
+  double* f2 = b.write(vec_for(b, p.f, kForce)).data();
+  energy_ = 0;
+  std::size_t k = 0;
+  for (const auto& s : springs_) springs::add_spring_force<N>(s, x1, v1, f1, x2, v2, f2, dfdx_[k++], energy_);
+  for (const auto& s : grid_springs_) springs::add_spring_force<N>(s, x1, v1, f1, x2, v2, f2, dfdx_[k++], energy_);
+}
+
+template <int N>
+void SpringForceField::add_dforce_n(const MechParams& p, double kfactor) {
+  MechanicalState& a = *s1_;
+  MechanicalState& b = *s2_;
+  const double* dx1 = a.read(vec_for(a, p.dx, kDx)).data();
+  double* df1 = a.write(vec_for(a, p.df, kDforce)).data();
+  const double* dx2 = b.read(vec_for(b, p.dx, kDx)).data();
+  double* df2 = b.write(vec_for(b, p.df, kDforce)).data();
+  std::size_t k = 0;
+  for (const auto& s : springs_) springs::add_spring_dforce<N>(s, dfdx_[k++], dx1, df1, dx2, df2, kfactor);
+  for (const auto& s : grid_springs_) springs::add_spring_dforce<N>(s, dfdx_[k++], dx1, df1, dx2, df2, kfactor);
+}
+
+void SpringForceField::add_force(const MechParams& p) {
+  if (!sizes_ok()) return;
+  switch (dim_) {
+    case 1: add_force_n<1>(p); break;
+    case 2: add_force_n<2>(p); break;
+    default: add_force_n<3>(p); break;
+  }
+}
+
+void SpringForceField::add_dforce(const MechParams& p, double kfactor) {
+  if (!sizes_ok()) return;
+  switch (dim_) {
+    case 1: add_dforce_n<1>(p, kfactor); break;
+    case 2: add_dforce_n<2>(p, kfactor); break;
+    default: add_dforce_n<3>(p, kfactor); break;
+  }
+}
+
+bool SpringForceField::build_stiffness(MatrixSink& K) {
+  const int N = dim_;
+  std::size_t e = 0;
+  auto emit = [&](const springs::LinearSpring& s) {
+    const springs::Block& m = dfdx_[e++];
+    const std::size_t p1 = static_cast<std::size_t>(s.m1) * N, p2 = static_cast<std::size_t>(s.m2) * N;
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) {
+        const double k = m[i * N + j];
+        K.add(s1_, p1 + i, s1_, p1 + j, -k);
+        K.add(s1_, p1 + i, s2_, p2 + j, k);
+        K.add(s2_, p2 + i, s1_, p1 + j, k);
+        K.add(s2_, p2 + i, s2_, p2 + j, -k);
+      }
+  };
+  for (const auto& s : springs_) emit(s);
+  for (const auto& s : grid_springs_) emit(s);
+  return true;
+}
+
+void register_spring_force_field(Registry& r) {
+  ComponentInfo info;
+  info.name = "SpringForceField";
+  info.category = "ForceField/Spring";
+  info.description = "linear springs between the points of one or two states";
+  info.templates = {"Vec1d", "Vec2d", "Vec3d"};
+  info.default_template = "Vec3d";
+  // object1/object2 may live elsewhere than the node's state: the types are checked at init.
+  info.requirement = Requirement::none;
+  info.create = creator<SpringForceField>();
+  r.add(std::move(info));
+}
+
+}  // namespace sinew

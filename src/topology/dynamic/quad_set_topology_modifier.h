@@ -1,0 +1,20 @@
+// QuadSetTopologyModifier: Topology modifier dedicated to a quad topology.
+// No topological changes yet: it finds its container (same node) at init
+// and accepts its attributes.
+#pragma once
+
+#include "topology/dynamic/edge_set_topology_modifier.h"
+
+namespace sinew {
+
+class MeshContainer;
+
+class QuadSetTopologyModifier : public EdgeSetTopologyModifier {
+ public:
+
+ protected:
+  bool accepts(const Component& c) const override;
+  const char* container_kind() const override { return "QuadSetTopologyContainer"; }
+};
+
+}  // namespace sinew
