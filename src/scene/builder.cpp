@@ -4,6 +4,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/engine.h"
 #include "core/path.h"
 #include "core/registry.h"
 
@@ -40,6 +41,7 @@ class Builder {
     diag_ = &out_.root->diagnostics();
     build_node(e, *out_.root);
     resolve_pending_links();
+    report_link_cycles();
   }
 
   Diagnostics* diag_ = nullptr;
@@ -210,6 +212,22 @@ class Builder {
                                        (why.empty() ? "wrong type" : why));
         }
     });
+  }
+
+  // Data links (and engines whose outputs feed their own inputs) that form a
+  // cycle: no value can be computed; the scene is refused.
+  void report_link_cycles() {
+    std::vector<const BaseField*> all;
+    for_each_node(*out_.root, [&](Node& n) {
+      for (const BaseField* f : n.fields()) all.push_back(f);
+      for (auto& o : n.objects())
+        for (const BaseField* f : o->fields()) all.push_back(f);
+    });
+    for (const auto& cycle : find_field_cycles(all)) {
+      const Base* first = cycle.front()->owner();
+      diag_->error(first ? first->where : SourceLocation{},
+                   "link cycle (each takes its value from the next): " + describe_field_cycle(cycle));
+    }
   }
 
   const ResourcePaths& paths_;
