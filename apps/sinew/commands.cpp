@@ -1,5 +1,6 @@
 #include "commands.h"
 
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -14,6 +15,7 @@
 #include <oneapi/tbb/global_control.h>
 
 #include "components/register_all.h"
+#include "core/interrupt.h"
 #include "core/node.h"
 #include "core/registry.h"
 #include "core/profile.h"
@@ -37,9 +39,12 @@ std::string basename_of(const std::string& p) {
   return slash == std::string::npos ? p : p.substr(slash + 1);
 }
 
-void print_messages(const Diagnostics& d, bool include_info = false) {
-  for (const auto& m : d.messages())
-    if (include_info || m.severity != Severity::info) std::fprintf(stderr, "%s\n", Diagnostics::format(m).c_str());
+// Prints the messages from index `from` on (those not printed yet).
+void print_messages(const Diagnostics& d, bool include_info = false, std::size_t from = 0) {
+  const auto& all = d.messages();
+  for (std::size_t i = from; i < all.size(); ++i)
+    if (include_info || all[i].severity != Severity::info)
+      std::fprintf(stderr, "%s\n", Diagnostics::format(all[i]).c_str());
 }
 
 std::vector<std::string> data_paths_for(const std::vector<std::string>& extra) {
@@ -120,6 +125,29 @@ void print_profile(const StepProfile& p) {
     std::printf("%-40s %12.2f %10.3f %8ld\n", e.name.c_str(), 1000.0 * e.seconds, 1000.0 * e.seconds / n, e.count);
 }
 
+// Ctrl-C during `sinew run`: the current step finishes (long CG loops stop
+// early), the run reports and exits non-zero. A second Ctrl-C kills as usual.
+void on_interrupt(int) { request_interrupt(); }
+
+class InterruptHandler {
+ public:
+  InterruptHandler() {
+    clear_interrupt();
+    struct sigaction sa {};
+    sa.sa_handler = on_interrupt;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESETHAND;
+    installed_ = ::sigaction(SIGINT, &sa, &previous_) == 0;
+  }
+  ~InterruptHandler() {
+    if (installed_) ::sigaction(SIGINT, &previous_, nullptr);
+  }
+
+ private:
+  struct sigaction previous_ {};
+  bool installed_ = false;
+};
+
 }  // namespace
 
 std::string default_data_root() {
@@ -136,6 +164,7 @@ int run(const RunArgs& a) {
   so.data_paths = data_paths_for(a.data_paths);
   runner::Session session(a.scene, so);
   print_messages(session.diagnostics());
+  const std::size_t printed = session.diagnostics().messages().size();
   if (!session.ok()) {
     std::fprintf(stderr, "sinew: the scene %s cannot run (see the errors above)\n", a.scene.c_str());
     return 1;
@@ -171,12 +200,24 @@ int run(const RunArgs& a) {
   ProgressBar bar(a.steps, a.progress);
   const auto t0 = std::chrono::steady_clock::now();
   bool ok = true;
-  for (long i = 0; i < a.steps; ++i) {
-    if (!session.step()) {
-      ok = false;
-      break;
+  bool interrupted = false;
+  {
+    InterruptHandler on_sigint;
+    for (long i = 0; i < a.steps; ++i) {
+      if (!session.step()) {
+        ok = false;
+        break;
+      }
+      bar.update(i + 1);
+      if (interrupt_requested()) {
+        interrupted = true;
+        break;
+      }
     }
-    bar.update(i + 1);
+  }
+  if (interrupted) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "sinew: interrupted after %ld of %ld steps\n", session.steps_done(), a.steps);
   }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const long done = session.steps_done();
@@ -191,11 +232,10 @@ int run(const RunArgs& a) {
     }
   }
   if (!a.vtk.empty() && !export_vtk(root, a.vtk)) ok = false;
-  if (!ok) {
-    print_messages(session.diagnostics());
-    return 1;
-  }
-  return 0;
+  // Messages of the run (solver warnings, step errors), printed once.
+  print_messages(session.diagnostics(), false, printed);
+  if (interrupted) return 130;
+  return ok ? 0 : 1;
 }
 
 int check(const CheckArgs& a) {

@@ -2,6 +2,7 @@
 
 #include "core/node.h"
 #include "core/parse.h"
+#include "core/value_text.h"
 
 namespace sinew {
 
@@ -49,15 +50,18 @@ void Component::parse(AttributeMap& attrs, Diagnostics& diag) {
         f->mark_set();
         return;
       }
-      if (!f->read(e.value) && !e.value.empty()) {
-        diag.warning(where, describe() + ": could not read value for field '" + key + "': \"" + e.value + "\"");
+      const bool read_ok = f->read(e.value);
+      if (const std::string count = value_count_problem(*f, e.value); !count.empty()) {
+        diag.warning(where, describe() + ": field '" + key + "': " + count + ": " + quote_value(e.value));
+      } else if (!read_ok && !e.value.empty()) {
+        diag.warning(where, describe() + ": could not read value for field '" + key + "': " + quote_value(e.value));
       } else if (const std::string t = f->type_name();
                  t == "double" || t == "float" || t == "vector<double>" || t == "state vector" ||
                  (t.rfind("Vec", 0) == 0 && t.back() == 'd') || t.rfind("vector<Vec", 0) == 0) {
         // Real numbers are read like std::istream (a valid prefix is kept): say so.
         if (const std::string_view bad = parse::first_partial_number(e.value); !bad.empty())
-          diag.warning(where, describe() + ": field '" + key + "': \"" + std::string(bad) +
-                                  "\" is not a number (only its numeric prefix is used)");
+          diag.warning(where, describe() + ": field '" + key + "': " + quote_value(bad) +
+                                  " is not a number (only its numeric prefix is used)");
       }
       return;
     }

@@ -6,6 +6,16 @@
 namespace sinew {
 
 void Diagnostics::add(Severity s, SourceLocation where, std::string who, std::string text) {
+  // Safety net: a message never carries megabytes of scene text (values quoted
+  // in messages are shortened by quote_value; this catches the rest).
+  constexpr std::size_t kMaxText = 4000;
+  if (text.size() > kMaxText) {
+    const std::size_t total = text.size();
+    std::size_t cut = kMaxText;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    text.resize(cut);
+    text += "… (message shortened: " + std::to_string(total) + " characters)";
+  }
   std::lock_guard<std::mutex> lock(mutex_);
   if (s == Severity::error) ++errors_;
   if (s == Severity::warning) ++warnings_;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/component.h"
@@ -17,6 +18,8 @@ class Engine : public Component {
   void update();
   // Forces the next read of an output to recompute.
   void set_dirty() { dirty_ = true; }
+  const std::vector<BaseField*>& inputs() const { return inputs_; }
+  const std::vector<BaseField*>& outputs() const { return outputs_; }
 
  protected:
   void add_input(BaseField* f);
@@ -29,5 +32,18 @@ class Engine : public Component {
   bool dirty_ = true;
   bool updating_ = false;
 };
+
+}  // namespace sinew
+
+namespace sinew {
+
+// Cycles of the "takes its value from" graph over `fields`: a field depends on
+// its parent link and, when an engine produces it, on that engine's inputs.
+// Each cycle is listed once, as the fields in dependency order (the first
+// depends on the second, ..., the last on the first).
+std::vector<std::vector<const BaseField*>> find_field_cycles(const std::vector<const BaseField*>& fields);
+
+// "component 'a' (T).indices (file:12) → component 'b' (T).indices (file:13) → component 'a' (T).indices".
+std::string describe_field_cycle(const std::vector<const BaseField*>& cycle);
 
 }  // namespace sinew

@@ -5,6 +5,10 @@
 
 namespace sinew {
 
+namespace {
+constexpr int kMaxUpdateDepth = 1000;
+}  // namespace
+
 BaseField::BaseField(Base* owner, std::string name, std::string help, std::string group, const char* unit)
     : owner_(owner), name_(std::move(name)), help_(std::move(help)), group_(std::move(group)), unit_(unit) {
   if (owner_) owner_->register_field(this);
@@ -17,6 +21,16 @@ void BaseField::set_parent(BaseField* parent) {
 }
 
 void BaseField::update() const {
+  if (!parent_ && !producer_) return;
+  // Link cycles are refused by the scene builder; this bound only keeps a
+  // cycle made later (by code) from overflowing the stack. Chains of links in
+  // scenes are a few fields deep.
+  thread_local int depth = 0;
+  if (depth > kMaxUpdateDepth) return;
+  ++depth;
+  struct Leave {
+    ~Leave() { --depth; }
+  } leave;
   if (parent_) {
     parent_->update();
     if (parent_->version_ != parent_version_seen_) {

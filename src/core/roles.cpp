@@ -2,6 +2,7 @@
 
 #include "core/mechanical_ops.h"
 #include "core/node.h"
+#include "core/value_text.h"
 
 namespace sinew {
 
@@ -53,7 +54,7 @@ void ProjectiveConstraint::init() {
 void Mapping::parse(AttributeMap& attrs, Diagnostics& diag) {
   if (const std::string* v = attrs.take("isMechanical")) {
     if (!map_forces.read(*v) && !v->empty())
-      diag.warning(where, describe() + ": could not read value for field 'isMechanical': \"" + *v + "\"");
+      diag.warning(where, describe() + ": could not read value for field 'isMechanical': " + quote_value(*v));
     map_masses.read(*v);
   }
   Component::parse(attrs, diag);

@@ -1,6 +1,7 @@
 #include "core/simulation.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/mechanical_ops.h"
 #include "core/registry.h"
@@ -77,6 +78,12 @@ void project_and_propagate(Node& root, double t) {
 bool init_root(Node& root) {
   Diagnostics& diag = root.diagnostics();
   const int errors_before = diag.error_count();
+  // A step of dt <= 0 would never advance time (and divides by dt in places): refused.
+  if (const double dt = root.dt.value(); !(dt > 0) || !std::isfinite(dt)) {
+    diag.error(root.where, "node '" + root.name.value() + "': dt = " + root.dt.text() +
+                               ": the time step must be a positive number (time would not advance)");
+    return false;
+  }
   if (!root.animation_loop) {
     if (const ComponentInfo* info = registry().find("DefaultAnimationLoop")) {
       auto loop = info->create({});

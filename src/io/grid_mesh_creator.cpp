@@ -2,6 +2,7 @@
 
 #include <set>
 
+#include "core/alloc_check.h"
 #include "core/registry.h"
 
 namespace sinew {
@@ -15,6 +16,13 @@ bool GridMeshCreator::read_mesh(io::MeshData& out, std::string* error) {
   const int rx = resolution.get()[0], ry = resolution.get()[1];
   if (rx < 2 || ry < 2) {
     if (error) *error = "resolution must be at least 2 2 (got " + std::to_string(rx) + " " + std::to_string(ry) + ")";
+    return false;
+  }
+  if (!allocation_fits(static_cast<double>(rx) * ry, 256)) {
+    if (error)
+      *error = "resolution " + std::to_string(rx) + " " + std::to_string(ry) + " would need " +
+               format_bytes(256.0 * rx * ry) + ", more than this machine's " +
+               format_bytes(static_cast<double>(physical_memory_bytes())) + " of memory";
     return false;
   }
   const unsigned nx = static_cast<unsigned>(rx), ny = static_cast<unsigned>(ry);

@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "core/parse.h"
+#include "core/value_text.h"
 
 namespace sinew {
 
@@ -127,7 +128,7 @@ void MeshLoader::parse(AttributeMap& attrs, Diagnostics& diag) {
     double s = 1.0;
     const auto toks = parse::tokens(scale_text);
     if (toks.empty() || !parse::read_double(toks[0], s))
-      diag.warning(where, describe() + ": could not read value for attribute 'scale': \"" + scale_text + "\"");
+      diag.warning(where, describe() + ": could not read value for attribute 'scale': " + quote_value(scale_text));
     const double sf = static_cast<double>(static_cast<float>(s));
     Vec3 v = scale3d.value();
     scale3d.set(Vec3(v[0] * sf, v[1] * sf, v[2] * sf));

@@ -2,6 +2,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "core/value_text.h"
 #include "mapping/edge_kernels.h"
 
 namespace sinew {
@@ -11,8 +12,8 @@ bool DistanceMultiMapping::init_mapping() {
   dw_ = state_type_info(in_type()).deriv_width;
   gs_ = geometric_stiffness_id(geometric_stiffness.get(), 2);
   if (gs_ < 0) {
-    msg_error("geometricStiffness must be None, Exact or Stabilized (0, 1 or 2), not \"" + geometric_stiffness.get() +
-              "\"");
+    msg_error("geometricStiffness must be None, Exact or Stabilized (0, 1 or 2), not " +
+              quote_value(geometric_stiffness.get()));
     return false;
   }
   if (!topology && node()) topology.set(node()->get_mesh_topology_link());

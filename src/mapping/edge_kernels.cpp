@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/node.h"
+#include "core/value_text.h"
 
 namespace sinew::edge {
 
@@ -47,8 +48,8 @@ bool init_edges(MappingBase& m, const std::string& geometric_stiffness, Link<Mes
                 std::size_t n_in, int& gs, std::vector<Edge>& edges) {
   gs = geometric_stiffness_id(geometric_stiffness, 2);
   if (gs < 0) {
-    m.msg_error("geometricStiffness must be None, Exact or Stabilized (0, 1 or 2), not \"" + geometric_stiffness +
-                "\"");
+    m.msg_error("geometricStiffness must be None, Exact or Stabilized (0, 1 or 2), not " +
+                quote_value(geometric_stiffness));
     return false;
   }
   if (!topology && m.node()) topology.set(m.node()->get_mesh_topology_link());

@@ -4,6 +4,7 @@
 
 #include "core/node.h"
 #include "core/path.h"
+#include "core/value_text.h"
 
 namespace sinew {
 
@@ -68,7 +69,7 @@ bool MappingBase::resolve_links() {
   out_ = nullptr;
   vout_ = nullptr;
   if (input.targets().empty()) {
-    msg_error("input state not found (input=\"" + (input.is_set() ? input.path() : std::string("@../")) + "\")");
+    msg_error("input state not found (input=" + quote_value(input.is_set() ? input.path() : std::string("@../")) + ")");
     return false;
   }
   const char* want_in = state_type_info(in_type_).name;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/registry.h"
+#include "core/value_text.h"
 
 namespace sinew {
 
@@ -24,8 +25,8 @@ bool RigidMapping::init_mapping() {
   dim_ = state_type_info(out_type()).coord_width;  // Vec3d: 3, Vec2d: 2
   gs_ = geometric_stiffness_id(geometric_stiffness.get(), 0);
   if (gs_ < 0) {
-    msg_error("geometricStiffness must be None, Exact or Stabilized (0, 1 or 2), not \"" + geometric_stiffness.get() +
-              "\"");
+    msg_error("geometricStiffness must be None, Exact or Stabilized (0, 1 or 2), not " +
+              quote_value(geometric_stiffness.get()));
     return false;
   }
   if (gs_ == 2 || (gs_ == 1 && !rigid3())) {
@@ -33,7 +34,8 @@ bool RigidMapping::init_mapping() {
     return false;
   }
   if (!filename.value().empty()) {
-    msg_error("loading local coordinates from a file (filename=\"" + filename.value() + "\") is not supported");
+    msg_error("loading local coordinates from a file (filename=" + quote_value(filename.value()) +
+              ") is not supported");
     return false;
   }
   const std::size_t n_in = in_size();

@@ -1,6 +1,7 @@
 #include "runner/session.h"
 
 #include <exception>
+#include <new>
 
 #include "components/register_all.h"
 #include "core/simulation.h"
@@ -15,11 +16,26 @@ Session::Session(const std::string& path, const SessionOptions& options) {
   register_all_components();
   scene::LoadOptions lo;
   lo.data_paths = options.data_paths;
-  scene_ = scene::load_scene(path, lo, load_diag_);
+  // Loading and init never let an exception out (an allocation that failed
+  // despite the size checks, a bug): it becomes an error and the scene is refused.
+  try {
+    scene_ = scene::load_scene(path, lo, load_diag_);
+  } catch (const std::bad_alloc&) {
+    scene_ = {};
+    load_diag_.error({path, 0}, "loading failed: out of memory (a size in the scene is too large?)");
+    return;
+  } catch (const std::exception& e) {
+    scene_ = {};
+    load_diag_.error({path, 0}, std::string("loading failed: ") + e.what());
+    return;
+  }
   if (!scene_.root) return;
   if (scene_.root->diagnostics().has_errors()) return;  // refused whole, never half-run
   try {
     init_root(*scene_.root);
+  } catch (const std::bad_alloc&) {
+    scene_.root->diagnostics().error({path, 0},
+                                     "initialisation failed: out of memory (a size in the scene is too large?)");
   } catch (const std::exception& e) {
     scene_.root->diagnostics().error({path, 0}, std::string("initialisation failed: ") + e.what());
   }

@@ -4,7 +4,9 @@
 #include <set>
 #include <sstream>
 
+#include "core/engine.h"
 #include "core/path.h"
+#include "core/value_text.h"
 #include "core/registry.h"
 
 namespace sinew::scene {
@@ -40,6 +42,7 @@ class Builder {
     diag_ = &out_.root->diagnostics();
     build_node(e, *out_.root);
     resolve_pending_links();
+    report_link_cycles();
   }
 
   Diagnostics* diag_ = nullptr;
@@ -48,8 +51,12 @@ class Builder {
   void build_node(const Element& e, Node& node) {
     for (const auto& [key, value] : e.attributes) {
       if (BaseField* f = node.find_field(key)) {
-        if (!f->read(value) && !value.empty())
-          diag_->warning(e.where, "could not read value for node field '" + key + "': \"" + value + "\"");
+        const bool read_ok = f->read(value);
+        if (const std::string count = value_count_problem(*f, value); !count.empty())
+          diag_->warning(e.where, "node '" + std::string(e.name()) + "': field '" + key + "': " + count + ": " +
+                                      quote_value(value));
+        else if (!read_ok && !value.empty())
+          diag_->warning(e.where, "could not read value for node field '" + key + "': " + quote_value(value));
       } else if (is_viewer_node_attribute(key)) {
         // Display flags only matter to a viewer.
       } else if (!(key.rfind("_", 0) == 0 || key.rfind("NO", 0) == 0)) {
@@ -111,7 +118,7 @@ class Builder {
         std::vector<std::string> names;
         for (BaseField* f : c->fields()) names.push_back(f->name());
         for (BaseLink* l : c->links()) names.push_back(l->name());
-        diag_->warning(e.where, c->describe() + ": unused attribute '" + key + "' = \"" + entry.value + "\"" +
+        diag_->warning(e.where, c->describe() + ": unused attribute '" + key + "' = " + quote_value(entry.value) +
                                     suggestion_text(closest_names(key, names)));
       }
 
@@ -123,7 +130,7 @@ class Builder {
 
   void apply_src(Component& c, Node& node, const std::string& src, const AttributeMap& attrs, const Element& e) {
     if (src.empty() || src[0] != '@') {
-      diag_->error(e.where, c.describe() + ": src must start with '@' (\"" + src + "\")");
+      diag_->error(e.where, c.describe() + ": src must start with '@' (" + quote_value(src) + ")");
       return;
     }
     if (src == "@") {
@@ -134,7 +141,7 @@ class Builder {
     Base* target = resolve_object_path(node, &c, src.substr(src.rfind('@') + 1),
                                        [](Base* b) { return dynamic_cast<Component*>(b) != nullptr; }, &why);
     if (!target) {
-      diag_->error(e.where, c.describe() + ": source object \"" + src + "\" not found: " + why);
+      diag_->error(e.where, c.describe() + ": source object " + quote_value(src) + " not found: " + why);
       return;
     }
     for (BaseField* from : target->fields()) {
@@ -159,7 +166,7 @@ class Builder {
     if (auto found = paths_.resolve(value, e.base_dir)) {
       f.read(*found);
     } else {
-      diag_->error(e.where, c.describe() + ": file not found: \"" + value + "\" (searched " + e.base_dir +
+      diag_->error(e.where, c.describe() + ": file not found: " + quote_value(value) + " (searched " + e.base_dir +
                                 " and the data paths)");
     }
   }
@@ -181,8 +188,8 @@ class Builder {
     for (auto& [c, f] : pending_) {
       std::string why;
       if (!try_field_link(*c, *f, &why))
-        diag_->error(c->where, c->describe() + ": cannot resolve link " + f->name() + "=\"" + f->link_path() +
-                                   "\": " + why);
+        diag_->error(c->where, c->describe() + ": cannot resolve link " + f->name() + "=" +
+                                   quote_value(f->link_path()) + ": " + why);
     }
     for_each_node(*out_.root, [&](Node& n) {
       for (auto& o : n.objects())
@@ -198,18 +205,34 @@ class Builder {
               Base* t = resolve_object_path(n, o.get(), p, [l](Base* b) { return l->accept(b); }, &w);
               if (t) l->add_target(t);
               else
-                diag_->error(o->where, o->describe() + ": cannot resolve link " + l->name() + "=\"" + p + "\": " +
-                                           (w.empty() ? "wrong type" : w));
+                diag_->error(o->where, o->describe() + ": cannot resolve link " + l->name() + "=" + quote_value(p) +
+                                           ": " + (w.empty() ? "wrong type" : w));
             }
             continue;
           }
           // Single links: one path.
           Base* t = resolve_object_path(n, o.get(), path, [l](Base* b) { return l->accept(b); }, &why);
           if (!t || !l->accept(t))
-            diag_->error(o->where, o->describe() + ": cannot resolve link " + l->name() + "=\"" + path + "\": " +
-                                       (why.empty() ? "wrong type" : why));
+            diag_->error(o->where, o->describe() + ": cannot resolve link " + l->name() + "=" + quote_value(path) +
+                                       ": " + (why.empty() ? "wrong type" : why));
         }
     });
+  }
+
+  // Data links (and engines whose outputs feed their own inputs) that form a
+  // cycle: no value can be computed; the scene is refused.
+  void report_link_cycles() {
+    std::vector<const BaseField*> all;
+    for_each_node(*out_.root, [&](Node& n) {
+      for (const BaseField* f : n.fields()) all.push_back(f);
+      for (auto& o : n.objects())
+        for (const BaseField* f : o->fields()) all.push_back(f);
+    });
+    for (const auto& cycle : find_field_cycles(all)) {
+      const Base* first = cycle.front()->owner();
+      diag_->error(first ? first->where : SourceLocation{},
+                   "link cycle (each takes its value from the next): " + describe_field_cycle(cycle));
+    }
   }
 
   const ResourcePaths& paths_;

@@ -1,3 +1,4 @@
+#include "core/value_text.h"
 #include "scene/xml_tree.h"
 
 #include <tinyxml2.h>
@@ -152,8 +153,8 @@ class Builder {
     // SOFA treats a missing type as "default"; any other type on a non-keyword tag
     // makes element creation fail, and the element is dropped with an info message.
     if (type != nullptr && std::string_view(type) != "default") {
-      diag_.info(at(x, f), "element <" + std::string(tag) + "> with type=\"" + type +
-                               "\" cannot be created (only <Object> takes a 'type' attribute); element dropped");
+      diag_.info(at(x, f), "element <" + std::string(tag) + "> with type=" + quote_value(type) +
+                               " cannot be created (only <Object> takes a 'type' attribute); element dropped");
       return std::nullopt;
     }
     return std::string(tag);

@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "core/node.h"
+#include "core/alloc_check.h"
 #include "core/registry.h"
 #include "math/rigid.h"
 
@@ -161,7 +162,15 @@ void MechanicalObject::parse(AttributeMap& attrs, Diagnostics& diag) {
   read3("rx2", "ry2", "rz2", rotation2, 0.0);
   read3("dx2", "dy2", "dz2", translation2, 0.0);
   Component::parse(attrs, diag);
-  if (size_field.is_set()) resize(static_cast<std::size_t>(std::max(0, size_field.value())));
+  if (size_field.is_set()) {
+    const int n = std::max(0, size_field.value());
+    // x, v, f, dx, and the rest/free vectors solvers add: about 8 vectors per DoF.
+    const double bytes = 8.0 * 8.0 * std::max(info().coord_width, info().deriv_width);
+    if (check_allocation(*this, "size", std::to_string(size_field.value()), n, bytes))
+      resize(static_cast<std::size_t>(n));
+    else
+      set_state(ComponentState::invalid);
+  }
 }
 
 void MechanicalObject::apply_transform(std::vector<double>& x, const Vec3& scale, const Vec3& rot_deg,

@@ -6,6 +6,7 @@
 
 #include "core/engine.h"
 #include "core/registry.h"
+#include "core/value_text.h"
 #include "io/mesh_readers.h"
 
 namespace sinew {
@@ -147,7 +148,7 @@ bool MeshContainer::load_file(const std::string& file) {
   else if (ends_with(".vtk") || ends_with(".vtu")) mesh = io::read_vtk(file, &err);
   else err = "this file format is not supported";
   if (!mesh) {
-    msg_error("Unable to load Mesh \"" + file + "\": " + err);
+    msg_error("Unable to load Mesh " + quote_value(file) + ": " + err);
     set_state(ComponentState::invalid);
     return false;
   }

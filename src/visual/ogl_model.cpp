@@ -5,6 +5,7 @@
 #include "core/node.h"
 #include "core/parse.h"
 #include "core/registry.h"
+#include "core/value_text.h"
 #include "io/mesh_readers.h"
 
 namespace sinew {
@@ -94,7 +95,7 @@ bool OglModel::load_file() {
                                        file.compare(file.size() - 4, 4, ".OBJ") == 0);
   if (!obj) {
     msg_error("loading a mesh file directly inside the visual model is only supported for .obj files; use a "
-              "MeshLoader and src=\"@loader\" (file \"" + file + "\")");
+              "MeshLoader and src=\"@loader\" (file " + quote_value(file) + ")");
     return false;
   }
   msg_warning("loading an obj file directly inside the visual model is deprecated; use a MeshOBJLoader and "
@@ -103,7 +104,7 @@ bool OglModel::load_file() {
   io::ReadOptions opt;
   auto mesh = io::read_obj(file, &error, opt);
   if (!mesh) {
-    msg_error(error.empty() ? "cannot load \"" + file + "\"" : error);
+    msg_error(error.empty() ? "cannot load " + quote_value(file) : error);
     return false;
   }
   std::vector<double>& x = position.edit().data;

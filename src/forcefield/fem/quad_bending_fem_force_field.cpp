@@ -7,6 +7,7 @@
 #include "core/node.h"
 #include "core/parse.h"
 #include "core/registry.h"
+#include "core/value_text.h"
 
 namespace sinew {
 
@@ -94,7 +95,7 @@ void QuadBendingFEMForceField::init() {
     return;
   }
   if (method.value() != "small")
-    msg_warning("method \"" + method.value() + "\" is not implemented (as in SOFA): using small");
+    msg_warning("method " + quote_value(method.value()) + " is not implemented (as in SOFA): using small");
   if (young_modulus.get().empty() || poisson_ratio.get().empty()) {
     msg_error("youngModulus and poissonRatio must not be empty");
     set_state(ComponentState::invalid);

@@ -7,6 +7,7 @@
 #include "core/node.h"
 #include "core/parse.h"
 #include "core/registry.h"
+#include "core/value_text.h"
 #include "forcefield/fem/triangle_fem_kernels.h"
 
 namespace sinew {
@@ -34,7 +35,7 @@ void TriangularFEMForceField::init() {
     small_ = true;
   } else {
     if (method.value() != "large")
-      msg_warning("method \"" + method.value() + "\" is unknown (large or small): using large");
+      msg_warning("method " + quote_value(method.value()) + " is unknown (large or small): using large");
     small_ = false;
   }
   if (rotated_initial_elements.is_set() || initial_transformation.is_set()) {

@@ -7,6 +7,7 @@
 #include "core/node.h"
 #include "core/parse.h"
 #include "core/registry.h"
+#include "core/value_text.h"
 
 namespace sinew {
 
@@ -37,8 +38,8 @@ inline Vec3 diff(const double* x, unsigned i, unsigned j) {
 
 void TriangularFEMForceFieldOptim::parse(AttributeMap& attrs, Diagnostics& diag) {
   if (const std::string* m = attrs.peek("method"); m && !m->empty() && *m != "large")
-    diag.warning(where, describe() + ": method \"" + *m +
-                            "\" was requested but only the \"large\" method is implemented; ignoring");
+    diag.warning(where, describe() + ": method " + quote_value(*m) +
+                            " was requested but only the \"large\" method is implemented; ignoring");
   ForceField::parse(attrs, diag);
 }
 

@@ -1,7 +1,9 @@
 #include "solver/linear/cg_linear_solver.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "core/interrupt.h"
 #include "core/mechanical_ops.h"
 #include "core/registry.h"
 #include "core/node.h"
@@ -9,6 +11,24 @@
 #include "solver/linear/assembled_cg_linear_solver.h"
 
 namespace sinew {
+
+namespace {
+void warn_if_too_many_iterations(const CGLinearSolver& cg, Node& node) {
+  // CG converges in at most n iterations in exact arithmetic; a few times n
+  // covers round-off. Far more, with tolerances that never stop it, runs for hours.
+  std::vector<MechanicalState*> states;
+  node.collect_down(states);
+  std::size_t n = 0;
+  for (const MechanicalState* s : states) n += s->read(kVelocity).size();
+  const double bound = std::max(1000.0, 10.0 * static_cast<double>(n));
+  if (cg.iterations.value() > bound)
+    cg.msg_warning("iterations = " + std::to_string(cg.iterations.value()) + " is far more than the system size (" +
+                std::to_string(n) + " unknowns): CG converges in at most n iterations in exact arithmetic" +
+                (cg.tolerance.value() == 0 && cg.threshold.value() == 0
+                     ? "; with tolerance and threshold 0 every solve runs all of them"
+                     : ""));
+}
+}  // namespace
 
 void CGLinearSolver::init() {
   for (auto* f : {static_cast<BaseField*>(&iterations), static_cast<BaseField*>(&tolerance),
@@ -28,6 +48,11 @@ void CGLinearSolver::init() {
   p_ = MechanicalOps::alloc_vec();
   q_ = MechanicalOps::alloc_vec();
   time_step_count_ = 0;
+}
+
+void CGLinearSolver::bwd_init() {
+  // After every init: the states know their sizes.
+  if (node()) warn_if_too_many_iterations(*this, *node());
 }
 
 void CGLinearSolver::build_system(MechanicalOps& ops, double m, double b, double k) {
@@ -65,6 +90,10 @@ void CGLinearSolver::solve_system(MechanicalOps& ops, int x, int rhs) {
   if (nb != 0.0) {
     double rho_prev = 0;
     for (unsigned k = 1; k <= max_it; ++k) {
+      if (interrupt_requested()) {
+        msg_warning("interrupted after " + std::to_string(k - 1) + " CG iterations");
+        break;
+      }
       const double rho = ops.v_dot(r_, r_);
       const double err = std::sqrt(rho) / nb;
       last_error_ = err;
@@ -99,6 +128,7 @@ void CGLinearSolver::solve_system(MechanicalOps& ops, int x, int rhs) {
   }
   ++time_step_count_;
 }
+
 
 void register_cg_linear_solver(Registry& r) {
   ComponentInfo info;

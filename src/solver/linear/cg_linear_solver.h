@@ -19,6 +19,7 @@ class CGLinearSolver final : public LinearSolver {
   Field<bool> parallel_inverse_product{this, "parallelInverseProduct", false, "no effect for CG", "Solver"};
 
   void init() override;
+  void bwd_init() override;  // warns about iterations far beyond the system size
   void build_system(MechanicalOps& ops, double m, double b, double k) override;
   void solve_system(MechanicalOps& ops, int x, int rhs) override;
 

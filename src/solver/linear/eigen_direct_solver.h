@@ -59,6 +59,9 @@ class EigenDirectSolver : public MatrixLinearSolver {
   std::vector<double> vals_;
   EigenFactorization::Matrix matrix_;
   bool factorized_ = false, analyzed_ = false;
+  bool input_reported_ = false;
+  // Why the filtered matrix cannot be given to Eigen (zero, non-finite, zero rows); empty when it can.
+  std::string check_input(int n) const;
 };
 
 // Builds a factorization for one of the orderings Natural, AMD, COLAMD, Metis.

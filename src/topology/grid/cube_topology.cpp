@@ -1,5 +1,6 @@
 #include "topology/grid/cube_topology.h"
 
+#include "core/alloc_check.h"
 #include "core/registry.h"
 
 namespace sinew {
@@ -32,6 +33,13 @@ void CubeTopology::init() {
   if (nx.value() < 1 || ny.value() < 1 || nz.value() < 1) {
     msg_error("nx, ny and nz must be at least 1 (got " + std::to_string(nx.value()) + " " +
               std::to_string(ny.value()) + " " + std::to_string(nz.value()) + ")");
+    set_state(ComponentState::invalid);
+    return;
+  }
+  // Surface points only, but the check is on the box (an upper bound).
+  if (!check_allocation(*this, "nx ny nz",
+                        std::to_string(nx.value()) + " " + std::to_string(ny.value()) + " " + std::to_string(nz.value()),
+                        static_cast<double>(nx.value()) * ny.value() * nz.value(), 64)) {
     set_state(ComponentState::invalid);
     return;
   }
@@ -122,6 +130,7 @@ Vec3 CubeTopology::lattice_point(int i) const {
 void CubeTopology::generate() {
   const int nx_ = nx.value(), ny_ = ny.value(), nz_ = nz.value();
   if (nx_ < 1 || ny_ < 1 || nz_ < 1) return;  // reported by init
+  if (!allocation_fits(static_cast<double>(nx_) * ny_ * nz_, 64)) return;  // reported by init
   const Vec3 lo = min.get(), hi = max.get();
   p0_ = lo;
   dx_ = nx_ > 1 ? Vec3((hi[0] - lo[0]) / (nx_ - 1), 0, 0) : Vec3::Zero();

@@ -3,9 +3,15 @@
 #include <cmath>
 #include <map>
 
+#include "core/alloc_check.h"
 #include "core/registry.h"
 
 namespace sinew {
+
+namespace {
+// Rough bytes per grid point of the lists a grid builds (points, cells, faces, edges).
+constexpr double kBytesPerPoint = 256;
+}  // namespace
 
 RegularGridTopology::RegularGridTopology() = default;
 
@@ -54,8 +60,18 @@ void RegularGridTopology::init() {
   }
   if (cell_width.value() > 0) {
     const Vec3 size = max.get() - min.get();
+    double count = 1;
+    double per_axis[3];
+    for (int a = 0; a < 3; ++a) count *= per_axis[a] = std::ceil(std::abs(size[a]) / cell_width.value()) + 1;
+    if (!check_allocation(*this, "cellWidth", parse::to_text(cell_width.value()) + " (" + parse::format_double(per_axis[0]) +
+                                                  " × " + parse::format_double(per_axis[1]) + " × " +
+                                                  parse::format_double(per_axis[2]) + " points)",
+                          count, kBytesPerPoint)) {
+      set_state(ComponentState::invalid);
+      return;
+    }
     VecNi<3> d;
-    for (int a = 0; a < 3; ++a) d[a] = static_cast<int>(std::ceil(size[a] / cell_width.value())) + 1;
+    for (int a = 0; a < 3; ++a) d[a] = static_cast<int>(per_axis[a]);
     n.set(d);
   }
   regenerate();
@@ -63,6 +79,22 @@ void RegularGridTopology::init() {
 }
 
 void RegularGridTopology::generate() {
+  if (state() == ComponentState::invalid) return;  // reported
+  {
+    const VecNi<3> want = n.get();
+    double count = 1;
+    for (int a = 0; a < 3; ++a) count *= want[a] < 1 ? 2.0 : static_cast<double>(want[a]);
+    // Point indices are ints (SOFA's too).
+    bool ok = check_allocation(*this, "n", parse::to_text(want), count, kBytesPerPoint);
+    if (ok && count > 2147483647.0) {
+      msg_error("'n' = " + parse::to_text(want) + " has more than 2³¹ points");
+      ok = false;
+    }
+    if (!ok) {
+      set_state(ComponentState::invalid);
+      return;
+    }
+  }
   dims_ = n.get();
   for (int a = 0; a < 3; ++a)
     if (dims_[a] < 1) dims_[a] = 2;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 
+#include "core/alloc_check.h"
 #include "core/registry.h"
 #include "io/mesh_readers.h"
 
@@ -253,6 +254,21 @@ bool SparseGridTopology::prepare(VecNi<3>& dims, std::vector<Vec3>& vertices,
   for (int a = 0; a < 3; ++a)
     if (dims[a] < 2) dims[a] = 2;
   n.set(dims);
+  {
+    // The finest grid has (n-1)·2^levels + 1 points per axis: check what it would allocate first.
+    const int levels = std::min(std::max(nb_virtual_finer_levels.value(), 0), 60);
+    double count = 1;
+    for (int a = 0; a < 3; ++a) count *= (dims[a] - 1) * std::ldexp(1.0, levels) + 1;
+    bool ok = check_allocation(*this, levels > 0 ? "n (with nbVirtualFinerLevels)" : "n",
+                               parse::to_text(dims) +
+                                   (levels > 0 ? ", nbVirtualFinerLevels = " + std::to_string(levels) : ""),
+                               count, 256);
+    if (ok && count > 2147483647.0) {
+      msg_error("'n' = " + parse::to_text(dims) + " has more than 2³¹ points");
+      ok = false;
+    }
+    if (!ok) return false;
+  }
 
   if (nb_virtual_finer_levels.value() < 0) {
     msg_error("nbVirtualFinerLevels must be >= 0 (got " + std::to_string(nb_virtual_finer_levels.value()) + ")");
