@@ -344,6 +344,7 @@ SINEW_VEC(6)
 SINEW_VEC(7)
 SINEW_VEC(9)
 SINEW_VEC(10)
+SINEW_VEC(16)
 #undef SINEW_VEC
 template bool read<2>(std::string_view, VecNi<2>&);
 template bool read<3>(std::string_view, VecNi<3>&);
