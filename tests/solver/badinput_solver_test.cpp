@@ -147,6 +147,23 @@ TEST(BadInputExplicit, DivergingRungeKutta4StopsWithAnError) {
   EXPECT_LT(o.steps, 2000);
 }
 
+TEST(BadInputExplicit, DivergingRungeKutta2StopsWithAnError) {
+  TempDir dir;
+  const Outcome o = run_xml(dir, R"(<Node name="root" dt="0.1" gravity="0 -9.81 0">
+  <DefaultAnimationLoop/>
+  <RungeKutta2Solver name="ode"/>
+  <MechanicalObject name="dofs" position="0 0 0  1 0 0  2 0 0  3 0 0"/>
+  <UniformMass name="mass" totalMass="0.001"/>
+  <FixedProjectiveConstraint indices="0"/>
+  <SpringForceField name="springs" spring="0 1 1e6 0 1  1 2 1e6 0 1  2 3 1e6 0 1"/>
+</Node>)",
+                            2000);
+  EXPECT_TRUE(any_contains_all(o.errors, {"component 'ode' (RungeKutta2Solver)",
+                                          "diverged at step " + std::to_string(o.steps - 1) + ","}))
+      << o.all();
+  EXPECT_LT(o.steps, 2000);
+}
+
 TEST(BadInputExplicit, DivergingImplicitWithNegativeDtIsNotSilent) {
   TempDir dir;
   const Outcome o = run_xml(dir, R"(<Node name="root" dt="-0.1" gravity="0 -9.81 0">
