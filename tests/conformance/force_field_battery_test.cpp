@@ -168,6 +168,8 @@ const std::vector<ForceFieldCase> kCases = {
      kEnergy | kStiffness},
     {"PlaneForceField", tetras(ff("PlaneForceField", "normal='0 0.6 0.8' d='0.45' stiffness='700' damping='3'")),
      kEnergy | kStiffness},
+    {"PlaneForceField_Rigid3d", beam(ff("PlaneForceField", "template='Rigid3d' normal='0 0.6 0.8' d='0.45' stiffness='700'")),
+     kEnergy | kStiffness},
     {"EdgePressureForceField",
      node("<MeshTopology name='topo' position='0 0 0  2 0 0  2 1 0' edges='0 1  1 2'/><MechanicalObject name='dofs'/>" +
           ff("EdgePressureForceField", "edges='0 1  1 2' pressure='0 0 1'")),

@@ -425,6 +425,38 @@ TEST(PlaneForceField, PenaltyForceAndTangent) {
   EXPECT_DOUBLE_EQ(df[4], 0.0);
 }
 
+// Rigid3d: the plane acts on the frame centres (SOFA's DPos); orientations and angular
+// velocities play no part, no torque, and the tangent only has the translation block.
+TEST(PlaneForceField, Rigid3dActsOnTheCentresOnly) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <MechanicalObject name="dofs" template="Rigid3d" position="1 -3.5 2  0 0 0.6 0.8   0 -2 0  0 0 0 1"
+        velocity="0.5 -1 0  3 4 5   0 0 0  1 1 1"/>
+    <PlaneForceField name="ff" template="Rigid3d" normal="0 1 0" d="-3" stiffness="1000" damping="5"/>
+  </Node>)");
+  auto* ff = get<PlaneForceField>(*s.root, "ff");
+  ASSERT_EQ(ff->state(), ComponentState::valid);
+  MechanicalState& st = *s.root->mechanical_state;
+  const auto f = force_at(*ff, st, st.write(kPosition));
+  ASSERT_EQ(f.size(), 12u);
+  // dist = −0.5: F = n·(−k·dist) − v·(−c·dist) = (0, 500, 0) − (0.5, −1, 0)·2.5 = (−1.25, 502.5, 0)
+  EXPECT_DOUBLE_EQ(f[0], -1.25);
+  EXPECT_DOUBLE_EQ(f[1], 500 + 2.5);
+  EXPECT_DOUBLE_EQ(f[2], 0.0);
+  for (int c = 3; c < 12; ++c) EXPECT_DOUBLE_EQ(f[c], 0.0) << c;
+  ASSERT_EQ(ff->contacts(), (std::vector<unsigned>{0}));
+  const auto df = dforce(*ff, st, {0.3, 1, 0, 7, 8, 9, 0, 1, 0, 1, 1, 1});
+  for (int c = 0; c < 12; ++c) EXPECT_DOUBLE_EQ(df[c], c == 1 ? -1000.0 : 0.0) << c;
+  MatrixSink K;
+  ASSERT_TRUE(ff->build_stiffness(K));
+  double sum = 0;
+  for (const auto& e : K.entries()) {
+    EXPECT_LT(e.row, 3u);
+    EXPECT_LT(e.col, 3u);
+    sum += e.value;
+  }
+  EXPECT_DOUBLE_EQ(sum, -1000.0);
+}
+
 TEST(UniformVelocityDampingForceField, DampsAndAddsTheDampingMatrixWhenImplicit) {
   auto s = load(R"(<Node gravity="0 0 0">
     <MechanicalObject name="dofs" position="0 0 0" velocity="1 -2 3"/>

@@ -10,11 +10,14 @@ namespace sinew {
 void PlaneForceField::init() {
   ForceField::init();
   if (state() != ComponentState::valid) return;
-  if (mstate->state_type() != StateType::vec3) {
-    msg_error("only Vec3d states are supported");
+  if (mstate->state_type() != StateType::vec3 && mstate->state_type() != StateType::rigid3) {
+    msg_error("only Vec3d and Rigid3d states are supported");
     set_state(ComponentState::invalid);
     return;
   }
+  // Rigid3d: the plane acts on the frame centres; no torque (SOFA's DPos is the translation).
+  cw_ = mstate->info().coord_width;
+  dw_ = mstate->info().deriv_width;
   k_ = stiffness.get();
   c_ = damping.get();
   max_ = max_force.get();
@@ -43,7 +46,7 @@ void PlaneForceField::add_force(const MechParams& p) {
   const std::vector<double>& v = s.read(p.v);
   std::vector<double>& f = s.write(p.f);
   contacts_.clear();
-  unsigned ibegin = 0, iend = static_cast<unsigned>(x.size() / 3);
+  unsigned ibegin = 0, iend = static_cast<unsigned>(x.size() / cw_);
   const VecNi<2> r = local_range.value();
   if (r[0] >= 0) ibegin = static_cast<unsigned>(r[0]);
   if (r[1] >= 0 && static_cast<unsigned>(r[1]) + 1 < iend) iend = static_cast<unsigned>(r[1]) + 1;
@@ -51,18 +54,19 @@ void PlaneForceField::add_force(const MechParams& p) {
   const Vec3 n = normal.value();
   const double pd = d.value();
   for (unsigned i = ibegin; i < iend; i++) {
-    const double dist = x[3 * i] * n[0] + x[3 * i + 1] * n[1] + x[3 * i + 2] * n[2] - pd;
+    const double* xi = &x[cw_ * i];
+    const double dist = xi[0] * n[0] + xi[1] * n[1] + xi[2] * n[2] - pd;
     if (bilateral.value() || dist < 0) {
       const double fi = -k_ * dist;
       const double di = -c_ * dist;
       double F[3];
-      for (int c = 0; c < 3; ++c) F[c] = n[c] * fi - v[3 * i + c] * di;
+      for (int c = 0; c < 3; ++c) F[c] = n[c] * fi - v[dw_ * i + c] * di;
       const double amp = F[0] * F[0] + F[1] * F[1] + F[2] * F[2];
       if (limit > 0 && amp > limit) {
         const double sc = std::sqrt(limit / amp);
         for (double& c : F) c *= sc;
       }
-      for (int c = 0; c < 3; ++c) f[3 * i + c] += F[c];
+      for (int c = 0; c < 3; ++c) f[dw_ * i + c] += F[c];
       contacts_.push_back(i);
     }
   }
@@ -71,14 +75,15 @@ void PlaneForceField::add_force(const MechParams& p) {
 std::optional<double> PlaneForceField::potential_energy() const {
   if (state() != ComponentState::valid || max_ > 0) return std::nullopt;
   const std::vector<double>& x = mstate->read(kPosition);
-  unsigned ibegin = 0, iend = static_cast<unsigned>(x.size() / 3);
+  unsigned ibegin = 0, iend = static_cast<unsigned>(x.size() / cw_);
   const VecNi<2> r = local_range.value();
   if (r[0] >= 0) ibegin = static_cast<unsigned>(r[0]);
   if (r[1] >= 0 && static_cast<unsigned>(r[1]) + 1 < iend) iend = static_cast<unsigned>(r[1]) + 1;
   const Vec3 n = normal.value();
   double e = 0;
   for (unsigned i = ibegin; i < iend; i++) {
-    const double dist = x[3 * i] * n[0] + x[3 * i + 1] * n[1] + x[3 * i + 2] * n[2] - d.value();
+    const double* xi = &x[cw_ * i];
+    const double dist = xi[0] * n[0] + xi[1] * n[1] + xi[2] * n[2] - d.value();
     if (bilateral.value() || dist < 0) e += 0.5 * k_ * dist * dist;
   }
   return e;
@@ -91,8 +96,9 @@ void PlaneForceField::add_dforce(const MechParams& p, double kfactor) {
   const double fact = -k_ * kfactor;
   const Vec3 n = normal.value();
   for (unsigned i : contacts_) {
-    const double t = fact * (dx[3 * i] * n[0] + dx[3 * i + 1] * n[1] + dx[3 * i + 2] * n[2]);
-    for (int c = 0; c < 3; ++c) df[3 * i + c] += n[c] * t;
+    const double* dxi = &dx[dw_ * i];
+    const double t = fact * (dxi[0] * n[0] + dxi[1] * n[1] + dxi[2] * n[2]);
+    for (int c = 0; c < 3; ++c) df[dw_ * i + c] += n[c] * t;
   }
 }
 
@@ -102,7 +108,7 @@ bool PlaneForceField::build_stiffness(MatrixSink& K) {
   Mat3 m;
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) m(a, b) = -k_ * (n[a] * n[b]);
-  for (unsigned i : contacts_) K.add_block(s, 3 * i, s, 3 * i, m);
+  for (unsigned i : contacts_) K.add_block(s, dw_ * i, s, dw_ * i, m);
   return true;
 }
 
@@ -111,7 +117,7 @@ void register_plane_force_field(Registry& r) {
   info.name = "PlaneForceField";
   info.category = "ForceField/MechanicalLoad";
   info.description = "penalty force keeping points on one side of a plane";
-  info.templates = {"Vec3d"};
+  info.templates = {"Vec3d", "Rigid3d"};
   info.default_template = "Vec3d";
   info.requirement = Requirement::state;
   info.create = creator<PlaneForceField>();

@@ -1,7 +1,7 @@
 // PlaneForceField: penalty force pushing points to the positive side of the
 // plane x·n = d (n not normalised), with damping along the velocity; the
 // stiffness −k·n·nᵀ acts on the points found in contact by the last
-// add_force (spec/mechanics.md §3.9).
+// add_force (spec/mechanics.md §3.9). Rigid3d: on the frame centres, no torque.
 #pragma once
 
 #include <vector>
@@ -38,6 +38,7 @@ class PlaneForceField final : public ForceField {
 
  private:
   double k_ = 500, c_ = 5, max_ = 0;
+  unsigned cw_ = 3, dw_ = 3;  // coord and deriv widths (Rigid3d: 7, 6; the centre is the first 3)
   std::vector<unsigned> contacts_;
 };
 
