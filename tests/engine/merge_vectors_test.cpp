@@ -2,6 +2,7 @@
 // created from nbInputs / nbMeshes, concatenation, index shifts.
 #include <gtest/gtest.h>
 
+#include "engine/merge_meshes.h"
 #include "engine/merge_vectors.h"
 #include "test_scene.h"
 
@@ -69,4 +70,38 @@ TEST(MergeVectors, ReportsInputsBeyondTheCountAndHugeCounts) {
   EXPECT_EQ(huge->output.get().size(), 1u);
   EXPECT_TRUE(test::any_contains(test::messages(s.root->diagnostics(), Severity::error),
                                  "nbInputs = 5000 but only 1024 inputs exist"));
+}
+
+TEST(MergeMeshes, ShiftsElementIndicesByThePointsBefore) {
+  auto s = load(R"(<Node>
+    <MergeMeshes name="m" nbMeshes="3"
+      position1="0 0 0  1 0 0  0 1 0" triangles1="0 1 2" edges1="0 1"
+      position2="5 5 5  6 5 5" edges2="0 1"
+      position3="9 9 9  8 9 9  9 8 9  9 9 8" tetrahedra3="0 1 2 3" quads3="3 2 1 0"/>
+  </Node>)");
+  auto* m = get<MergeMeshes>(*s.root, "m");
+  ASSERT_TRUE(m);
+  EXPECT_EQ(m->npoints.get(), 9u);
+  EXPECT_EQ(m->position.get().data, (D{0, 0, 0, 1, 0, 0, 0, 1, 0, 5, 5, 5, 6, 5, 5, 9, 9, 9, 8, 9, 9, 9, 8, 9, 9, 9, 8}));
+  EXPECT_EQ(m->out_edges.get(), (std::vector<Edge>{{0, 1}, {3, 4}}));
+  EXPECT_EQ(m->out_triangles.get(), (std::vector<Triangle>{{0, 1, 2}}));
+  EXPECT_EQ(m->out_quads.get(), (std::vector<Quad>{{8, 7, 6, 5}}));
+  EXPECT_EQ(m->out_tetrahedra.get(), (std::vector<Tetra>{{5, 6, 7, 8}}));
+  EXPECT_TRUE(m->out_hexahedra.get().empty());
+  m->positions[0].set(FlatVec{3, {0, 0, 0}});  // mesh 2 now starts at point 1
+  EXPECT_EQ(m->out_edges.get(), (std::vector<Edge>{{0, 1}, {1, 2}}));
+}
+
+TEST(MergeMeshes, FeedsATopologyAndReportsBadIndices) {
+  auto s = test::build(R"(<Node>
+    <MergeMeshes name="m" position1="0 0 0  1 0 0" edges1="0 7" position2="2 0 0" triangles2="0 0 0"/>
+    <MeshTopology name="t" src="@m"/>
+  </Node>)");
+  init_root(*s.root);
+  auto* m = get<MergeMeshes>(*s.root, "m");
+  ASSERT_TRUE(m);
+  EXPECT_EQ(m->out_edges.get(), (std::vector<Edge>{{0, 7}}));  // kept, as SOFA
+  EXPECT_EQ(m->out_triangles.get(), (std::vector<Triangle>{{2, 2, 2}}));
+  EXPECT_TRUE(test::any_contains(test::messages(s.root->diagnostics(), Severity::warning),
+                                 "edges1 has index 7, beyond the 2 points of position1"));
 }
