@@ -198,8 +198,9 @@ TEST(SpringForceField, StatesOfChildNodesSizedAtTheirInit) {
   MatrixSink sink;
   ff->build_stiffness(sink);
   for (const auto& e : sink.entries())
-    if (e.row_state == states[0] && e.col_state == states[1] && e.row == 3 && e.col == 0)
+    if (e.row_state == states[0] && e.col_state == states[1] && e.row == 3 && e.col == 0) {
       EXPECT_NEAR(e.value, 19.0 / 3.0, 1e-15);
+    }
   // An end still out of range once the states are initialised is refused.
   auto bad = sinew::test::build(R"(<Node gravity="0 0 0">
     <SpringForceField name="ff" object1="@A/a" object2="@B/b" spring="1 2 10 0.5 1"/>
