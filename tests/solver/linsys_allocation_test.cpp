@@ -20,16 +20,29 @@
 #include "solver/system/matrix_linear_system.h"
 #include "test_scene.h"
 
+// AddressSanitizer owns malloc: the counter is not installed in sanitizer builds
+// (scripts/validate), where the allocation counts read 0 and the first test is
+// skipped; the numerical checks of the other tests still run there.
+#if defined(__SANITIZE_ADDRESS__)
+#define SINEW_COUNT_ALLOCATIONS 0
+#else
+#define SINEW_COUNT_ALLOCATIONS 1
+#endif
+
+#if SINEW_COUNT_ALLOCATIONS
 extern "C" {
 void* __libc_malloc(std::size_t);
 void* __libc_calloc(std::size_t, std::size_t);
 void* __libc_realloc(void*, std::size_t);
 }
 
+#endif
+
 namespace {
 std::atomic<long> g_allocations{0};
 }
 
+#if SINEW_COUNT_ALLOCATIONS
 extern "C" {
 void* malloc(std::size_t n) {
   g_allocations.fetch_add(1, std::memory_order_relaxed);
@@ -44,6 +57,7 @@ void* realloc(void* p, std::size_t n) {
   return __libc_realloc(p, n);
 }
 }
+#endif
 
 using namespace sinew;
 using sinew::test::load;
@@ -97,6 +111,7 @@ const char* kMappedScene = R"(<Node name="root" dt="0.01" gravity="0 -9.81 0">
 }  // namespace
 
 TEST(LinsysAllocation, TheCounterSeesHeapAllocations) {
+  if (!SINEW_COUNT_ALLOCATIONS) GTEST_SKIP() << "no allocation counter under AddressSanitizer";
   const long before = g_allocations.load();
   auto* p = new std::vector<double>(100);
   const long after = g_allocations.load();
