@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/registry.h"
+#include "core/state_creator.h"
 #include "io/sofa_quat.h"
 
 namespace sinew {
@@ -104,11 +105,7 @@ void register_box_roi(Registry& r) {
   info.description = "selects the points and elements inside axis-aligned or oriented boxes";
   info.templates = {"Vec1d", "Vec2d", "Vec3d", "Rigid3d"};
   info.default_template = "Vec3d";
-  info.create = [](const std::string& t) -> std::unique_ptr<Component> {
-    StateType st;
-    if (!state_type_from_name(t, st)) return nullptr;
-    return std::make_unique<BoxROI>(st);
-  };
+  info.create = state_creator<BoxROI>();
   r.add(std::move(info));
 }
 

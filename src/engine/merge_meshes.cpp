@@ -1,6 +1,7 @@
 #include "engine/merge_meshes.h"
 
 #include "core/registry.h"
+#include "core/state_creator.h"
 
 namespace sinew {
 
@@ -115,11 +116,7 @@ void register_merge_meshes(Registry& r) {
   info.description = "appends nbMeshes meshes, shifting each one's element indices by the points before it";
   info.templates = {"Vec3d", "Vec1d", "Vec2d", "Rigid2d", "Rigid3d"};
   info.default_template = "Vec3d";
-  info.create = [](const std::string& t) -> std::unique_ptr<Component> {
-    StateType st;
-    if (!state_type_from_name(t, st)) return nullptr;
-    return std::make_unique<MergeMeshes>(st);
-  };
+  info.create = state_creator<MergeMeshes>();
   r.add(std::move(info));
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/registry.h"
+#include "core/state_creator.h"
 
 namespace sinew {
 
@@ -85,11 +86,7 @@ void register_merge_points(Registry& r) {
   info.description = "merges two coordinate vectors: appended, or the second injected into the first";
   info.templates = {"Vec3d", "Vec1d", "Vec2d", "Rigid2d", "Rigid3d"};
   info.default_template = "Vec3d";
-  info.create = [](const std::string& t) -> std::unique_ptr<Component> {
-    StateType st;
-    if (!state_type_from_name(t, st)) return nullptr;
-    return std::make_unique<MergePoints>(st);
-  };
+  info.create = state_creator<MergePoints>();
   r.add(std::move(info));
 }
 

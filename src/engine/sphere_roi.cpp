@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/registry.h"
+#include "core/state_creator.h"
 #include "io/sofa_quat.h"
 
 namespace sinew {
@@ -91,11 +92,7 @@ void register_sphere_roi(Registry& r) {
   info.description = "selects the points and elements inside spheres (optionally by edge direction / triangle normal)";
   info.templates = {"Vec3d", "Rigid3d"};
   info.default_template = "Vec3d";
-  info.create = [](const std::string& t) -> std::unique_ptr<Component> {
-    StateType st;
-    if (!state_type_from_name(t, st)) return nullptr;
-    return std::make_unique<SphereROI>(st);
-  };
+  info.create = state_creator<SphereROI>();
   r.add(std::move(info));
 }
 

@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "core/registry.h"
+#include "core/state_creator.h"
 #include "io/sofa_quat.h"
 
 namespace sinew {
@@ -116,11 +117,7 @@ void register_transform_engine(Registry& r) {
   info.description = "transforms positions: scale, rotation (Euler or quaternion), translation, or their inverse";
   info.templates = {"Vec1d", "Vec2d", "Vec3d", "Rigid2d", "Rigid3d"};
   info.default_template = "Vec3d";
-  info.create = [](const std::string& t) -> std::unique_ptr<Component> {
-    StateType st;
-    if (!state_type_from_name(t, st)) return nullptr;
-    return std::make_unique<TransformEngine>(st);
-  };
+  info.create = state_creator<TransformEngine>();
   r.add(std::move(info));
 }
 

@@ -4,6 +4,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "core/state_creator.h"
 #include "io/sofa_quat.h"
 
 namespace sinew {
@@ -169,11 +170,7 @@ void register_linear_movement_projective_constraint(Registry& r) {
   info.templates = {"Vec1d", "Vec2d", "Vec3d", "Vec6d", "Rigid3d"};
   info.default_template = "Vec3d";
   info.requirement = Requirement::state;
-  info.create = [](const std::string& t) -> std::unique_ptr<Component> {
-    StateType st;
-    if (!state_type_from_name(t, st)) return nullptr;
-    return std::make_unique<LinearMovementProjectiveConstraint>(st);
-  };
+  info.create = state_creator<LinearMovementProjectiveConstraint>();
   r.add(std::move(info));
 }
 

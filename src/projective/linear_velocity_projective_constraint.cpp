@@ -5,6 +5,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "core/state_creator.h"
 #include "core/roles.h"
 #include "math/rigid.h"
 
@@ -155,11 +156,7 @@ void register_linear_velocity_projective_constraint(Registry& r) {
   info.templates = {"Vec1d", "Vec2d", "Vec3d", "Vec6d", "Rigid2d", "Rigid3d"};
   info.default_template = "Vec3d";
   info.requirement = Requirement::state;
-  info.create = [](const std::string& t) -> std::unique_ptr<Component> {
-    StateType st;
-    if (!state_type_from_name(t, st)) return nullptr;
-    return std::make_unique<LinearVelocityProjectiveConstraint>(st);
-  };
+  info.create = state_creator<LinearVelocityProjectiveConstraint>();
   r.add(std::move(info));
 }
 

@@ -8,6 +8,7 @@
 #include "core/node.h"
 #include "core/alloc_check.h"
 #include "core/registry.h"
+#include "core/state_creator.h"
 #include "math/rigid.h"
 
 namespace sinew {
@@ -306,11 +307,7 @@ void register_mechanical_object(Registry& r) {
   info.description = "degrees of freedom: positions, velocities, forces";
   info.templates = {"Vec1d", "Vec2d", "Vec3d", "Vec6d", "Rigid2d", "Rigid3d"};
   info.default_template = "Vec3d";
-  info.create = [](const std::string& t) -> std::unique_ptr<Component> {
-    StateType st;
-    if (!state_type_from_name(t, st)) return nullptr;
-    return std::make_unique<MechanicalObject>(st);
-  };
+  info.create = state_creator<MechanicalObject>();
   r.add(std::move(info));
 }
 
