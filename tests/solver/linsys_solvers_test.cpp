@@ -342,3 +342,46 @@ TEST(LinsysCompliance, JMinvJtMatchesDenseProduct) {
     EXPECT_LT((W - ref).norm(), 1e-12 * ref.norm()) << name;
   }
 }
+
+// Each Eigen solver runs its own factorization. The four solver files once
+// named their Eigen type alias `Impl` alike, and GCC's weak symbols for
+// make_eigen_factorization<Impl> made the linker keep one factorization for
+// several solvers (EigenSparseQR ran SparseLU in Release builds; at -O1
+// EigenSimplicialLLT ran LDLᵀ). A singular, consistent system tells them apart:
+// LU stops on the zero pivot, QR (rank-revealing) solves it.
+TEST(LinsysEigen, EachSolverRunsItsOwnFactorization) {
+  Eigen::MatrixXd A(3, 3);
+  A << 1, 1, 0,  //
+      1, 1, 0,   //
+      0, 0, 1;   // rows 1 and 2 equal: rank 2, an exact zero pivot for LU
+  const Eigen::VectorXd b = A * Eigen::Vector3d(1, -1, 2);  // consistent
+  {
+    Node root("root");
+    Standalone s(make_solver("EigenSparseQR"), make_ordering("COLAMD"));
+    s.solver->set_node(&root);
+    const Eigen::VectorXd x = s.solve(A, b, 1);
+    EXPECT_EQ(root.diagnostics().error_count(), 0) << "SparseQR solves a consistent rank-deficient system";
+    EXPECT_LT((A * x - b).norm(), 1e-10);
+  }
+  {
+    Node root("root");
+    Standalone s(make_solver("EigenSparseLU"), make_ordering("COLAMD"));
+    s.solver->set_node(&root);
+    s.solve(A, b, 1);
+    EXPECT_GT(root.diagnostics().error_count(), 0) << "SparseLU stops on the zero pivot";
+  }
+  {
+    Eigen::MatrixXd M = random_spd(8, 2u);
+    M(3, 3) = -M(3, 3);  // indefinite: LLᵀ refuses it, LDLᵀ factorizes it
+    Node r1("root"), r2("root");
+    Standalone llt(make_solver("EigenSimplicialLLT"), make_ordering("AMD"));
+    Standalone ldlt(make_solver("EigenSimplicialLDLT"), make_ordering("AMD"));
+    llt.solver->set_node(&r1);
+    ldlt.solver->set_node(&r2);
+    llt.solve(M, Eigen::VectorXd::Ones(8), 1);
+    const Eigen::VectorXd x = ldlt.solve(M, Eigen::VectorXd::Ones(8), 1);
+    EXPECT_GT(r1.diagnostics().error_count(), 0);
+    EXPECT_EQ(r2.diagnostics().error_count(), 0);
+    EXPECT_LT((M * x - Eigen::VectorXd::Ones(8)).norm(), 1e-10);
+  }
+}

@@ -7,13 +7,17 @@
 
 namespace sinew {
 
+// A name unique to this file: GCC gives make_eigen_factorization<alias> weak
+// linkage even for an alias in an anonymous namespace, so four files each
+// naming theirs `Impl` made one symbol, and the linker kept one of the four
+// factorizations for every solver wherever the call was not inlined (-O1).
 namespace {
 template <class O>
-using Impl = Eigen::SparseLU<EigenFactorization::Matrix, O>;
+using SparseLuOf = Eigen::SparseLU<EigenFactorization::Matrix, O>;
 }  // namespace
 
 std::unique_ptr<EigenFactorization> EigenSparseLU::make(const std::string& ordering) const {
-  return make_eigen_factorization<Impl>(ordering);
+  return make_eigen_factorization<SparseLuOf>(ordering);
 }
 
 void register_eigen_sparse_lu(Registry& r) {
