@@ -90,8 +90,10 @@ void run_stage(StepContext& s, Stage stage) {
   }
 }
 
-// Event stages leave the graph open: controllers may add or remove components there.
-bool locks_graph(Stage stage) { return stage != Stage::begin_events && stage != Stage::end_events; }
+// Event stages leave the graph open: controllers may add or remove components
+// there. So does the collision stage: the response attaches and detaches contacts.
+bool is_event_stage(Stage stage) { return stage == Stage::begin_events || stage == Stage::end_events; }
+bool locks_graph(Stage stage) { return !is_event_stage(stage) && stage != Stage::collision; }
 
 }  // namespace
 
@@ -110,8 +112,15 @@ void stage_begin_events(StepContext& s) {
   propagate_event(s.root, begin);
 }
 
-// Collision detection and response (spec/interaction.md §1–4) land here.
-void stage_collision(StepContext&) {}
+// Collision detection and response (spec/interaction.md §1.3, §1.7): the
+// pipeline of every active node that has one, top-down (SOFA's CollisionVisitor).
+// Contacts created here are attached to the graph; the view is brought up to
+// date before the next stage.
+void stage_collision(StepContext& s) {
+  for_each_node(s.root, [&](Node& n) {
+    if (CollisionPipelineBase* p = n.collision_pipeline; p && p->state() == ComponentState::valid) p->collide(s.dt);
+  });
+}
 
 void stage_interaction_forces(StepContext& s) {
   for (Node* n : s.view.early_interactions) add_interaction_forces(*n);
@@ -198,16 +207,17 @@ void run_stages(StepContext& s, std::span<const Stage> stages) {
     ~Unlock() { root.set_graph_locked(false); }
   } unlock{s.root};
   for (Stage stage : stages) {
-    if (!locks_graph(stage)) {
+    if (is_event_stage(stage)) {
       s.root.set_graph_locked(false);
-    } else if (!s.root.graph_locked()) {
-      // Leaving the event stages: bring the view up to date with what changed
-      // since (components added by controllers are initialised first).
+    } else {
+      // Before a mechanical stage: bring the view up to date with what changed
+      // since it was gathered (components added by controllers or by the
+      // collision response are initialised first). One comparison otherwise.
       if (s.view.version != s.root.structure_version()) {
         init_added(s.root);
         build_graph_view(s.root, s.view);
       }
-      s.root.set_graph_locked(true);
+      s.root.set_graph_locked(locks_graph(stage));
     }
     notify_step_observers(s.root, stage, /*after=*/false);
     const auto t = timed ? clock::now() : clock::time_point{};

@@ -304,6 +304,42 @@ class Link final : public BaseLink {
   T* ptr_ = nullptr;
 };
 
+// A link to several objects of type T (`collisionModels="@a @b"`), in path order.
+template <class T>
+class MultiLink final : public BaseLink {
+ public:
+  MultiLink(Base* owner, std::string name, std::string help) : BaseLink(owner, std::move(name), std::move(help)) {}
+  const std::vector<T*>& get() const { return targets_; }
+  bool accept(Base* target) override { return dynamic_cast<T*>(target) != nullptr; }
+  Base* target() const override;
+  std::string type_name() const override { return "multi-link"; }
+  bool is_multi() const override { return true; }
+  void clear_targets() override { targets_.clear(); }
+  void add_target(Base* b) override {
+    if (T* t = dynamic_cast<T*>(b)) targets_.push_back(t);
+  }
+  bool references(const Base* b) const override;
+  void forget(const Base* b) override;
+
+ private:
+  std::vector<T*> targets_;
+};
+
+template <class T>
+Base* MultiLink<T>::target() const {
+  return targets_.empty() ? nullptr : targets_.front();
+}
+template <class T>
+bool MultiLink<T>::references(const Base* b) const {
+  for (T* t : targets_)
+    if (static_cast<const Base*>(t) == b) return true;
+  return false;
+}
+template <class T>
+void MultiLink<T>::forget(const Base* b) {
+  std::erase_if(targets_, [b](T* t) { return static_cast<const Base*>(t) == b; });
+}
+
 template <class T>
 Base* Link<T>::target() const {
   return ptr_;  // T derives from Base; implicit upcast

@@ -84,6 +84,10 @@ Component* Node::add_object(std::unique_ptr<Component> c, bool at_front) {
     warn_replaced(*this, animation_loop, raw, "animation loop");
     animation_loop = loop;
   }
+  if (auto* p = dynamic_cast<CollisionPipelineBase*>(raw)) {
+    warn_replaced(*this, collision_pipeline, raw, "collision pipeline");
+    collision_pipeline = p;
+  }
   if (auto* s = dynamic_cast<MechanicalState*>(raw)) {
     warn_replaced(*this, mechanical_state, raw, "mechanical state");
     mechanical_state = s;
@@ -105,6 +109,7 @@ Component* Node::add_object(std::unique_ptr<Component> c, bool at_front) {
 void Node::unfile(Component* c) {
   // Single slots that held it become empty (SOFA's SingleLink remove); lists drop it.
   if (animation_loop == c) animation_loop = nullptr;
+  if (collision_pipeline == c) collision_pipeline = nullptr;
   if (mechanical_state == c) mechanical_state = nullptr;
   if (mechanical_mapping == c) mechanical_mapping = nullptr;
   if (mass == c) mass = nullptr;
@@ -171,6 +176,27 @@ std::unique_ptr<Component> Node::remove_object(Component* c) {
   c->set_node(nullptr);
   bump_structure_version();
   return out;
+}
+
+void Node::move_to_end(Component* c) {
+  auto it = std::find_if(objects_.begin(), objects_.end(), [c](auto& o) { return o.get() == c; });
+  if (it == objects_.end()) return;
+  bool moved = false;
+  if (std::next(it) != objects_.end()) {
+    std::rotate(it, std::next(it), objects_.end());
+    moved = true;
+  }
+  auto to_end = [&](auto& list) {
+    auto p = std::find_if(list.begin(), list.end(), [c](auto* q) { return static_cast<Component*>(q) == c; });
+    if (p != list.end() && std::next(p) != list.end()) {
+      std::rotate(p, std::next(p), list.end());
+      moved = true;
+    }
+  };
+  to_end(force_fields);
+  to_end(interaction_force_fields);
+  to_end(projective_constraints);
+  if (moved) bump_structure_version();
 }
 
 std::unique_ptr<Node> Node::remove_child(Node* child) {

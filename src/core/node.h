@@ -59,6 +59,11 @@ class Node final : public Base {
   std::unique_ptr<Component> remove_object(Component* c);
   // Takes a child node (and its subtree) out; links into the subtree are cut as above.
   std::unique_ptr<Node> remove_child(Node* child);
+  // Moves an object to the end of the object list and of its slot lists, as
+  // if removed and added again, without cutting links (a contact response is
+  // re-attached after the other objects each step, spec/interaction.md §4.2).
+  // Bumps the structure version only when the order changed.
+  void move_to_end(Component* c);
   // Index counter for default names ("MechanicalObject1", ...), per class within this node.
   int next_default_index(const std::string& class_name) { return ++default_names_[class_name]; }
   // Path of this node from the root ("/", "/child/grandchild").
@@ -66,6 +71,7 @@ class Node final : public Base {
 
   // ------------------------------------------------------------ slots
   AnimationLoop* animation_loop = nullptr;
+  CollisionPipelineBase* collision_pipeline = nullptr;  // SOFA's single collisionPipeline slot
   MechanicalState* mechanical_state = nullptr;
   Mapping* mechanical_mapping = nullptr;
   Mass* mass = nullptr;

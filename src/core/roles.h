@@ -309,8 +309,19 @@ class MeshTopologyBase : public Component {
 // Other topology objects (modifiers, geometry algorithms): filed in topologyObject.
 class TopologyObject : public Component {};
 
-// Collision models (spheres, triangles, lines, points of a body).
+// Collision models (spheres, triangles, lines, points of a body); the
+// collision module (src/collision/) defines what they hold.
 class CollisionModel : public Component {};
+
+// A collision pipeline (CollisionPipeline, CompositeCollisionPipeline): the
+// collision stage of a step runs the pipeline of every node that has one, top-down
+// (spec/interaction.md §1.3, §1.7). Contacts are added to and removed from the
+// graph while it runs (the graph is not locked during that stage).
+class CollisionPipelineBase : public Component {
+ public:
+  // Reset (last step's responses detached), detection, then response.
+  virtual void collide(double dt) = 0;
+};
 
 // Visual-only components (OglModel, VisualStyle, lights...): nothing in batch runs.
 class VisualComponent : public Component {};

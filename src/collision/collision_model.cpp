@@ -1,0 +1,58 @@
+#include "collision/collision_model.h"
+
+#include "core/node.h"
+
+namespace sinew {
+
+const char* kind_name(CollisionModelBase::Kind k) {
+  switch (k) {
+    case CollisionModelBase::Kind::point: return "Point";
+    case CollisionModelBase::Kind::line: return "Line";
+    case CollisionModelBase::Kind::triangle: return "Triangle";
+    case CollisionModelBase::Kind::sphere: return "Sphere";
+  }
+  return "?";
+}
+
+CollisionModelBase::CollisionModelBase(Kind kind) : kind_(kind) { contact_distance.add_alias("proximity"); }
+
+void CollisionModelBase::init() {
+  mstate_ = node()->mechanical_state;
+  if (!mstate_) {
+    msg_error("needs a MechanicalState in its node " + node()->describe());
+    set_state(ComponentState::invalid);
+    return;
+  }
+  if (mstate_->state_type() != StateType::vec3) {
+    msg_error(std::string("needs a Vec3d MechanicalState in its node; ") + mstate_->describe() + " is " +
+              mstate_->info().name);
+    set_state(ComponentState::invalid);
+    return;
+  }
+  if (contact_distance.value() < 0 || !std::isfinite(contact_distance.value())) {
+    msg_error("contactDistance must be a finite value >= 0 (got " + std::to_string(contact_distance.value()) + ")");
+    set_state(ComponentState::invalid);
+    return;
+  }
+  if (!init_model()) set_state(ComponentState::invalid);
+}
+
+bool CollisionModelBase::is_active() const {
+  if (!active.value() || state() != ComponentState::valid) return false;
+  for (const Node* n = node(); n; n = n->parent())
+    if (!n->activated.value()) return false;
+  return true;
+}
+
+bool CollisionModelBase::can_collide_with(const CollisionModelBase& other) const {
+  if (node() == other.node()) return self_collision.value();
+  const auto& g1 = group.value();
+  const auto& g2 = other.group.value();
+  if (g1.empty() || g2.empty()) return true;
+  for (int a : g1)
+    for (int b : g2)
+      if (a == b) return false;
+  return true;
+}
+
+}  // namespace sinew

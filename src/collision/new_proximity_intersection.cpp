@@ -1,0 +1,75 @@
+// NewProximityIntersection (spec/interaction.md §2.5): proximity tests that
+// project onto the closest feature (vertex, edge or interior) of lines and
+// triangles, each feature owned by one triangle (the triangle flags).
+#include "collision/intersect/element_test.h"
+#include "collision/intersect/new_proximity_tests.h"
+#include "collision/model/line_collision_model.h"
+#include "collision/model/point_collision_model.h"
+#include "collision/model/sphere_collision_model.h"
+#include "collision/model/triangle_collision_model.h"
+#include "core/registry.h"
+
+namespace sinew {
+
+namespace {
+
+using P = PointCollisionModel;
+using L = LineCollisionModel;
+using T = TriangleCollisionModel;
+using S = SphereCollisionModel;
+
+class NewProximityIntersection final : public Intersection {
+ public:
+  Field<double> alarm{this, "alarmDistance", 1.0, "distance below which pairs are reported", "Collision", "length"};
+  Field<double> contact{this, "contactDistance", 0.5, "distance the response keeps between the objects",
+                        "Collision", "length"};
+  Field<bool> use_line_line{this, "useLineLine", false, "test lines against lines (and triangle edges)",
+                            "Collision"};
+
+  double alarm_distance() const override { return alarm.value(); }
+  double contact_distance() const override { return contact.value(); }
+  const new_proximity::Params& params() const { return params_; }
+
+  void init() override {
+    if (!(alarm.value() >= 0) || !(contact.value() >= 0)) {
+      msg_error("alarmDistance and contactDistance must be >= 0");
+      set_state(ComponentState::invalid);
+      return;
+    }
+    using K = Kind;
+    using M = NewProximityIntersection;
+    add(K::sphere, K::sphere, &element_test<M, S, S, new_proximity::sphere_sphere>);
+    add(K::point, K::point, &element_test<M, P, P, new_proximity::point_point>);
+    add(K::line, K::point, &element_test<M, L, P, new_proximity::line_point>);
+    add(K::line, K::line, &element_test<M, L, L, new_proximity::line_line>);
+    add(K::triangle, K::point, &element_test<M, T, P, new_proximity::triangle_point>);
+    add(K::triangle, K::line, &element_test<M, T, L, new_proximity::triangle_line>);
+    add(K::triangle, K::triangle, &element_test<M, T, T, new_proximity::triangle_triangle>);
+    add(K::sphere, K::point, &element_test<M, S, P, new_proximity::sphere_point>);
+    add(K::line, K::sphere, &element_test<M, L, S, new_proximity::line_sphere>);
+    add(K::triangle, K::sphere, &element_test<M, T, S, new_proximity::triangle_sphere>);
+    begin_detection();
+  }
+
+  void begin_detection() override {
+    params_.alarm = alarm.value();
+    params_.contact = contact.value();
+    params_.use_line_line = use_line_line.value();
+  }
+
+ private:
+  new_proximity::Params params_;
+};
+
+}  // namespace
+
+void register_new_proximity_intersection(Registry& r) {
+  ComponentInfo info;
+  info.name = "NewProximityIntersection";
+  info.category = "Collision/Detection";
+  info.description = "proximity tests between points, lines, triangles and spheres, closest features included";
+  info.create = creator<NewProximityIntersection>();
+  r.add(std::move(info));
+}
+
+}  // namespace sinew

@@ -1,0 +1,151 @@
+#include "collision/response/penalty_contact.h"
+
+#include <algorithm>
+
+#include "collision/intersection.h"
+#include "core/node.h"
+
+namespace sinew {
+
+// ------------------------------------------------------------------ force field
+
+void PenaltyContactForceField::add_force(const MechParams& p) {
+  // An obstacle's positions are its `position` (solver vectors do not exist there).
+  const auto x1 = as_vec3(s1_->read(fixed1_ ? kPosition : vec_for(*s1_, p.x, kPosition)));
+  const auto x2 = as_vec3(s2_->read(fixed2_ ? kPosition : vec_for(*s2_, p.x, kPosition)));
+  std::span<Vec3> f1, f2;
+  if (!fixed1_) f1 = as_vec3(s1_->write(vec_for(*s1_, p.f, kForce)));
+  if (!fixed2_) f2 = as_vec3(s2_->write(vec_for(*s2_, p.f, kForce)));
+  for (Point& c : points_) {
+    const Vec3 u = x2[c.m2] - x1[c.m1];
+    c.pen = c.dist - u.dot(c.normal);
+    if (c.pen > 0) {
+      const Vec3 force = -c.normal * (c.ks * c.pen);
+      if (!fixed1_) f1[c.m1] += force;
+      if (!fixed2_) f2[c.m2] -= force;
+    }
+  }
+}
+
+void PenaltyContactForceField::add_dforce(const MechParams& p, double kfactor) {
+  std::span<const Vec3> dx1, dx2;
+  std::span<Vec3> df1, df2;
+  if (!fixed1_) {
+    dx1 = as_vec3(s1_->read(vec_for(*s1_, p.dx, kDx)));
+    df1 = as_vec3(s1_->write(vec_for(*s1_, p.df, kDforce)));
+  }
+  if (!fixed2_) {
+    dx2 = as_vec3(s2_->read(vec_for(*s2_, p.dx, kDx)));
+    df2 = as_vec3(s2_->write(vec_for(*s2_, p.df, kDforce)));
+  }
+  for (const Point& c : points_) {
+    if (c.pen <= 0) continue;  // active set of the last add_force
+    Vec3 du = Vec3::Zero();
+    if (!fixed2_) du += dx2[c.m2];
+    if (!fixed1_) du -= dx1[c.m1];
+    const double dpen = -du.dot(c.normal);
+    const Vec3 dforce = -c.normal * (c.ks * dpen * kfactor);
+    if (!fixed1_) df1[c.m1] += dforce;
+    if (!fixed2_) df2[c.m2] -= dforce;
+  }
+}
+
+bool PenaltyContactForceField::build_stiffness(MatrixSink& K) {
+  for (const Point& c : points_) {
+    if (c.pen <= 0) continue;
+    const Mat3 block = c.ks * c.normal * c.normal.transpose();
+    const std::size_t i1 = 3 * c.m1, i2 = 3 * c.m2;
+    if (!fixed1_) K.add_block(s1_, i1, s1_, i1, -block);
+    if (!fixed1_ && !fixed2_) {
+      K.add_block(s1_, i1, s2_, i2, block);
+      K.add_block(s2_, i2, s1_, i1, block);
+    }
+    if (!fixed2_) K.add_block(s2_, i2, s2_, i2, -block);
+  }
+  return true;
+}
+
+std::optional<double> PenaltyContactForceField::potential_energy() const {
+  double e = 0;
+  for (const Point& c : points_)
+    if (c.pen > 0) e += 0.5 * c.ks * c.pen * c.pen;
+  return e;
+}
+
+// ------------------------------------------------------------------ contact
+
+PenaltyContact::PenaltyContact(CollisionModelBase& m1, CollisionModelBase& m2, const Intersection& method)
+    : Contact(m1, m2, method),
+      mapper1_(m1, m1.name.value() + "-contacts"),
+      mapper2_(m2, m2.name.value() + "-contacts") {}
+
+PenaltyContact::~PenaltyContact() = default;
+
+bool PenaltyContact::set_param(const std::string& name, const std::string&, std::string& error) {
+  // Penalty contacts have no parameter (friction coefficients are not used by their force law).
+  error = "PenalityContactForceField has no parameter '" + name + "'";
+  return false;
+}
+
+void PenaltyContact::set_detection_outputs(std::vector<DetectionOutput>& outputs) {
+  if (!ff_ && !detached_) {
+    MechanicalState* s1 = mapper1_.state();
+    MechanicalState* s2 = mapper2_.state();
+    detached_ = std::make_unique<PenaltyContactForceField>(*s1, *s2, !m1_->simulated.value(), !m2_->simulated.value());
+    detached_->name.set(m1_->name.value() + "-" + m2_->name.value());
+    detached_->set_type("PenalityContactForceField", "Vec3d");
+    detached_->mark_initialised();
+  }
+  PenaltyContactForceField& ff = ff_ ? *ff_ : *detached_;
+
+  // One contact per id: the first output of smallest value (SOFA keeps the
+  // winner at its own place in the output order).
+  by_id_.clear();
+  for (std::size_t i = 0; i < outputs.size(); ++i) by_id_.emplace_back(outputs[i].id, i);
+  std::sort(by_id_.begin(), by_id_.end(), [&](const auto& a, const auto& b) {
+    if (a.first != b.first) return a.first < b.first;
+    const double va = outputs[a.second].value, vb = outputs[b.second].value;
+    if (va != vb) return va < vb;
+    return a.second < b.second;
+  });
+  kept_.clear();
+  for (std::size_t k = 0; k < by_id_.size(); ++k)
+    if (k == 0 || by_id_[k].first != by_id_[k - 1].first) kept_.push_back(by_id_[k].second);
+  std::sort(kept_.begin(), kept_.end());
+
+  ff.clear(kept_.size());
+  mapper1_.resize(kept_.size());
+  mapper2_.resize(kept_.size());
+  const double d0 = method_->contact_distance() + m1_->contact_distance.value() + m2_->contact_distance.value();
+  const double k12 = m1_->contact_stiffness.value() * m2_->contact_stiffness.value();
+  for (std::size_t i : kept_) {
+    const DetectionOutput& o = outputs[i];
+    double r1 = 0, r2 = 0;
+    const unsigned i1 = mapper1_.add_point(o.point1, o.elem1, r1);
+    const unsigned i2 = mapper2_.add_point(o.point2, o.elem2, r2);
+    const double dist = d0 + r1 + r2;
+    double ks = k12;
+    if (dist != 0.0) ks /= dist;
+    ff.add_contact({i1, i2, o.normal, dist, ks});
+  }
+  mapper1_.update();
+  mapper2_.update();
+}
+
+void PenaltyContact::create_response(Node& where) {
+  if (ff_ && ff_->node() == &where) return;  // attached there since an earlier step
+  std::unique_ptr<Component> owned;
+  if (ff_) owned = ff_->node()->remove_object(ff_);
+  else owned = std::move(detached_);
+  ff_ = static_cast<PenaltyContactForceField*>(where.add_object(std::move(owned)));
+}
+
+void PenaltyContact::cleanup() {
+  if (ff_ && ff_->node()) ff_->node()->remove_object(ff_);  // destroyed here
+  ff_ = nullptr;
+  detached_.reset();
+  mapper1_.cleanup();
+  mapper2_.cleanup();
+}
+
+}  // namespace sinew
