@@ -12,4 +12,11 @@ namespace sinew::discrete {
 
 int sphere_sphere(const SphereElem& e1, const SphereElem& e2, std::vector<DetectionOutput>& out);
 
+// The sphere–sphere test with explicit effective distances (SOFA's
+// computeIntersectionSphere), shared with MinProximityIntersection, which
+// passes its own alarm/contact distances plus both models' skins [length].
+// Radii are added here: accepted iff |c2−c1| ≤ alarm + r1 + r2.
+int sphere_sphere(const SphereElem& e1, const SphereElem& e2, double alarm, double contact,
+                  std::vector<DetectionOutput>& out);
+
 }  // namespace sinew::discrete
