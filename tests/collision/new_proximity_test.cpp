@@ -336,6 +336,21 @@ TEST(NewProximityTriangleSphere, MicroWindowsAndOffTriangleEdgePoint) {
   EXPECT_NEAR(out[0].value, std::hypot(5e-7, 0.3) - 0.6, 1e-12);
 }
 
+TEST(NewProximityTriangleSphere, ObtuseCornerPicksAPointOffTheTriangle) {
+  // Obtuse at A. The centre projects at α = −0.6, β = −0.1 with pAB = −0.5, pAC = 0.2:
+  // the true closest feature is edge AC at (−0.2,0.2,0), which triangle–point
+  // finds; T–S's branch order takes "edge AB" at α = pAB (no lower bound), i.e.
+  // (−0.5,0,0), outside the triangle. SOFA does the same; kept.
+  std::vector<DetectionOutput> out;
+  const auto t = triangle({0, 0, 0}, {1, 0, 0}, {-1, 1, 0}, kAll, info(3, 20));
+  const Vec3 c(-0.5, -0.1, 0.3);
+  ASSERT_EQ(np::triangle_sphere(kDefault, t, sphere(c, 0.1, false, info(5, 2)), out), 1);
+  const Vec3 pq(0, -0.1, 0.3);
+  expect_output(out[0], {3, 5, 5, {-0.5, 0, 0}, c, pq.normalized(), pq.norm() - 0.6}, 1e-12);
+  ASSERT_EQ(np::triangle_point(kDefault, t, point(c, info(5, 2)), out), 1);
+  EXPECT_TRUE(vec_near(out[1].point1, {-0.2, 0.2, 0}, 1e-12));
+}
+
 TEST(NewProximityTriangleSphere, CoincidentCentreGetsXNormal) {
   std::vector<DetectionOutput> out;
   ASSERT_EQ(np::triangle_sphere(kDefault, unit_triangle(0), sphere({0.25, 0.25, 0}, 0.5, true), out), 1);

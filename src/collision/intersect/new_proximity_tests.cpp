@@ -284,7 +284,10 @@ int line_sphere(const Params& prm, const LineElem& e1, const SphereElem& e2, Out
 
 int triangle_sphere(const Params& prm, const TriangleElem& e1, const SphereElem& e2, Out& out) {
   // Its own variant of triangle–point: 1e-6 windows instead of machine epsilon,
-  // a 1e-7 test on pAC for corner A, and two edge-flag quirks, all kept.
+  // a 1e-7 test on pAC for corner A, two edge-flag quirks, and edge branches
+  // without the lower bounds pAB ≥ ε / pAC ≥ ε: when β < 1e-6 with pAB < 0 and
+  // pAC ≥ 1e-7 (possible at an obtuse corner A), "edge AB" is taken at α = pAB,
+  // a point outside the triangle. All kept: SOFA's SofaScene contacts use this.
   const int flags = e1.flags;
   const double alarm = prm.alarm + e1.info.cd + e2.info.cd + e2.r;
   const double dist2 = alarm * alarm;
@@ -306,7 +309,7 @@ int triangle_sphere(const Params& prm, const TriangleElem& e1, const SphereElem&
       if (!(flags & kFlagP1)) return 0;
       alpha = 0.0;
       beta = 0.0;
-    } else if (pAB < 0.999999 && beta < 0.000001) {  // edge AB
+    } else if (pAB < 0.999999 && beta < 0.000001) {  // edge AB (pAB may be < 0)
       if (!(flags & kFlagE12)) return 0;
       alpha = pAB;
       beta = 0.0;
