@@ -6,6 +6,8 @@
 #include <limits>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "collision/collision_model.h"
 
 namespace sinew {

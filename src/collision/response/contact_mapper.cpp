@@ -1,5 +1,8 @@
 #include "collision/response/contact_mapper.h"
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
 #include "collision/model/line_collision_model.h"
 #include "collision/model/sphere_collision_model.h"
 #include "collision/model/triangle_collision_model.h"

@@ -13,9 +13,15 @@ void PenaltyContactForceField::add_force(const MechParams& p) {
   // An obstacle's positions are its `position` (solver vectors do not exist there).
   const auto x1 = as_vec3(s1_->read(fixed1_ ? kPosition : vec_for(*s1_, p.x, kPosition)));
   const auto x2 = as_vec3(s2_->read(fixed2_ ? kPosition : vec_for(*s2_, p.x, kPosition)));
+  // externalForce is empty between steps: sized here, like SOFA's f.resize(x.size()).
+  auto forces = [&](MechanicalState& s) {
+    std::vector<double>& f = s.write(vec_for(s, p.f, kForce));
+    if (f.size() < 3 * s.size()) f.resize(3 * s.size(), 0.0);
+    return as_vec3(f);
+  };
   std::span<Vec3> f1, f2;
-  if (!fixed1_) f1 = as_vec3(s1_->write(vec_for(*s1_, p.f, kForce)));
-  if (!fixed2_) f2 = as_vec3(s2_->write(vec_for(*s2_, p.f, kForce)));
+  if (!fixed1_) f1 = forces(*s1_);
+  if (!fixed2_) f2 = forces(*s2_);
   for (Point& c : points_) {
     const Vec3 u = x2[c.m2] - x1[c.m1];
     c.pen = c.dist - u.dot(c.normal);
