@@ -1,0 +1,201 @@
+// The collision pipeline end to end: the bounding-volume traversal finds
+// exactly the pairs a brute-force loop finds, penalty contacts are the
+// gradient of their energy, a body comes to rest on an obstacle at the
+// distance the penalty law predicts, and bad elements are skipped with a message.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "badinput_helpers.h"
+#include "collision/intersect/min_proximity_tests.h"
+#include "collision/intersect/new_proximity_tests.h"
+#include "collision/model/point_collision_model.h"
+#include "collision/model/triangle_collision_model.h"
+#include "collision/narrow_phase.h"
+#include "collision/response/penalty_contact.h"
+#include "state/mechanical_object.h"
+#include "test_scene.h"
+
+namespace sinew {
+namespace {
+
+std::string points_text(std::mt19937& rng, int n, double lo, double hi) {
+  std::uniform_real_distribution<double> u(lo, hi);
+  std::ostringstream s;
+  s.precision(17);
+  for (int i = 0; i < 3 * n; ++i) s << u(rng) << ' ';
+  return s.str();
+}
+
+// Two clouds of points, one simulated, one obstacle: every pair the BVH
+// reports is a pair the brute-force loop reports, and the other way round,
+// whatever the depth of the trees.
+TEST(CollisionPipeline, BvhFindsExactlyTheBruteForcePairs) {
+  std::mt19937 rng(7);
+  for (int depth : {0, 1, 3, 6, 10}) {
+    const std::string a = points_text(rng, 300, 0, 4), b = points_text(rng, 200, 1, 5);
+    const std::string xml = R"(<Node name="root" dt="0.01">
+      <CollisionPipeline depth=")" + std::to_string(depth) + R"("/><BruteForceBroadPhase/><BVHNarrowPhase name="narrow"/>
+      <MinProximityIntersection alarmDistance="0.3" contactDistance="0.1"/>
+      <CollisionResponse response="PenalityContactForceField"/>
+      <Node name="A"><MechanicalObject name="x" position=")" + a + R"("/><PointCollisionModel name="pa" contactDistance="0.05"/></Node>
+      <Node name="B"><MechanicalObject name="x" position=")" + b + R"("/><PointCollisionModel name="pb" simulated="0" moving="0"/></Node>
+    </Node>)";
+    scene::LoadedScene s = test::load(xml);
+    ASSERT_TRUE(s.root);
+    s.root->collision_pipeline->collide(0.01);
+    auto* narrow = test::get<BVHNarrowPhase>(*s.root, "narrow");
+    ASSERT_NE(narrow, nullptr);
+    std::set<std::pair<unsigned, unsigned>> found;
+    const CollisionModelBase* m1 = nullptr;
+    for (const PairOutputs& p : narrow->outputs())
+      for (const DetectionOutput& o : p.outputs) {
+        m1 = p.models.first;
+        found.insert({o.elem1, o.elem2});
+      }
+    ASSERT_NE(m1, nullptr);
+    auto* pa = test::get<PointCollisionModel>(*s.root->find_child_named("A"), "pa");
+    auto* pb = test::get<PointCollisionModel>(*s.root->find_child_named("B"), "pb");
+    const PointCollisionModel* first = m1 == pa ? pa : pb;
+    const PointCollisionModel* second = first == pa ? pb : pa;
+    min_proximity::Params prm{0.3, 0.1, false};
+    std::set<std::pair<unsigned, unsigned>> brute;
+    std::vector<DetectionOutput> out;
+    for (unsigned i = 0; i < first->size(); ++i)
+      for (unsigned j = 0; j < second->size(); ++j) {
+        out.clear();
+        if (min_proximity::point_point(prm, first->elem(i), second->elem(j), out)) brute.insert({i, j});
+      }
+    EXPECT_GT(brute.size(), 10u);
+    EXPECT_EQ(found, brute) << "depth " << depth;
+  }
+}
+
+// f = −∂E/∂x and df = K·dx, checked against central differences.
+TEST(CollisionPipeline, PenaltyForceIsTheGradientOfItsEnergy) {
+  MechanicalObject s1(StateType::vec3), s2(StateType::vec3);
+  s1.resize(2);
+  s2.resize(2);
+  std::vector<double> x1 = {0, 0, 0, 1, 0.1, 0}, x2 = {0.05, 0.15, 0, 1.1, 0.05, 0.02};
+  s1.write(kPosition) = x1;
+  s2.write(kPosition) = x2;
+  PenaltyContactForceField ff(s1, s2, false, false);
+  const Vec3 n1 = Vec3(0, 1, 0), n2 = Vec3(0.1, 1, 0.2).normalized();
+  ff.clear(2);
+  ff.add_contact({0, 0, n1, 0.2, 500.0});
+  ff.add_contact({1, 1, n2, 0.2, 300.0});
+  auto energy = [&] {
+    MechParams p;
+    s1.write(kForce).assign(6, 0.0);
+    s2.write(kForce).assign(6, 0.0);
+    ff.add_force(p);
+    return *ff.potential_energy();
+  };
+  energy();
+  const std::vector<double> f1 = s1.read(kForce), f2 = s2.read(kForce);
+  const double h = 1e-6;
+  for (int side = 0; side < 2; ++side)
+    for (int k = 0; k < 6; ++k) {
+      MechanicalObject& s = side == 0 ? s1 : s2;
+      std::vector<double> x = s.read(kPosition);
+      s.write(kPosition)[k] = x[k] + h;
+      const double ep = energy();
+      s.write(kPosition)[k] = x[k] - h;
+      const double em = energy();
+      s.write(kPosition) = x;
+      const double f = side == 0 ? f1[k] : f2[k];
+      EXPECT_NEAR(f, -(ep - em) / (2 * h), 1e-5) << "side " << side << " scalar " << k;
+    }
+  // Stiffness: df for dx on both sides equals the change of force.
+  energy();
+  std::vector<double> dx1 = {0.3, -0.2, 0.1, 0.0, 0.5, -0.4}, dx2 = {-0.1, 0.2, 0.4, 0.3, -0.3, 0.1};
+  s1.write(kDx) = dx1;
+  s2.write(kDx) = dx2;
+  s1.write(kDforce).assign(6, 0.0);
+  s2.write(kDforce).assign(6, 0.0);
+  MechParams p;
+  ff.add_dforce(p, 1.0);
+  const std::vector<double> df1 = s1.read(kDforce), df2 = s2.read(kDforce);
+  for (double sign : {1.0, -1.0}) {
+    for (int k = 0; k < 6; ++k) {
+      s1.write(kPosition)[k] = x1[k] + sign * h * dx1[k];
+      s2.write(kPosition)[k] = x2[k] + sign * h * dx2[k];
+    }
+    energy();
+    static std::vector<double> fp1, fp2;
+    if (sign > 0) {
+      fp1 = s1.read(kForce);
+      fp2 = s2.read(kForce);
+    } else {
+      for (int k = 0; k < 6; ++k) {
+        EXPECT_NEAR(df1[k], (fp1[k] - s1.read(kForce)[k]) / (2 * h), 1e-4);
+        EXPECT_NEAR(df2[k], (fp2[k] - s2.read(kForce)[k]) / (2 * h), 1e-4);
+      }
+    }
+  }
+}
+
+// A point falls on a fixed floor: at rest, the penalty force ks·pen balances
+// its weight, so it rests at contactDistance − m·g/ks above the floor with
+// ks = contactStiffness² / contactDistance = 10·10/0.2 = 500.
+TEST(CollisionPipeline, PointRestsOnTheFloorWherePenaltyBalancesWeight) {
+  const std::string xml = R"(<Node name="root" dt="0.01" gravity="0 -9.81 0">
+    <CollisionPipeline/><BruteForceBroadPhase/><BVHNarrowPhase/>
+    <MinProximityIntersection alarmDistance="0.5" contactDistance="0.2"/>
+    <CollisionResponse response="PenalityContactForceField"/>
+    <Node name="ball">
+      <EulerImplicitSolver rayleighMass="0.5"/><CGLinearSolver iterations="50" tolerance="1e-12" threshold="1e-14"/>
+      <MechanicalObject name="x" position="0.5 0.6 0.2"/><UniformMass totalMass="1"/>
+      <PointCollisionModel/>
+    </Node>
+    <Node name="floor">
+      <MechanicalObject position="-1 0 -1  2 0 -1  2 0 2  -1 0 2"/>
+      <MeshTopology triangles="0 2 1  0 3 2"/>
+      <TriangleCollisionModel simulated="0" moving="0"/>
+    </Node>
+  </Node>)";
+  scene::LoadedScene s = test::load(xml);
+  ASSERT_TRUE(s.root);
+  for (int i = 0; i < 600; ++i) animate(*s.root);
+  auto* x = test::get<MechanicalState>(*s.root->find_child_named("ball"), "x");
+  const double y = x->read(kPosition)[1];
+  EXPECT_NEAR(y, 0.2 - 9.81 / 500.0, 1e-4);
+  // The contact lives in the ball's node (obstacle–body contacts are solved implicitly there).
+  EXPECT_EQ(s.root->find_child_named("ball")->interaction_force_fields.size(), 1u);
+}
+
+// Bad elements (zero radius, non-finite position) are skipped with a message
+// naming the model and the element; the rest of the scene runs.
+TEST(CollisionPipeline, BadElementsAreSkippedWithAMessage) {
+  test::TempDir dir;
+  const std::string xml = R"(<Node name="root" dt="0.01">
+    <CollisionPipeline/><BruteForceBroadPhase/><BVHNarrowPhase/><DiscreteIntersection/>
+    <CollisionResponse response="PenalityContactForceField"/>
+    <Node name="a"><EulerImplicitSolver/><CGLinearSolver iterations="10" tolerance="1e-9" threshold="1e-9"/>
+      <MechanicalObject position="0 0 0  3 0 0"/><UniformMass totalMass="1"/>
+      <SphereCollisionModel name="balls" listRadius="0 1"/></Node>
+    <Node name="b"><MechanicalObject position="0.5 0 0  3.5 0 0"/>
+      <SphereCollisionModel name="obstacle" radius="1" simulated="0" moving="0"/></Node>
+  </Node>)";
+  const test::Outcome o = test::run_xml(dir, xml, 5);
+  EXPECT_TRUE(o.init_ok) << o.all();
+  EXPECT_EQ(o.steps, 5);
+  EXPECT_TRUE(o.finite);
+  EXPECT_TRUE(test::any_contains_all(o.warnings, {"balls", "sphere 0", "radius"})) << o.all();
+}
+
+TEST(CollisionPipeline, MissingPhaseIsAnError) {
+  test::TempDir dir;
+  const std::string xml = R"(<Node name="root" dt="0.01">
+    <CollisionPipeline/><BVHNarrowPhase/><DiscreteIntersection/>
+    <CollisionResponse response="PenalityContactForceField"/>
+    <Node name="b"><MechanicalObject position="0 0 0"/><SphereCollisionModel radius="1"/></Node>
+  </Node>)";
+  const test::Outcome o = test::run_xml(dir, xml, 1);
+  EXPECT_TRUE(test::any_contains_all(o.errors, {"CollisionPipeline", "broad phase"})) << o.all();
+}
+
+}  // namespace
+}  // namespace sinew
