@@ -2,6 +2,7 @@
 // project onto the closest feature (vertex, edge or interior) of lines and
 // triangles, each feature owned by one triangle (the triangle flags).
 #include "collision/intersect/element_test.h"
+#include "collision/proximity_intersection.h"
 #include "collision/intersect/new_proximity_tests.h"
 #include "collision/model/line_collision_model.h"
 #include "collision/model/point_collision_model.h"
@@ -18,24 +19,15 @@ using L = LineCollisionModel;
 using T = TriangleCollisionModel;
 using S = SphereCollisionModel;
 
-class NewProximityIntersection final : public Intersection {
+class NewProximityIntersection final : public ProximityIntersection {
  public:
-  Field<double> alarm{this, "alarmDistance", 1.0, "distance below which pairs are reported", "Collision", "length"};
-  Field<double> contact{this, "contactDistance", 0.5, "distance the response keeps between the objects",
-                        "Collision", "length"};
   Field<bool> use_line_line{this, "useLineLine", false, "test lines against lines (and triangle edges)",
                             "Collision"};
 
-  double alarm_distance() const override { return alarm.value(); }
-  double contact_distance() const override { return contact.value(); }
   const new_proximity::Params& params() const { return params_; }
 
   void init() override {
-    if (!(alarm.value() >= 0) || !(contact.value() >= 0)) {
-      msg_error("alarmDistance and contactDistance must be >= 0");
-      set_state(ComponentState::invalid);
-      return;
-    }
+    if (!check_distances()) return;
     using K = Kind;
     using M = NewProximityIntersection;
     add(K::sphere, K::sphere, &element_test<M, S, S, new_proximity::sphere_sphere>);

@@ -61,16 +61,15 @@ void CollisionScope::respond(Node& root) {
   // SOFA re-attaches every response at the end of its node each step: keep
   // the responses of each node last, in contact order (no change, no cost).
   for (Node* n : touched_) {
-    std::size_t k = 0;
     const auto& list = n->interaction_force_fields;
-    std::vector<Component*> wanted;
+    wanted_.clear();
     for (Contact* c : contacts)
-      if (c->response() && c->response()->node() == n) wanted.push_back(c->response());
-    bool in_order = list.size() >= wanted.size();
-    for (k = 0; in_order && k < wanted.size(); ++k)
-      in_order = list[list.size() - wanted.size() + k] == wanted[k];
+      if (c->response() && c->response()->node() == n) wanted_.push_back(c->response());
+    bool in_order = list.size() >= wanted_.size();
+    for (std::size_t k = 0; in_order && k < wanted_.size(); ++k)
+      in_order = list[list.size() - wanted_.size() + k] == wanted_[k];
     if (!in_order)
-      for (Component* r : wanted) n->move_to_end(r);
+      for (Component* r : wanted_) n->move_to_end(r);
   }
 }
 

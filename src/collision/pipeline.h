@@ -32,6 +32,7 @@ struct CollisionScope {
 
  private:
   std::vector<Node*> touched_;
+  std::vector<Component*> wanted_;  // buffers kept from step to step
 };
 
 class SubCollisionPipeline final : public Component {

@@ -27,11 +27,9 @@ int point_point(const Params& prm, const PointElem& e1, const PointElem& e2, std
   const double alarm = prm.alarm + e1.info.cd + e2.info.cd;
   const Vec3 PQ = e2.p - e1.p;
   if (norm2(PQ) >= alarm * alarm) return 0;
-  DetectionOutput& d = append(out, e1.info, e2.info, larger_model_index(e1.info, e2.info));
+  DetectionOutput& d = append_along(out, e1.info, e2.info, larger_model_index(e1.info, e2.info), PQ, prm.contact + e1.info.cd + e2.info.cd);
   d.point1 = e1.p;
   d.point2 = e2.p;
-  set_normal_guarded(d, PQ);
-  d.value -= prm.contact + e1.info.cd + e2.info.cd;
   return 1;
 }
 
@@ -50,11 +48,9 @@ int line_point(const Params& prm, const LineElem& e1, const PointElem& e2, std::
     Q = e1.a + AB * alpha;
   const Vec3 QP = e2.p - Q;
   if (norm2(QP) >= alarm * alarm) return 0;
-  DetectionOutput& d = append(out, e1.info, e2.info, e2.info.index);
+  DetectionOutput& d = append_along(out, e1.info, e2.info, e2.info.index, QP, prm.contact + e2.info.cd + e1.info.cd);
   d.point1 = Q;
   d.point2 = e2.p;
-  set_normal_guarded(d, QP);
-  d.value -= prm.contact + e2.info.cd + e1.info.cd;
   return 1;
 }
 
@@ -82,11 +78,9 @@ int line_line(const Params& prm, const LineElem& e1, const LineElem& e2, std::ve
   const Vec3 Q = e2.a + CD * beta;
   const Vec3 PQ = Q - P;
   if (norm2(PQ) >= alarm * alarm) return 0;
-  DetectionOutput& d = append(out, e1.info, e2.info, larger_model_index(e1.info, e2.info));
+  DetectionOutput& d = append_along(out, e1.info, e2.info, larger_model_index(e1.info, e2.info), PQ, prm.contact + e1.info.cd + e2.info.cd);
   d.point1 = P;
   d.point2 = Q;
-  set_normal_guarded(d, PQ);
-  d.value -= prm.contact + e1.info.cd + e2.info.cd;
   return 1;
 }
 
@@ -108,11 +102,9 @@ int triangle_point(const Params& prm, const TriangleElem& e1, const PointElem& e
   const Vec3 Q = e1.a + AB * alpha + AC * beta;
   const Vec3 QP = e2.p - Q;
   if (norm2(QP) >= alarm * alarm) return 0;
-  DetectionOutput& d = append(out, e1.info, e2.info, e2.info.index);
+  DetectionOutput& d = append_along(out, e1.info, e2.info, e2.info.index, QP, prm.contact + e2.info.cd + e1.info.cd);
   d.point1 = Q;
   d.point2 = e2.p;
-  set_normal_guarded(d, QP);
-  d.value -= prm.contact + e2.info.cd + e1.info.cd;
   // useSurfaceNormals: the stored triangle normal replaces the direction (value unchanged).
   if (prm.use_surface_normals) d.normal = e1.normal;
   return 1;
@@ -138,9 +130,7 @@ int triangle_sphere(const Params& prm, const TriangleElem& e1, const SphereElem&
   const Vec3 Q = e1.a - x13 * alpha - x23 * beta;
   const Vec3 QP = e2.c - Q;
   if (norm2(QP) >= alarm * alarm) return 0;
-  DetectionOutput& d = append(out, e1.info, e2.info, e2.info.index);
-  set_normal_guarded(d, QP);
-  d.value -= prm.contact + e2.r + e2.info.cd + e1.info.cd;
+  DetectionOutput& d = append_along(out, e1.info, e2.info, e2.info.index, QP, prm.contact + e2.r + e2.info.cd + e1.info.cd);
   d.point1 = Q;
   d.point2 = e2.contact_point(d.normal);  // normal points into the sphere: its near side
   return 1;
@@ -159,11 +149,9 @@ int line_sphere(const Params& prm, const LineElem& e1, const SphereElem& e2, std
   const Vec3 Q = e1.a - x32 * alpha;
   const Vec3 QP = e2.c - Q;
   if (norm2(QP) >= alarm * alarm) return 0;
-  DetectionOutput& d = append(out, e1.info, e2.info, e2.info.index);
-  set_normal_guarded(d, QP);
+  DetectionOutput& d = append_along(out, e1.info, e2.info, e2.info.index, QP, prm.contact + e2.r + e2.info.cd + e1.info.cd);
   d.point1 = Q;
   d.point2 = e2.contact_point(d.normal);
-  d.value -= prm.contact + e2.r + e2.info.cd + e1.info.cd;
   return 1;
 }
 
@@ -172,9 +160,7 @@ int sphere_point(const Params& prm, const SphereElem& e1, const PointElem& e2, s
   const Vec3 PQ = e2.p - e1.c;
   if (norm2(PQ) >= alarm * alarm) return 0;
   // id is the sphere's index whatever the model sizes (SOFA's choice here).
-  DetectionOutput& d = append(out, e1.info, e2.info, e1.info.index);
-  set_normal_guarded(d, PQ);
-  d.value -= prm.contact + e1.r + e1.info.cd + e2.info.cd;
+  DetectionOutput& d = append_along(out, e1.info, e2.info, e1.info.index, PQ, prm.contact + e1.r + e1.info.cd + e2.info.cd);
   d.point1 = e1.contact_point(-d.normal);  // sphere side facing the point
   d.point2 = e2.p;
   return 1;

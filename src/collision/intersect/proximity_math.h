@@ -43,4 +43,15 @@ inline void set_normal_guarded(DetectionOutput& d, const Vec3& v) {
     d.normal = Vec3(1, 0, 0);
 }
 
+// A MinProximity output along v (from the point on element 1 to the point on
+// element 2, as computed for the alarm test): value |v| − contact, normal
+// v/|v| (guarded). The caller sets the two points.
+inline DetectionOutput& append_along(std::vector<DetectionOutput>& out, const ElemInfo& i1, const ElemInfo& i2,
+                                     std::int64_t id, const Vec3& v, double contact) {
+  DetectionOutput& d = append(out, i1, i2, id);
+  set_normal_guarded(d, v);
+  d.value -= contact;
+  return d;
+}
+
 }  // namespace sinew::intersect_detail
