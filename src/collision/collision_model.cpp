@@ -17,14 +17,14 @@ const char* kind_name(CollisionModelBase::Kind k) {
 CollisionModelBase::CollisionModelBase(Kind kind) : kind_(kind) { contact_distance.add_alias("proximity"); }
 
 void CollisionModelBase::init() {
-  mstate_ = node()->mechanical_state;
+  mstate_ = node()->get_mechanical_state();  // the node's, else the nearest ancestor's (SOFA's context lookup)
   if (!mstate_) {
-    msg_error("needs a MechanicalState in its node " + node()->describe());
+    msg_error("needs a MechanicalState in its node " + node()->describe() + " or above");
     set_state(ComponentState::invalid);
     return;
   }
   if (mstate_->state_type() != StateType::vec3) {
-    msg_error(std::string("needs a Vec3d MechanicalState in its node; ") + mstate_->describe() + " is " +
+    msg_error(std::string("needs a Vec3d MechanicalState; ") + mstate_->describe() + " is " +
               mstate_->info().name);
     set_state(ComponentState::invalid);
     return;

@@ -199,3 +199,70 @@ TEST(CollisionPipeline, MissingPhaseIsAnError) {
 
 }  // namespace
 }  // namespace sinew
+
+namespace sinew {
+namespace {
+
+std::string floor_and_point_scene(const char* method, double y) {
+  return std::string(R"(<Node name="root" dt="0.01" gravity="0 -9.81 0">
+    <CollisionPipeline/><BruteForceBroadPhase/><BVHNarrowPhase name="narrow"/>
+    <)") + method + R"( alarmDistance="0.5" contactDistance="0.2"/>
+    <CollisionResponse response="PenalityContactForceField"/>
+    <Node name="ball">
+      <EulerImplicitSolver rayleighMass="0.5"/><CGLinearSolver iterations="50" tolerance="1e-12" threshold="1e-14"/>
+      <MechanicalObject name="x" position="0.5 )" + std::to_string(y) + R"( 0.2"/><UniformMass totalMass="1"/>
+      <PointCollisionModel/>
+    </Node>
+    <Node name="floor">
+      <MechanicalObject position="-1 0 -1  2 0 -1  2 0 2  -1 0 2"/>
+      <MeshTopology triangles="0 2 1  0 3 2"/>
+      <TriangleCollisionModel simulated="0" moving="0"/>
+    </Node>
+  </Node>)";
+}
+
+std::size_t outputs_after_one_detection(const std::string& xml) {
+  scene::LoadedScene s = test::load(xml);
+  if (!s.root) return 0;
+  s.root->collision_pipeline->collide(0.01);
+  std::size_t n = 0;
+  for (const PairOutputs& p : test::get<BVHNarrowPhase>(*s.root, "narrow")->outputs()) n += p.outputs.size();
+  return n;
+}
+
+// LocalMinDistance keeps the contacts a triangle's front side allows: a point
+// 0.1 in front of the floor is reported, 0.1 behind it is not (MinProximity
+// reports both).
+TEST(CollisionPipeline, LocalMinDistanceRejectsContactsBehindATriangle) {
+  EXPECT_EQ(outputs_after_one_detection(floor_and_point_scene("LocalMinDistance", 0.1)), 1u);
+  EXPECT_EQ(outputs_after_one_detection(floor_and_point_scene("LocalMinDistance", -0.1)), 0u);
+  EXPECT_EQ(outputs_after_one_detection(floor_and_point_scene("MinProximityIntersection", -0.1)), 1u);
+}
+
+// Same rest height as with MinProximity: the penalty law does not depend on the method.
+TEST(CollisionPipeline, PointRestsOnTheFloorWithLocalMinDistance) {
+  scene::LoadedScene s = test::load(floor_and_point_scene("LocalMinDistance", 0.6));
+  ASSERT_TRUE(s.root);
+  for (int i = 0; i < 600; ++i) animate(*s.root);
+  auto* x = test::get<MechanicalState>(*s.root->find_child_named("ball"), "x");
+  EXPECT_NEAR(x->read(kPosition)[1], 0.2 - 9.81 / 500.0, 1e-4);
+}
+
+// A collision model takes the state of the nearest ancestor when its node has none (SOFA's context lookup).
+TEST(CollisionPipeline, ModelUsesTheStateOfAnAncestor) {
+  const std::string xml = R"(<Node name="root" dt="0.01">
+    <CollisionPipeline/><BruteForceBroadPhase/><BVHNarrowPhase/><MinProximityIntersection/>
+    <CollisionResponse response="PenalityContactForceField"/>
+    <Node name="body"><MechanicalObject name="x" position="0 0 0  1 0 0"/>
+      <Node name="surface"><PointCollisionModel name="points"/></Node></Node>
+  </Node>)";
+  scene::LoadedScene s = test::load(xml);
+  ASSERT_TRUE(s.root);
+  Node* surface = s.root->find_child_named("body")->find_child_named("surface");
+  auto* points = test::get<PointCollisionModel>(*surface, "points");
+  ASSERT_NE(points, nullptr);
+  EXPECT_EQ(points->mstate(), test::get<MechanicalState>(*s.root->find_child_named("body"), "x"));
+}
+
+}  // namespace
+}  // namespace sinew

@@ -1,5 +1,7 @@
 #include "collision/model/line_collision_model.h"
 
+#include <algorithm>
+
 #include "collision/model/element_checks.h"
 #include "collision/model/point_collision_model.h"
 #include "core/node.h"
@@ -52,6 +54,22 @@ void LineCollisionModel::compute_bounding_tree(int depth) {
     tree_.set_box(i, box);
   }
   tree_.update(depth);
+}
+
+local_min_distance::LineNeighbourhood LineCollisionModel::lmd_neighbourhood(unsigned i) const {
+  const MeshTopologyBase& t = *topology;
+  const auto& around = t.triangles_around_edge();
+  const std::size_t n = x_.size();
+  if (i < around.size() && around[i].size() == 2) {
+    const Triangle& t0 = t.triangles()[around[i][0]];
+    const Triangle& t1 = t.triangles()[around[i][1]];
+    if (std::max({t0[0], t0[1], t0[2], t1[0], t1[1], t1[2]}) < n)
+      return local_min_distance::two_triangles(elem(i), t0, {x_[t0[0]], x_[t0[1]], x_[t0[2]]},
+                                               {x_[t1[0]], x_[t1[1]], x_[t1[2]]}, both_side.value());
+  }
+  local_min_distance::LineNeighbourhood nb;
+  nb.both_side = both_side.value();
+  return nb;
 }
 
 bool LineCollisionModel::element_can_collide(unsigned i, const CollisionModelBase& other, unsigned j) const {

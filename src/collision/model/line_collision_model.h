@@ -4,6 +4,7 @@
 
 #include "collision/collision_model.h"
 #include "collision/intersect/elements.h"
+#include "collision/intersect/local_min_distance_tests.h"
 
 namespace sinew {
 
@@ -27,6 +28,8 @@ class LineCollisionModel final : public CollisionModelBase {
     return {x_[e[0]], x_[e[1]], {e[0], e[1]}, {i, edges_.size(), contact_distance.value(), this}};
   }
   const Edge& edge(unsigned i) const { return edges_[i]; }
+  // LocalMinDistance's view of edge i: the two triangles along it, if it has exactly two.
+  local_min_distance::LineNeighbourhood lmd_neighbourhood(unsigned i) const;
   const MeshTopologyBase* mesh() const { return topology.get(); }
 
  protected:

@@ -14,6 +14,7 @@ bool PointCollisionModel::init_model() {
 
 void PointCollisionModel::compute_bounding_tree(int depth) {
   x_ = positions();
+  ++stamp_;
   const bool resized = tree_.size() != x_.size();
   if (resized) tree_.resize(0);
   if (!moving.value() && tree_.built() && !resized) return;  // a fixed obstacle is bounded once
@@ -43,6 +44,54 @@ void PointCollisionModel::update_normals() {
     for (unsigned v : tri) normals_[v] += n;
   }
   for (Vec3& n : normals_) sofa_normalize(n);
+}
+
+void PointCollisionModel::build_lmd() const {
+  lmd_stamp_ = stamp_;
+  // The filter applies when a line model is found in this node or above (SOFA's upward search).
+  lmd_line_above_ = false;
+  for (const Node* n = node(); n && !lmd_line_above_; n = n->parent())
+    for (const auto& o : n->objects())
+      if (auto* m = dynamic_cast<const CollisionModelBase*>(o.get()); m && m->kind() == Kind::line) lmd_line_above_ = true;
+  const std::size_t n = x_.size();
+  lmd_normals_.clear();
+  lmd_others_.clear();
+  lmd_normal_start_.assign(n + 1, 0);
+  lmd_other_start_.assign(n + 1, 0);
+  const MeshTopologyBase* t = topology.get();
+  for (unsigned i = 0; i < n; ++i) {
+    lmd_normal_start_[i] = static_cast<unsigned>(lmd_normals_.size());
+    lmd_other_start_[i] = static_cast<unsigned>(lmd_others_.size());
+    if (!t) continue;
+    const auto& tav = t->triangles_around_vertex();
+    if (i < tav.size())
+      for (unsigned k : tav[i]) {
+        const Triangle& tri = t->triangles()[k];
+        if (tri[0] < n && tri[1] < n && tri[2] < n)
+          lmd_normals_.push_back(local_min_distance::unit_normal(x_[tri[0]], x_[tri[1]], x_[tri[2]]));
+      }
+    const auto& eav = t->edges_around_vertex();
+    if (i < eav.size())
+      for (unsigned k : eav[i]) {
+        const Edge& e = t->edges()[k];
+        const unsigned other = e[0] == i ? e[1] : e[0];
+        if (other < n) lmd_others_.push_back(x_[other]);
+      }
+  }
+  lmd_normal_start_[n] = static_cast<unsigned>(lmd_normals_.size());
+  lmd_other_start_[n] = static_cast<unsigned>(lmd_others_.size());
+}
+
+local_min_distance::PointNeighbourhood PointCollisionModel::lmd_neighbourhood(unsigned i) const {
+  if (lmd_stamp_ != stamp_) build_lmd();
+  local_min_distance::PointNeighbourhood nb;
+  nb.line_model_above = lmd_line_above_;
+  nb.both_side = both_side.value();
+  nb.triangle_normals = std::span<const Vec3>(lmd_normals_).subspan(lmd_normal_start_[i],
+                                                                    lmd_normal_start_[i + 1] - lmd_normal_start_[i]);
+  nb.edge_neighbours = std::span<const Vec3>(lmd_others_).subspan(lmd_other_start_[i],
+                                                                  lmd_other_start_[i + 1] - lmd_other_start_[i]);
+  return nb;
 }
 
 bool PointCollisionModel::element_can_collide(unsigned i, const CollisionModelBase& other, unsigned j) const {

@@ -4,6 +4,7 @@
 
 #include "collision/collision_model.h"
 #include "collision/intersect/elements.h"
+#include "collision/intersect/local_min_distance_tests.h"
 
 namespace sinew {
 
@@ -25,6 +26,9 @@ class PointCollisionModel final : public CollisionModelBase {
 
   PointElem elem(unsigned i) const { return {x_[i], {i, x_.size(), contact_distance.value(), this}}; }
   const MeshTopologyBase* mesh() const { return topology.get(); }
+  // LocalMinDistance's view of point i (triangles and edges around it), at
+  // the positions of the current detection; built once per detection on first use.
+  local_min_distance::PointNeighbourhood lmd_neighbourhood(unsigned i) const;
   // Vertex normals (computeNormals), one per point; empty otherwise.
   const std::vector<Vec3>& normals() const { return normals_; }
 
@@ -33,8 +37,15 @@ class PointCollisionModel final : public CollisionModelBase {
 
  private:
   void update_normals();
+  void build_lmd() const;
   std::span<const Vec3> x_;
   std::vector<Vec3> normals_;
+  std::uint64_t stamp_ = 1;  // moves at every detection
+  // LocalMinDistance neighbourhoods, one range per point in each array.
+  mutable std::uint64_t lmd_stamp_ = 0;
+  mutable bool lmd_line_above_ = false;
+  mutable std::vector<Vec3> lmd_normals_, lmd_others_;
+  mutable std::vector<unsigned> lmd_normal_start_, lmd_other_start_;
 };
 
 }  // namespace sinew
