@@ -11,8 +11,8 @@ namespace sinew {
 
 class BruteForceBroadPhase final : public Component {
  public:
-  Field<std::vector<double>> box{this, "box", {}, "if set (min max), only models intersecting this box collide",
-                                 "Collision", "length"};
+  Field<std::vector<double>> box{
+      this, "box", {}, "if set (min max), only models intersecting this box collide", "Collision", "length"};
 
   void init() override;
   void begin(const Intersection& method);

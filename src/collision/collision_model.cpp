@@ -6,10 +6,14 @@ namespace sinew {
 
 const char* kind_name(CollisionModelBase::Kind k) {
   switch (k) {
-    case CollisionModelBase::Kind::point: return "Point";
-    case CollisionModelBase::Kind::line: return "Line";
-    case CollisionModelBase::Kind::triangle: return "Triangle";
-    case CollisionModelBase::Kind::sphere: return "Sphere";
+    case CollisionModelBase::Kind::point:
+      return "Point";
+    case CollisionModelBase::Kind::line:
+      return "Line";
+    case CollisionModelBase::Kind::triangle:
+      return "Triangle";
+    case CollisionModelBase::Kind::sphere:
+      return "Sphere";
   }
   return "?";
 }
@@ -24,8 +28,7 @@ void CollisionModelBase::init() {
     return;
   }
   if (mstate_->state_type() != StateType::vec3) {
-    msg_error(std::string("needs a Vec3d MechanicalState; ") + mstate_->describe() + " is " +
-              mstate_->info().name);
+    msg_error(std::string("needs a Vec3d MechanicalState; ") + mstate_->describe() + " is " + mstate_->info().name);
     set_state(ComponentState::invalid);
     return;
   }

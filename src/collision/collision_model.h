@@ -30,17 +30,16 @@ class CollisionModelBase : public CollisionModel {
   Field<bool> simulated{this, "simulated", true,
                         "false: an obstacle that no contact moves; pairs of two obstacles are skipped", "Collision"};
   Field<bool> self_collision{this, "selfCollision", false, "collide with the models of the same node", "Collision"};
-  Field<double> contact_distance{this, "contactDistance", 0.0,
-                                 "skin added to the alarm and contact distances of the pairs of this model",
-                                 "Collision", "length"};
+  Field<double> contact_distance{
+      this,        "contactDistance", 0.0, "skin added to the alarm and contact distances of the pairs of this model",
+      "Collision", "length"};
   Field<double> contact_stiffness{this, "contactStiffness", 10.0, "penalty stiffness factor of this model's contacts",
                                   "Collision"};
   Field<double> contact_friction{this, "contactFriction", 0.0, "friction factor (summed into the penalty mu, unused)",
                                  "Collision"};
   Field<double> contact_restitution{this, "contactRestitution", 0.0, "restitution factor (unused)", "Collision"};
-  Field<std::string> contact_response{this, "contactResponse", "",
-                                      "response for this model's contacts, overriding the contact manager's",
-                                      "Collision"};
+  Field<std::string> contact_response{
+      this, "contactResponse", "", "response for this model's contacts, overriding the contact manager's", "Collision"};
   Field<std::vector<int>> group{this, "group", {}, "models sharing a group id never collide", "Collision"};
   Field<std::string> color{this, "color", "1 0 0 1", "colour (viewer)", "Visualization"};
   Field<int> number_of_contacts{this, "numberOfContacts", 0, "output: number of contacts touching this model",

@@ -18,8 +18,7 @@ void CollisionResponse::init() {
     return;
   }
   if (!known_response(r))
-    msg_error("response \"" + r + "\" is not available (available: " + kPenalty +
-              "); pairs using it get no contact");
+    msg_error("response \"" + r + "\" is not available (available: " + kPenalty + "); pairs using it get no contact");
 }
 
 std::string CollisionResponse::response_for(const CollisionModelBase& m1, const CollisionModelBase& m2) const {
@@ -39,8 +38,10 @@ std::unique_ptr<Contact> CollisionResponse::create(const std::string& name, Coll
     return nullptr;
   };
   std::unique_ptr<Contact> c;
-  if (name == kPenalty) c = std::make_unique<PenaltyContact>(m1, m2, method);
-  else return fail("response \"" + name + "\" is not available (available: " + kPenalty + ")");
+  if (name == kPenalty)
+    c = std::make_unique<PenaltyContact>(m1, m2, method);
+  else
+    return fail("response \"" + name + "\" is not available (available: " + kPenalty + ")");
   // responseParams: name=value pairs separated by '&' (or '?').
   const std::string& params = response_params.value();
   std::size_t start = 0;

@@ -56,10 +56,9 @@ void CubeTree::build(int depth) {
       const Vec3 l = cell.box.max - cell.box.min;
       const int axis = l[0] > l[1] ? (l[0] > l[2] ? 0 : 2) : (l[1] > l[2] ? 1 : 2);
       // Stable, so equal centres keep their order (the tree SOFA builds).
-      std::stable_sort(leaves_.begin() + cell.first, leaves_.begin() + cell.last,
-                       [axis](const Leaf& a, const Leaf& b) {
-                         return a.box.min[axis] + a.box.max[axis] < b.box.min[axis] + b.box.max[axis];
-                       });
+      std::stable_sort(leaves_.begin() + cell.first, leaves_.begin() + cell.last, [axis](const Leaf& a, const Leaf& b) {
+        return a.box.min[axis] + a.box.max[axis] < b.box.min[axis] + b.box.max[axis];
+      });
       const unsigned middle = cell.first + (n + 1) / 2;
       Cube c1, c2;
       c1.first = cell.first;

@@ -29,7 +29,6 @@ class FirstSeenIds {
     seen_.push_back(m);
     return seen_.size() - 1;
   }
-  void forget(const CollisionModelBase* m) { std::replace(seen_.begin(), seen_.end(), m, (const CollisionModelBase*)nullptr); }
 
  private:
   std::vector<const CollisionModelBase*> seen_;

@@ -78,13 +78,13 @@ class LocalMinDistance final : public ProximityIntersection {
     return lmd::point_point(prm(in), as<P>(m1).elem(i1), as<P>(m1).lmd_neighbourhood(i1), as<P>(m2).elem(i2),
                             as<P>(m2).lmd_neighbourhood(i2), out);
   }
-  static int line_line(const Intersection& in, const CollisionModelBase& m1, unsigned i1,
-                       const CollisionModelBase& m2, unsigned i2, std::vector<DetectionOutput>& out) {
+  static int line_line(const Intersection& in, const CollisionModelBase& m1, unsigned i1, const CollisionModelBase& m2,
+                       unsigned i2, std::vector<DetectionOutput>& out) {
     return lmd::line_line(prm(in), as<L>(m1).elem(i1), as<L>(m1).lmd_neighbourhood(i1), as<L>(m2).elem(i2),
                           as<L>(m2).lmd_neighbourhood(i2), out);
   }
-  static int line_point(const Intersection& in, const CollisionModelBase& m1, unsigned i1,
-                        const CollisionModelBase& m2, unsigned i2, std::vector<DetectionOutput>& out) {
+  static int line_point(const Intersection& in, const CollisionModelBase& m1, unsigned i1, const CollisionModelBase& m2,
+                        unsigned i2, std::vector<DetectionOutput>& out) {
     return lmd::line_point(prm(in), as<L>(m1).elem(i1), as<L>(m1).lmd_neighbourhood(i1), as<P>(m2).elem(i2),
                            as<P>(m2).lmd_neighbourhood(i2), out);
   }

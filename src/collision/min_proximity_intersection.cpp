@@ -3,12 +3,12 @@
 // line–line inside both segments), edges and corners being left to the
 // line and point models.
 #include "collision/intersect/element_test.h"
-#include "collision/proximity_intersection.h"
 #include "collision/intersect/min_proximity_tests.h"
 #include "collision/model/line_collision_model.h"
 #include "collision/model/point_collision_model.h"
 #include "collision/model/sphere_collision_model.h"
 #include "collision/model/triangle_collision_model.h"
+#include "collision/proximity_intersection.h"
 #include "core/registry.h"
 
 namespace sinew {
@@ -25,8 +25,8 @@ class MinProximityIntersection final : public ProximityIntersection {
   Field<bool> use_sphere_triangle{this, "useSphereTriangle", true, "test spheres against triangles, lines and points",
                                   "Collision"};
   Field<bool> use_point_point{this, "usePointPoint", true, "test points against points", "Collision"};
-  Field<bool> use_surface_normals{this, "useSurfaceNormals", false,
-                                  "use the triangle's normal as the contact normal", "Collision"};
+  Field<bool> use_surface_normals{this, "useSurfaceNormals", false, "use the triangle's normal as the contact normal",
+                                  "Collision"};
   Field<bool> use_line_point{this, "useLinePoint", true, "test lines against points", "Collision"};
   Field<bool> use_line_line{this, "useLineLine", true, "test lines against lines", "Collision"};
 

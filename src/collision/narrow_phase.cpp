@@ -92,9 +92,12 @@ void BVHNarrowPhase::visit(const Cell& cell, std::vector<DetectionOutput>& out) 
         lifo_.push_back({Range{r1.model, r1.level, i, i + 1}, c2});
       } else {
         const Range e1 = external_children(r1, i), e2 = external_children(r2, j);
-        if (!e1.empty() && !e2.empty()) final_pairs(e1, e2, out);
-        else if (!e1.empty()) fifo_.push_back({e1, Range{r2.model, r2.level, j, j + 1}});
-        else if (!e2.empty()) fifo_.push_back({Range{r1.model, r1.level, i, i + 1}, e2});
+        if (!e1.empty() && !e2.empty())
+          final_pairs(e1, e2, out);
+        else if (!e1.empty())
+          fifo_.push_back({e1, Range{r2.model, r2.level, j, j + 1}});
+        else if (!e2.empty())
+          fifo_.push_back({Range{r1.model, r1.level, i, i + 1}, e2});
       }
     }
 }

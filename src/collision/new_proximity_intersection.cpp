@@ -2,12 +2,12 @@
 // project onto the closest feature (vertex, edge or interior) of lines and
 // triangles, each feature owned by one triangle (the triangle flags).
 #include "collision/intersect/element_test.h"
-#include "collision/proximity_intersection.h"
 #include "collision/intersect/new_proximity_tests.h"
 #include "collision/model/line_collision_model.h"
 #include "collision/model/point_collision_model.h"
 #include "collision/model/sphere_collision_model.h"
 #include "collision/model/triangle_collision_model.h"
+#include "collision/proximity_intersection.h"
 #include "core/registry.h"
 
 namespace sinew {
@@ -21,8 +21,7 @@ using S = SphereCollisionModel;
 
 class NewProximityIntersection final : public ProximityIntersection {
  public:
-  Field<bool> use_line_line{this, "useLineLine", false, "test lines against lines (and triangle edges)",
-                            "Collision"};
+  Field<bool> use_line_line{this, "useLineLine", false, "test lines against lines (and triangle edges)", "Collision"};
 
   const new_proximity::Params& params() const { return params_; }
 

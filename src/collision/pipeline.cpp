@@ -7,6 +7,22 @@
 
 namespace sinew {
 
+namespace {
+const char* element_name(CollisionModelBase::Kind k) {
+  switch (k) {
+    case CollisionModelBase::Kind::point:
+      return "points";
+    case CollisionModelBase::Kind::line:
+      return "edges";
+    case CollisionModelBase::Kind::triangle:
+      return "triangles";
+    case CollisionModelBase::Kind::sphere:
+      return "spheres";
+  }
+  return "elements";
+}
+}  // namespace
+
 std::string CollisionScope::missing() const {
   std::string m;
   auto need = [&](bool ok, const char* what) {
@@ -30,6 +46,11 @@ void CollisionScope::detect() {
   for (CollisionModelBase* m : models) {
     if (!m->is_active()) continue;
     m->compute_bounding_tree(depth);
+    if (m->empty()) {
+      m->warn_once(std::string("has no ") + element_name(m->kind()) +
+                   " (its state or topology is empty): it collides with nothing");
+      continue;
+    }
     broad->add_model(m);
   }
   narrow->begin();
@@ -53,8 +74,10 @@ void CollisionScope::respond(Node& root) {
   };
   const auto& contacts = manager->contacts();
   for (Contact* c : contacts) {
-    if (!c->model1().simulated.value()) attach(c, *c->model2().node());
-    else if (!c->model2().simulated.value()) attach(c, *c->model1().node());
+    if (!c->model1().simulated.value())
+      attach(c, *c->model2().node());
+    else if (!c->model2().simulated.value())
+      attach(c, *c->model1().node());
   }
   for (Contact* c : contacts)
     if (c->model1().simulated.value() && c->model2().simulated.value()) attach(c, root);
@@ -168,8 +191,9 @@ void register_collision_pipelines(Registry& r) {
   ComponentInfo info;
   info.name = "CollisionPipeline";
   info.category = "Collision/Detection";
-  info.description = "collision detection and response over the models below its node (reset, bounding trees, "
-                     "broad phase, narrow phase, contacts)";
+  info.description =
+      "collision detection and response over the models below its node (reset, bounding trees, "
+      "broad phase, narrow phase, contacts)";
   info.create = creator<CollisionPipeline>();
   r.add(std::move(info));
   ComponentInfo composite;

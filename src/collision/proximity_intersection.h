@@ -10,7 +10,7 @@ namespace sinew {
 class ProximityIntersection : public Intersection {
  public:
   Field<double> alarm{this, "alarmDistance", 1.0, "distance below which pairs are reported", "Collision", "length"};
-  Field<double> contact{this, "contactDistance", 0.5, "distance the response keeps between the objects",
+  Field<double> contact{this,        "contactDistance", 0.5, "distance the response keeps between the objects",
                         "Collision", "length"};
 
   double alarm_distance() const override { return alarm.value(); }

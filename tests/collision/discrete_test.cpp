@@ -1,9 +1,8 @@
 // DiscreteIntersection sphere–sphere (spec/interaction.md §2.3) against
 // hand-computed contacts: inclusive bound, no skins, rigid contact points.
-#include "collision/intersect/discrete_tests.h"
-
 #include <gtest/gtest.h>
 
+#include "collision/intersect/discrete_tests.h"
 #include "elem_builders.h"
 
 using namespace sinew;

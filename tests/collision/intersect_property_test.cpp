@@ -49,7 +49,9 @@ Vec3 closest_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
   return a + (b - a) * t;
 }
 
-double dist_to_triangle(const Vec3& p, const TriangleElem& t) { return (p - closest_on_triangle(p, t.a, t.b, t.c)).norm(); }
+double dist_to_triangle(const Vec3& p, const TriangleElem& t) {
+  return (p - closest_on_triangle(p, t.a, t.b, t.c)).norm();
+}
 double dist_to_segment(const Vec3& p, const LineElem& l) { return (p - closest_on_segment(p, l.a, l.b)).norm(); }
 
 // Segment–segment distance by dense sampling of one segment (an upper bound of the true one).

@@ -1,13 +1,12 @@
 // LocalMinDistance element tests and validity filters (spec/interaction.md
 // §2.7) against hand-computed cases. Default distances: alarm 1, contact 0.5,
 // angleCone 0, coneFactor 0.5.
-#include "collision/intersect/local_min_distance_tests.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
+#include "collision/intersect/local_min_distance_tests.h"
 #include "elem_builders.h"
 
 using namespace sinew;
@@ -26,14 +25,15 @@ const double kS = std::sqrt(0.5);
 
 TEST(LocalMinDistanceTrianglePoint, InteriorAboveTheFrontFace) {
   std::vector<DetectionOutput> out;
-  ASSERT_EQ(lmd::triangle_point(kDefault, unit_triangle(), false, point({0.25, 0.25, 0.5}, info(8, 2)), kFreePoint, out), 1);
+  ASSERT_EQ(
+      lmd::triangle_point(kDefault, unit_triangle(), false, point({0.25, 0.25, 0.5}, info(8, 2)), kFreePoint, out), 1);
   expect_output(out[0], {3, 8, 8, {0.25, 0.25, 0}, {0.25, 0.25, 0.5}, {0, 0, 1}, 0.0});
   // Interior window as MinProximity; alarm strict; skins add.
   EXPECT_EQ(lmd::triangle_point(kDefault, unit_triangle(), false, point({0.5, 5e-7, 0.3}), kFreePoint, out), 0);
   EXPECT_EQ(lmd::triangle_point(kDefault, unit_triangle(), false, point({0.25, 0.25, 1.0}), kFreePoint, out), 0);
-  ASSERT_EQ(lmd::triangle_point(kDefault, unit_triangle(info(0, 1, 0.25)), false, point({0.25, 0.25, 1.0}), kFreePoint,
-                                out),
-            1);
+  ASSERT_EQ(
+      lmd::triangle_point(kDefault, unit_triangle(info(0, 1, 0.25)), false, point({0.25, 0.25, 1.0}), kFreePoint, out),
+      1);
   EXPECT_DOUBLE_EQ(out[1].value, 0.25);
 }
 
@@ -76,8 +76,9 @@ TEST(LocalMinDistanceTrianglePoint, PointFilterUsesItsOwnSurfaceNormal) {
 
 TEST(LocalMinDistanceTriangleSphere, CentreAsPointAndRadiusInDistances) {
   std::vector<DetectionOutput> out;
-  ASSERT_EQ(lmd::triangle_sphere(kDefault, unit_triangle(), false, sphere({0.25, 0.25, 1.0}, 0.5, false, info(5, 2)), out),
-            1);
+  ASSERT_EQ(
+      lmd::triangle_sphere(kDefault, unit_triangle(), false, sphere({0.25, 0.25, 1.0}, 0.5, false, info(5, 2)), out),
+      1);
   expect_output(out[0], {3, 5, 5, {0.25, 0.25, 0}, {0.25, 0.25, 1.0}, {0, 0, 1}, 0.0});
   EXPECT_EQ(lmd::triangle_sphere(kDefault, unit_triangle(), false, sphere({0.25, 0.25, -1.0}, 0.5), out), 0);
   EXPECT_EQ(lmd::triangle_sphere(kDefault, unit_triangle(), true, sphere({0.25, 0.25, -1.0}, 0.5), out), 1);
@@ -90,7 +91,7 @@ TEST(LocalMinDistanceLinePoint, InteriorOnlyNoClamping) {
   ASSERT_EQ(lmd::line_point(kDefault, l, kFreeEdge, point({0.5, 0.5, 0}, info(4, 2)), kFreePoint, out), 1);
   expect_output(out[0], {6, 4, 4, {0.5, 0, 0}, {0.5, 0.5, 0}, {0, 1, 0}, 0.0});
   EXPECT_EQ(lmd::line_point(kDefault, l, kFreeEdge, point({-0.1, 0.5, 0}), kFreePoint, out), 0);  // before A
-  EXPECT_EQ(lmd::line_point(kDefault, l, kFreeEdge, point({1, 1, 0}), kFreePoint, out), 0);      // alarm
+  EXPECT_EQ(lmd::line_point(kDefault, l, kFreeEdge, point({1, 1, 0}), kFreePoint, out), 0);       // alarm
   // Degenerate segment: |AB| < 1e-12 |AP|.
   EXPECT_EQ(lmd::line_point(kDefault, line({1, 0, 0}, {1, 0, 0}), kFreeEdge, point({1, 0.5, 0}), kFreePoint, out), 0);
 }

@@ -1,11 +1,10 @@
 // MinProximityIntersection element tests (spec/interaction.md §2.4) against
 // hand-computed contacts. Default distances: alarm 1, contact 0.5.
-#include "collision/intersect/min_proximity_tests.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "collision/intersect/min_proximity_tests.h"
 #include "elem_builders.h"
 
 using namespace sinew;
@@ -173,13 +172,12 @@ TEST(MinProximityTrianglePoint, AlarmBoundAndSkins) {
   EXPECT_EQ(mp::triangle_point(kDefault, unit_triangle(), point({0.25, 0.25, 1.0}), out), 0);
   EXPECT_EQ(mp::triangle_point(kDefault, unit_triangle(), point({0.25, 0.25, 0.999}), out), 1);
   // alarm 1 + 0.25 + 0.5 = 1.75, contact 0.5 + 0.75 = 1.25.
-  ASSERT_EQ(mp::triangle_point(kDefault, unit_triangle(info(0, 1, 0.25)), point({0.25, 0.25, 1.5}, info(0, 1, 0.5)),
-                               out),
-            1);
+  ASSERT_EQ(
+      mp::triangle_point(kDefault, unit_triangle(info(0, 1, 0.25)), point({0.25, 0.25, 1.5}, info(0, 1, 0.5)), out), 1);
   EXPECT_DOUBLE_EQ(out[1].value, 0.25);
-  EXPECT_EQ(mp::triangle_point(kDefault, unit_triangle(info(0, 1, 0.25)), point({0.25, 0.25, 1.75}, info(0, 1, 0.5)),
-                               out),
-            0);
+  EXPECT_EQ(
+      mp::triangle_point(kDefault, unit_triangle(info(0, 1, 0.25)), point({0.25, 0.25, 1.75}, info(0, 1, 0.5)), out),
+      0);
 }
 
 // ------------------------------------------------------------- triangle–sphere
@@ -236,7 +234,7 @@ TEST(MinProximityLineSphere, ParameterIsMirroredAboutTheMidpoint) {
 TEST(MinProximityLineSphere, WindowRejectsEndsAndRigidPointIsOffset) {
   std::vector<DetectionOutput> out;
   const auto l = line({0, 0, 0}, {4, 0, 0});
-  EXPECT_EQ(mp::line_sphere(kDefault, l, sphere({4.1, 0.1, 0}, 0.25), out), 0);  // beyond B
+  EXPECT_EQ(mp::line_sphere(kDefault, l, sphere({4.1, 0.1, 0}, 0.25), out), 0);   // beyond B
   EXPECT_EQ(mp::line_sphere(kDefault, l, sphere({-0.1, 0.1, 0}, 0.25), out), 0);  // beyond A
   ASSERT_EQ(mp::line_sphere(kDefault, l, sphere({2, 0, 0.75}, 0.25, true), out), 1);
   EXPECT_TRUE(vec_near(out[0].point2, {2, 0, 0.5}));
@@ -262,8 +260,8 @@ TEST(MinProximitySpherePoint, Vec3AndRigid) {
 TEST(MinProximitySphereSphere, InclusiveBoundWithSkinsAndRigidPoints) {
   std::vector<DetectionOutput> out;
   // alarm 1 + radii 1 = 2: exactly 2 accepted (DiscreteIntersection's `<=`).
-  ASSERT_EQ(mp::sphere_sphere(kDefault, sphere({0, 0, 0}, 0.5, true, info(1, 2)), sphere({0, 0, 2}, 0.5, true, info(0, 2)),
-                              out),
+  ASSERT_EQ(mp::sphere_sphere(kDefault, sphere({0, 0, 0}, 0.5, true, info(1, 2)),
+                              sphere({0, 0, 2}, 0.5, true, info(0, 2)), out),
             1);
   expect_output(out[0], {1, 0, 0, {0, 0, 0.5}, {0, 0, 1.5}, {0, 0, 1}, 0.5});
   EXPECT_EQ(mp::sphere_sphere(kDefault, sphere({0, 0, 0}, 0.5), sphere({0, 0, 2.0000001}, 0.5), out), 0);

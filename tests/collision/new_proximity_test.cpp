@@ -1,13 +1,12 @@
 // NewProximityIntersection element tests (spec/interaction.md §2.5) against
 // hand-computed contacts: closest-feature projection with ownership flags,
 // T–L / T–T orientation and ids, sphere variants. Default distances: alarm 1, contact 0.5.
-#include "collision/intersect/new_proximity_tests.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "collision/intersect/min_proximity_tests.h"
+#include "collision/intersect/new_proximity_tests.h"
 #include "elem_builders.h"
 
 using namespace sinew;
@@ -94,9 +93,9 @@ TEST(NewProximityTrianglePoint, InteriorNeedsNoFlag) {
 
 struct FeatureCase {
   const char* name;
-  Vec3 q;          // point tested against the unit triangle
-  int needed;      // flag owning the closest feature
-  Vec3 closest;    // expected closest point
+  Vec3 q;        // point tested against the unit triangle
+  int needed;    // flag owning the closest feature
+  Vec3 closest;  // expected closest point
 };
 
 TEST(NewProximityTrianglePoint, ClosestFeatureNeedsItsFlag) {
@@ -237,7 +236,8 @@ TEST(NewProximityTriangleTriangle, EdgeEdgeIdsWithUseLineLine) {
   prm.alarm = 0.6;
   prm.contact = 0.1;
   // e2's edge q1q2 crosses 0.5 above e1's edge; e2 rises away elsewhere.
-  const auto e2 = triangle({0.5, -1, 0.5}, {0.5, 1, 0.5}, {0.5, 0, 5}, kFlagE12, info(2, 10, 0, &kModel2), {10, 11, 12});
+  const auto e2 =
+      triangle({0.5, -1, 0.5}, {0.5, 1, 0.5}, {0.5, 0, 5}, kFlagE12, info(2, 10, 0, &kModel2), {10, 11, 12});
   const std::int64_t id2 = 3 * 4 + 12 * 2;
   {
     std::vector<DetectionOutput> out;
@@ -262,8 +262,8 @@ TEST(NewProximityTriangleTriangle, EdgeEdgeIdsWithUseLineLine) {
 
 TEST(NewProximitySphereSphere, CentresEvenForRigidAndStrictBound) {
   std::vector<DetectionOutput> out;
-  ASSERT_EQ(np::sphere_sphere(kDefault, sphere({0, 0, 0}, 0.5, true, info(1, 2)), sphere({0, 0, 1.5}, 0.5, true, info(0, 3)),
-                              out),
+  ASSERT_EQ(np::sphere_sphere(kDefault, sphere({0, 0, 0}, 0.5, true, info(1, 2)),
+                              sphere({0, 0, 1.5}, 0.5, true, info(0, 3)), out),
             1);
   // alarm 1 + radii = 2; value 1.5 − (0.5 + 1); id from model 2 (3 > 2).
   expect_output(out[0], {1, 0, 0, {0, 0, 0}, {0, 0, 1.5}, {0, 0, 1}, 0.0});
@@ -277,7 +277,8 @@ TEST(NewProximitySphereSphere, CentresEvenForRigidAndStrictBound) {
 
 TEST(NewProximitySpherePoint, IdFromLargerModel) {
   std::vector<DetectionOutput> out;
-  ASSERT_EQ(np::sphere_point(kDefault, sphere({0, 0, 0}, 0.5, true, info(2, 3)), point({0, 0, 1.2}, info(7, 9)), out), 1);
+  ASSERT_EQ(np::sphere_point(kDefault, sphere({0, 0, 0}, 0.5, true, info(2, 3)), point({0, 0, 1.2}, info(7, 9)), out),
+            1);
   // Unlike MinProximity: id from the larger model, point1 the centre.
   expect_output(out[0], {2, 7, 7, {0, 0, 0}, {0, 0, 1.2}, {0, 0, 1}, 0.2});
   EXPECT_EQ(np::sphere_point(kDefault, sphere({0, 0, 0}, 0.5), point({0, 1.5, 0}), out), 0);

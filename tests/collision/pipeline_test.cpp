@@ -37,11 +37,14 @@ TEST(CollisionPipeline, BvhFindsExactlyTheBruteForcePairs) {
   for (int depth : {0, 1, 3, 6, 10}) {
     const std::string a = points_text(rng, 300, 0, 4), b = points_text(rng, 200, 1, 5);
     const std::string xml = R"(<Node name="root" dt="0.01">
-      <CollisionPipeline depth=")" + std::to_string(depth) + R"("/><BruteForceBroadPhase/><BVHNarrowPhase name="narrow"/>
+      <CollisionPipeline depth=")" +
+                            std::to_string(depth) + R"("/><BruteForceBroadPhase/><BVHNarrowPhase name="narrow"/>
       <MinProximityIntersection alarmDistance="0.3" contactDistance="0.1"/>
       <CollisionResponse response="PenalityContactForceField"/>
-      <Node name="A"><MechanicalObject name="x" position=")" + a + R"("/><PointCollisionModel name="pa" contactDistance="0.05"/></Node>
-      <Node name="B"><MechanicalObject name="x" position=")" + b + R"("/><PointCollisionModel name="pb" simulated="0" moving="0"/></Node>
+      <Node name="A"><MechanicalObject name="x" position=")" +
+                            a + R"("/><PointCollisionModel name="pa" contactDistance="0.05"/></Node>
+      <Node name="B"><MechanicalObject name="x" position=")" +
+                            b + R"("/><PointCollisionModel name="pb" simulated="0" moving="0"/></Node>
     </Node>)";
     scene::LoadedScene s = test::load(xml);
     ASSERT_TRUE(s.root);
@@ -186,6 +189,19 @@ TEST(CollisionPipeline, BadElementsAreSkippedWithAMessage) {
   EXPECT_TRUE(test::any_contains_all(o.warnings, {"balls", "sphere 0", "radius"})) << o.all();
 }
 
+TEST(CollisionPipeline, EmptyModelIsReported) {
+  test::TempDir dir;
+  const std::string xml = R"(<Node name="root" dt="0.01">
+    <CollisionPipeline/><BruteForceBroadPhase/><BVHNarrowPhase/><MinProximityIntersection/>
+    <CollisionResponse response="PenalityContactForceField"/>
+    <Node name="a"><MechanicalObject position="0 0 0  1 0 0  0 1 0"/><MeshTopology edges="0 1"/>
+      <TriangleCollisionModel name="skin"/><PointCollisionModel/></Node>
+  </Node>)";
+  const test::Outcome o = test::run_xml(dir, xml, 3);
+  EXPECT_EQ(o.steps, 3);
+  EXPECT_TRUE(test::any_contains_all(o.warnings, {"skin", "no triangles", "collides with nothing"})) << o.all();
+}
+
 TEST(CollisionPipeline, MissingPhaseIsAnError) {
   test::TempDir dir;
   const std::string xml = R"(<Node name="root" dt="0.01">
@@ -206,11 +222,13 @@ namespace {
 std::string floor_and_point_scene(const char* method, double y) {
   return std::string(R"(<Node name="root" dt="0.01" gravity="0 -9.81 0">
     <CollisionPipeline/><BruteForceBroadPhase/><BVHNarrowPhase name="narrow"/>
-    <)") + method + R"( alarmDistance="0.5" contactDistance="0.2"/>
+    <)") +
+         method + R"( alarmDistance="0.5" contactDistance="0.2"/>
     <CollisionResponse response="PenalityContactForceField"/>
     <Node name="ball">
       <EulerImplicitSolver rayleighMass="0.5"/><CGLinearSolver iterations="50" tolerance="1e-12" threshold="1e-14"/>
-      <MechanicalObject name="x" position="0.5 )" + std::to_string(y) + R"( 0.2"/><UniformMass totalMass="1"/>
+      <MechanicalObject name="x" position="0.5 )" +
+         std::to_string(y) + R"( 0.2"/><UniformMass totalMass="1"/>
       <PointCollisionModel/>
     </Node>
     <Node name="floor">

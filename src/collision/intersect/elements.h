@@ -29,10 +29,10 @@ enum TriangleFlag : int {
 
 // What every element carries besides its geometry.
 struct ElemInfo {
-  unsigned index = 0;            // element index in its model
-  std::size_t model_size = 0;    // number of elements of its model
-  double cd = 0;                 // the model's contactDistance (skin) [length]
-  const void* model = nullptr;   // identity of the owning model (same-model tests)
+  unsigned index = 0;           // element index in its model
+  std::size_t model_size = 0;   // number of elements of its model
+  double cd = 0;                // the model's contactDistance (skin) [length]
+  const void* model = nullptr;  // identity of the owning model (same-model tests)
 };
 
 struct PointElem {
@@ -41,23 +41,23 @@ struct PointElem {
 };
 
 struct LineElem {
-  Vec3 a, b;                 // vertex 0 and vertex 1 of the edge
+  Vec3 a, b;                    // vertex 0 and vertex 1 of the edge
   std::array<unsigned, 2> v{};  // their point indices
   ElemInfo info;
 };
 
 struct TriangleElem {
-  Vec3 a, b, c;              // vertices 0, 1, 2 (topology order)
-  Vec3 normal;               // stored unit normal (frozen for non-moving models)
+  Vec3 a, b, c;                 // vertices 0, 1, 2 (topology order)
+  Vec3 normal;                  // stored unit normal (frozen for non-moving models)
   std::array<unsigned, 3> v{};  // their point indices
-  int flags = 0;             // TriangleFlag bits
+  int flags = 0;                // TriangleFlag bits
   ElemInfo info;
 };
 
 struct SphereElem {
-  Vec3 c;                    // centre (translation of a rigid sphere)
-  double r = 0;              // radius [length]
-  bool rigid = false;        // Rigid3d sphere: contact point c − n·r by normal n; Vec3d: c
+  Vec3 c;              // centre (translation of a rigid sphere)
+  double r = 0;        // radius [length]
+  bool rigid = false;  // Rigid3d sphere: contact point c − n·r by normal n; Vec3d: c
   ElemInfo info;
   // SOFA's getContactPointByNormal(n).
   Vec3 contact_point(const Vec3& n) const { return rigid ? Vec3(c - n * r) : c; }

@@ -23,8 +23,8 @@ struct Params {
   double alarm = 1.0;    // alarmDistance [length]
   double contact = 0.5;  // contactDistance [length]
   bool filter_intersection = true;
-  double angle_cone = 0.0;   // angleCone: widening of the filter cones [cosine-like, dimensionless]
-  double cone_factor = 0.5;  // coneFactor
+  double angle_cone = 0.0;       // angleCone: widening of the filter cones [cosine-like, dimensionless]
+  double cone_factor = 0.5;      // coneFactor
   bool use_lmd_filters = false;  // true: the filters are left to an external component (none applied here)
 };
 

@@ -27,7 +27,8 @@ int point_point(const Params& prm, const PointElem& e1, const PointElem& e2, std
   const double alarm = prm.alarm + e1.info.cd + e2.info.cd;
   const Vec3 PQ = e2.p - e1.p;
   if (norm2(PQ) >= alarm * alarm) return 0;
-  DetectionOutput& d = append_along(out, e1.info, e2.info, larger_model_index(e1.info, e2.info), PQ, prm.contact + e1.info.cd + e2.info.cd);
+  DetectionOutput& d = append_along(out, e1.info, e2.info, larger_model_index(e1.info, e2.info), PQ,
+                                    prm.contact + e1.info.cd + e2.info.cd);
   d.point1 = e1.p;
   d.point2 = e2.p;
   return 1;
@@ -78,7 +79,8 @@ int line_line(const Params& prm, const LineElem& e1, const LineElem& e2, std::ve
   const Vec3 Q = e2.a + CD * beta;
   const Vec3 PQ = Q - P;
   if (norm2(PQ) >= alarm * alarm) return 0;
-  DetectionOutput& d = append_along(out, e1.info, e2.info, larger_model_index(e1.info, e2.info), PQ, prm.contact + e1.info.cd + e2.info.cd);
+  DetectionOutput& d = append_along(out, e1.info, e2.info, larger_model_index(e1.info, e2.info), PQ,
+                                    prm.contact + e1.info.cd + e2.info.cd);
   d.point1 = P;
   d.point2 = Q;
   return 1;
@@ -130,7 +132,8 @@ int triangle_sphere(const Params& prm, const TriangleElem& e1, const SphereElem&
   const Vec3 Q = e1.a - x13 * alpha - x23 * beta;
   const Vec3 QP = e2.c - Q;
   if (norm2(QP) >= alarm * alarm) return 0;
-  DetectionOutput& d = append_along(out, e1.info, e2.info, e2.info.index, QP, prm.contact + e2.r + e2.info.cd + e1.info.cd);
+  DetectionOutput& d =
+      append_along(out, e1.info, e2.info, e2.info.index, QP, prm.contact + e2.r + e2.info.cd + e1.info.cd);
   d.point1 = Q;
   d.point2 = e2.contact_point(d.normal);  // normal points into the sphere: its near side
   return 1;
@@ -149,7 +152,8 @@ int line_sphere(const Params& prm, const LineElem& e1, const SphereElem& e2, std
   const Vec3 Q = e1.a - x32 * alpha;
   const Vec3 QP = e2.c - Q;
   if (norm2(QP) >= alarm * alarm) return 0;
-  DetectionOutput& d = append_along(out, e1.info, e2.info, e2.info.index, QP, prm.contact + e2.r + e2.info.cd + e1.info.cd);
+  DetectionOutput& d =
+      append_along(out, e1.info, e2.info, e2.info.index, QP, prm.contact + e2.r + e2.info.cd + e1.info.cd);
   d.point1 = Q;
   d.point2 = e2.contact_point(d.normal);
   return 1;
@@ -160,7 +164,8 @@ int sphere_point(const Params& prm, const SphereElem& e1, const PointElem& e2, s
   const Vec3 PQ = e2.p - e1.c;
   if (norm2(PQ) >= alarm * alarm) return 0;
   // id is the sphere's index whatever the model sizes (SOFA's choice here).
-  DetectionOutput& d = append_along(out, e1.info, e2.info, e1.info.index, PQ, prm.contact + e1.r + e1.info.cd + e2.info.cd);
+  DetectionOutput& d =
+      append_along(out, e1.info, e2.info, e1.info.index, PQ, prm.contact + e1.r + e1.info.cd + e2.info.cd);
   d.point1 = e1.contact_point(-d.normal);  // sphere side facing the point
   d.point2 = e2.p;
   return 1;

@@ -50,8 +50,7 @@ int point_point_raw(double dist2, const Vec3& p, const Vec3& q, std::int64_t id,
 }
 
 // Segment p1p2 against point q (closest point clamped to the segment).
-int line_point_raw(double dist2, const Vec3& p1, const Vec3& p2, const Vec3& q, std::int64_t id, bool swap,
-                   Out& out) {
+int line_point_raw(double dist2, const Vec3& p1, const Vec3& p2, const Vec3& q, std::int64_t id, bool swap, Out& out) {
   const Vec3 AB = p2 - p1;
   const Vec3 AQ = q - p1;
   double alpha = dot(AQ, AB) / dot(AB, AB);
@@ -116,8 +115,8 @@ int triangle_point_raw(double dist2, int flags, const Vec3& p1, const Vec3& p2, 
   double alpha = (b0 * a11 - b1 * a01) / det;
   double beta = (b1 * a00 - b0 * a01) / det;
   if (alpha < eps || beta < eps || alpha + beta > 1 - eps) {
-    const double pAB = b0 / a00;  // parameter of q's projection on AB
-    const double pAC = b1 / a11;  // ... on AC
+    const double pAB = b0 / a00;   // parameter of q's projection on AB
+    const double pAC = b1 / a11;   // ... on AC
     if (pAB < eps && pAC < eps) {  // corner A
       if (!(flags & kFlagP1)) return 0;
       alpha = 0.0;

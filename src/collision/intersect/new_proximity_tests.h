@@ -21,8 +21,7 @@ int line_point(const Params&, const LineElem& e1, const PointElem& e2, std::vect
 int line_line(const Params&, const LineElem& e1, const LineElem& e2, std::vector<DetectionOutput>& out);
 int triangle_point(const Params&, const TriangleElem& e1, const PointElem& e2, std::vector<DetectionOutput>& out);
 int triangle_line(const Params&, const TriangleElem& e1, const LineElem& e2, std::vector<DetectionOutput>& out);
-int triangle_triangle(const Params&, const TriangleElem& e1, const TriangleElem& e2,
-                      std::vector<DetectionOutput>& out);
+int triangle_triangle(const Params&, const TriangleElem& e1, const TriangleElem& e2, std::vector<DetectionOutput>& out);
 int sphere_sphere(const Params&, const SphereElem& e1, const SphereElem& e2, std::vector<DetectionOutput>& out);
 int sphere_point(const Params&, const SphereElem& e1, const PointElem& e2, std::vector<DetectionOutput>& out);
 int line_sphere(const Params&, const LineElem& e1, const SphereElem& e2, std::vector<DetectionOutput>& out);

@@ -2,11 +2,10 @@
 // (non-finite or degenerate input), SOFA's normalisation, neighbourhoods.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "collision/collision_model.h"
 

@@ -48,8 +48,10 @@ void LineCollisionModel::compute_bounding_tree(int depth) {
     } else {
       box.min = x_[e[0]].cwiseMin(x_[e[1]]) - Vec3::Constant(d);
       box.max = x_[e[0]].cwiseMax(x_[e[1]]) + Vec3::Constant(d);
-      if (!finite_box(box)) box = skipped_box(*this, "edge", i, "a non-finite position");
-      else if (e[0] == e[1] || x_[e[0]] == x_[e[1]]) box = skipped_box(*this, "edge", i, "coincident end points");
+      if (!finite_box(box))
+        box = skipped_box(*this, "edge", i, "a non-finite position");
+      else if (e[0] == e[1] || x_[e[0]] == x_[e[1]])
+        box = skipped_box(*this, "edge", i, "coincident end points");
     }
     tree_.set_box(i, box);
   }
@@ -77,7 +79,9 @@ bool LineCollisionModel::element_can_collide(unsigned i, const CollisionModelBas
   const MeshTopologyBase& t = *topology;
   const auto& around = t.edges_around_vertex();
   static const MeshTopologyBase::IndexList none;
-  auto edges_at = [&](unsigned v) -> const MeshTopologyBase::IndexList& { return v < around.size() ? around[v] : none; };
+  auto edges_at = [&](unsigned v) -> const MeshTopologyBase::IndexList& {
+    return v < around.size() ? around[v] : none;
+  };
   const unsigned p11 = edges_[i][0], p12 = edges_[i][1];
   if (&other == this) {
     const unsigned p21 = edges_[j][0], p22 = edges_[j][1];

@@ -52,7 +52,8 @@ void PointCollisionModel::build_lmd() const {
   lmd_line_above_ = false;
   for (const Node* n = node(); n && !lmd_line_above_; n = n->parent())
     for (const auto& o : n->objects())
-      if (auto* m = dynamic_cast<const CollisionModelBase*>(o.get()); m && m->kind() == Kind::line) lmd_line_above_ = true;
+      if (auto* m = dynamic_cast<const CollisionModelBase*>(o.get()); m && m->kind() == Kind::line)
+        lmd_line_above_ = true;
   const std::size_t n = x_.size();
   lmd_normals_.clear();
   lmd_others_.clear();
@@ -87,10 +88,10 @@ local_min_distance::PointNeighbourhood PointCollisionModel::lmd_neighbourhood(un
   local_min_distance::PointNeighbourhood nb;
   nb.line_model_above = lmd_line_above_;
   nb.both_side = both_side.value();
-  nb.triangle_normals = std::span<const Vec3>(lmd_normals_).subspan(lmd_normal_start_[i],
-                                                                    lmd_normal_start_[i + 1] - lmd_normal_start_[i]);
-  nb.edge_neighbours = std::span<const Vec3>(lmd_others_).subspan(lmd_other_start_[i],
-                                                                  lmd_other_start_[i + 1] - lmd_other_start_[i]);
+  nb.triangle_normals = std::span<const Vec3>(lmd_normals_)
+                            .subspan(lmd_normal_start_[i], lmd_normal_start_[i + 1] - lmd_normal_start_[i]);
+  nb.edge_neighbours =
+      std::span<const Vec3>(lmd_others_).subspan(lmd_other_start_[i], lmd_other_start_[i + 1] - lmd_other_start_[i]);
   return nb;
 }
 

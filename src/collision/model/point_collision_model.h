@@ -18,7 +18,8 @@ class PointCollisionModel final : public CollisionModelBase {
                               "Collision"};
   Field<bool> display_free_position{this, "displayFreePosition", false, "draw the free positions (viewer)",
                                     "Visualization"};
-  Link<MeshTopologyBase> topology{this, "topology", "topology giving the neighbourhood of each point (default: the node's)"};
+  Link<MeshTopologyBase> topology{this, "topology",
+                                  "topology giving the neighbourhood of each point (default: the node's)"};
 
   std::size_t size() const override { return x_.size(); }
   void compute_bounding_tree(int depth) override;

@@ -90,8 +90,10 @@ void TriangleCollisionModel::compute_bounding_tree(int depth) {
       normals_[i] = cross;
       sofa_normalize(normals_[i]);
     }
-    if (!finite_box(box)) box = skipped_box(*this, "triangle", i, "a non-finite position");
-    else if (cross.squaredNorm() == 0.0) box = skipped_box(*this, "triangle", i, "zero area (degenerate)");
+    if (!finite_box(box))
+      box = skipped_box(*this, "triangle", i, "a non-finite position");
+    else if (cross.squaredNorm() == 0.0)
+      box = skipped_box(*this, "triangle", i, "zero area (degenerate)");
     tree_.set_box(i, box);
   }
   tree_.update(depth);

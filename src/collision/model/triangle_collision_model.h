@@ -24,7 +24,12 @@ class TriangleCollisionModel final : public CollisionModelBase {
 
   TriangleElem elem(unsigned i) const {
     const Triangle& t = tris_[i];
-    return {x_[t[0]], x_[t[1]], x_[t[2]], normals_[i], {t[0], t[1], t[2]}, flags_[i],
+    return {x_[t[0]],
+            x_[t[1]],
+            x_[t[2]],
+            normals_[i],
+            {t[0], t[1], t[2]},
+            flags_[i],
             {i, tris_.size(), contact_distance.value(), this}};
   }
   const Triangle& triangle(unsigned i) const { return tris_[i]; }

@@ -49,8 +49,11 @@ void ContactMapper::resize(std::size_t n) {
 unsigned ContactMapper::add_point(const Vec3& P, unsigned elem, double& r) {
   r = 0;
   switch (model_->kind()) {
-    case CollisionModelBase::Kind::point: return elem;
-    case CollisionModelBase::Kind::sphere: r = static_cast<SphereCollisionModel*>(model_)->radius_of(elem); return elem;
+    case CollisionModelBase::Kind::point:
+      return elem;
+    case CollisionModelBase::Kind::sphere:
+      r = static_cast<SphereCollisionModel*>(model_)->radius_of(elem);
+      return elem;
     case CollisionModelBase::Kind::line: {
       // Parameter along the edge, not clamped (SOFA's line contact mapper).
       const auto& line = *static_cast<LineCollisionModel*>(model_);

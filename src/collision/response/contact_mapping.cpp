@@ -17,7 +17,8 @@ void map_points(const std::vector<ContactMapping::Point>& pts, std::span<const V
 }  // namespace
 
 void ContactMapping::apply(int x) {
-  map_points(points_, as_vec3(in_->read(vec_for(*in_, x, kPosition))), as_vec3(out_->write(vec_for(*out_, x, kPosition))));
+  map_points(points_, as_vec3(in_->read(vec_for(*in_, x, kPosition))),
+             as_vec3(out_->write(vec_for(*out_, x, kPosition))));
 }
 
 void ContactMapping::apply_j(int v, int role) {
