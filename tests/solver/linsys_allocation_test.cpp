@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
-#include <atomic>
 #include <cstdlib>
 #include <random>
 
@@ -20,45 +19,10 @@
 #include "solver/system/matrix_linear_system.h"
 #include "test_scene.h"
 
-// AddressSanitizer owns malloc: the counter is not installed in sanitizer builds
-// (scripts/validate), and these tests are skipped there.
-#if defined(__SANITIZE_ADDRESS__)
-#define SINEW_COUNT_ALLOCATIONS 0
-#else
-#define SINEW_COUNT_ALLOCATIONS 1
-#endif
-
-#if SINEW_COUNT_ALLOCATIONS
-extern "C" {
-void* __libc_malloc(std::size_t);
-void* __libc_calloc(std::size_t, std::size_t);
-void* __libc_realloc(void*, std::size_t);
-}
-
-#endif
-
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-#if SINEW_COUNT_ALLOCATIONS
-extern "C" {
-void* malloc(std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_malloc(n);
-}
-void* calloc(std::size_t n, std::size_t m) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_calloc(n, m);
-}
-void* realloc(void* p, std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_realloc(p, n);
-}
-}
-#endif
+#include "alloc_counter.h"
 
 using namespace sinew;
+using sinew::test::g_allocations;
 using sinew::test::load;
 
 namespace {
