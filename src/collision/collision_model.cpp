@@ -14,6 +14,8 @@ const char* kind_name(CollisionModelBase::Kind k) {
       return "Triangle";
     case CollisionModelBase::Kind::sphere:
       return "Sphere";
+    case CollisionModelBase::Kind::tetrahedron:
+      return "Tetrahedron";
   }
   return "?";
 }

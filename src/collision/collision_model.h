@@ -20,8 +20,8 @@ namespace sinew {
 
 class CollisionModelBase : public CollisionModel {
  public:
-  enum class Kind { point, line, triangle, sphere };
-  static constexpr int kKinds = 4;
+  enum class Kind { point, line, triangle, sphere, tetrahedron };
+  static constexpr int kKinds = 5;
 
   explicit CollisionModelBase(Kind kind);
 

@@ -1,8 +1,13 @@
 // DiscreteIntersection (spec/interaction.md §2.3): exact intersection tests
-// with no alarm distance (spheres against spheres).
+// with no alarm distance (spheres against spheres, segments crossing
+// triangles, points inside tetrahedra).
 #include "collision/intersect/discrete_tests.h"
 #include "collision/intersection.h"
+#include "collision/model/line_collision_model.h"
+#include "collision/model/point_collision_model.h"
 #include "collision/model/sphere_collision_model.h"
+#include "collision/model/tetrahedron_collision_model.h"
+#include "collision/model/triangle_collision_model.h"
 #include "core/registry.h"
 
 namespace sinew {
@@ -15,13 +20,30 @@ int sphere_sphere(const Intersection&, const CollisionModelBase& m1, unsigned i1
                                  static_cast<const SphereCollisionModel&>(m2).elem(i2), out);
 }
 
+int triangle_line(const Intersection&, const CollisionModelBase& m1, unsigned i1, const CollisionModelBase& m2,
+                  unsigned i2, std::vector<DetectionOutput>& out) {
+  return discrete::triangle_line(static_cast<const TriangleCollisionModel&>(m1).elem(i1),
+                                 static_cast<const LineCollisionModel&>(m2).elem(i2), out);
+}
+
+int tetrahedron_point(const Intersection&, const CollisionModelBase& m1, unsigned i1, const CollisionModelBase& m2,
+                      unsigned i2, std::vector<DetectionOutput>& out) {
+  return discrete::tetrahedron_point(static_cast<const TetrahedronCollisionModel&>(m1).elem(i1),
+                                     static_cast<const PointCollisionModel&>(m2).elem(i2),
+                                     m1.mstate() == m2.mstate(), out);
+}
+
 class DiscreteIntersection final : public Intersection {
  public:
   double alarm_distance() const override { return 0.0; }
   double contact_distance() const override { return 0.0; }
   double cube_margin(const CollisionModelBase&, const CollisionModelBase&) const override { return 0.0; }
 
-  void init() override { add(Kind::sphere, Kind::sphere, &sphere_sphere); }
+  void init() override {
+    add(Kind::sphere, Kind::sphere, &sphere_sphere);
+    add(Kind::triangle, Kind::line, &triangle_line);
+    add(Kind::tetrahedron, Kind::point, &tetrahedron_point);
+  }
 };
 
 }  // namespace
@@ -30,7 +52,7 @@ void register_discrete_intersection(Registry& r) {
   ComponentInfo info;
   info.name = "DiscreteIntersection";
   info.category = "Collision/Detection";
-  info.description = "exact intersection tests (spheres against spheres)";
+  info.description = "exact intersection tests: spheres, segments crossing triangles, points inside tetrahedra";
   info.create = creator<DiscreteIntersection>();
   r.add(std::move(info));
 }

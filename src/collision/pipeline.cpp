@@ -18,6 +18,8 @@ const char* element_name(CollisionModelBase::Kind k) {
       return "triangles";
     case CollisionModelBase::Kind::sphere:
       return "spheres";
+    case CollisionModelBase::Kind::tetrahedron:
+      return "tetrahedra";
   }
   return "elements";
 }

@@ -75,3 +75,74 @@ TEST(DiscreteSphereSphere, ExplicitDistancesAddToTheRadii) {
   EXPECT_DOUBLE_EQ(out.back().value, 0.25);
   EXPECT_EQ(discrete::sphere_sphere(sphere({0, 0, 0}, 1), sphere({2.5001, 0, 0}, 1), 0.5, 0.25, out), 0);
 }
+
+namespace sinew {
+namespace {
+
+using test::info;
+using test::vec_near;
+
+// Segment from (0.25, 0.25, 1) to (0.25, 0.25, −1) crosses the unit right
+// triangle in the z = 0 plane at (0.25, 0.25, 0): both points there, the
+// triangle's normal, value 0, id = the line's index.
+TEST(DiscreteTriangleLine, SegmentCrossingTheTriangle) {
+  const TriangleElem t = test::triangle(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), 0, info(2));
+  const LineElem l = test::line(Vec3(0.25, 0.25, 1), Vec3(0.25, 0.25, -1), info(7));
+  std::vector<DetectionOutput> out;
+  ASSERT_EQ(discrete::triangle_line(t, l, out), 1);
+  EXPECT_TRUE(vec_near(out[0].point1, Vec3(0.25, 0.25, 0)));
+  EXPECT_TRUE(vec_near(out[0].point2, Vec3(0.25, 0.25, 0)));
+  EXPECT_TRUE(vec_near(out[0].normal, Vec3(0, 0, 1)));
+  EXPECT_EQ(out[0].value, 0.0);
+  EXPECT_EQ(out[0].id, 7);
+  EXPECT_EQ(out[0].elem1, 2u);
+  EXPECT_EQ(out[0].elem2, 7u);
+}
+
+TEST(DiscreteTriangleLine, MissesOutsideTheTriangleTheSegmentOrWhenParallel) {
+  const TriangleElem t = test::triangle(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0));
+  std::vector<DetectionOutput> out;
+  EXPECT_EQ(discrete::triangle_line(t, test::line(Vec3(0.6, 0.6, 1), Vec3(0.6, 0.6, -1)), out), 0);  // u+v > 1
+  EXPECT_EQ(discrete::triangle_line(t, test::line(Vec3(0.2, 0.2, 2), Vec3(0.2, 0.2, 1)), out), 0);   // above
+  EXPECT_EQ(discrete::triangle_line(t, test::line(Vec3(0.1, 0.1, 0), Vec3(0.3, 0.1, 0)), out), 0);  // in plane
+  EXPECT_TRUE(out.empty());
+}
+
+TetrahedronElem unit_tetra() {
+  TetrahedronElem t;
+  t.p = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+  t.v = {0, 1, 2, 3};
+  t.info = info(3);
+  return t;
+}
+
+// Point (0.1, 0.1, 0.2) inside the unit tetrahedron with normal (0, 0, −1):
+// it leaves along −n = +z and meets the face x + y + z = 1 after l = 0.6.
+TEST(DiscreteTetrahedronPoint, PointInsideLeavesAlongItsNormal) {
+  PointElem p = test::point(Vec3(0.1, 0.1, 0.2), info(9));
+  p.n = Vec3(0, 0, -1);
+  std::vector<DetectionOutput> out;
+  ASSERT_EQ(discrete::tetrahedron_point(unit_tetra(), p, false, out), 1);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(vec_near(out[0].point1, Vec3(0.1, 0.1, 0.8)));
+  EXPECT_TRUE(vec_near(out[0].point2, Vec3(0.1, 0.1, 0.2)));
+  EXPECT_TRUE(vec_near(out[0].normal, Vec3(0, 0, 1)));
+  EXPECT_NEAR(out[0].value, -0.6, 1e-12);
+  EXPECT_EQ(out[0].id, 9);
+}
+
+TEST(DiscreteTetrahedronPoint, OutsideWithoutNormalOrOwnVertexGiveNothing) {
+  std::vector<DetectionOutput> out;
+  PointElem outside = test::point(Vec3(0.6, 0.6, 0.6), info(1));
+  outside.n = Vec3(0, 0, 1);
+  EXPECT_EQ(discrete::tetrahedron_point(unit_tetra(), outside, false, out), 1);  // handled, nothing appended
+  const PointElem no_normal = test::point(Vec3(0.1, 0.1, 0.1), info(1));
+  EXPECT_EQ(discrete::tetrahedron_point(unit_tetra(), no_normal, false, out), 0);
+  PointElem own_vertex = test::point(Vec3(0.1, 0.1, 0.1), info(2));  // index 2 is a vertex of the tetrahedron
+  own_vertex.n = Vec3(0, 0, 1);
+  EXPECT_EQ(discrete::tetrahedron_point(unit_tetra(), own_vertex, true, out), 0);
+  EXPECT_TRUE(out.empty());
+}
+
+}  // namespace
+}  // namespace sinew

@@ -284,3 +284,46 @@ TEST(CollisionPipeline, ModelUsesTheStateOfAnAncestor) {
 
 }  // namespace
 }  // namespace sinew
+
+namespace sinew {
+namespace {
+
+// DiscreteIntersection between a tetrahedron (simulated, contact points mapped
+// barycentrically into it) and an obstacle point inside it. The point (normal
+// n = +y from its triangle, computeNormals) is expelled along −n, through the
+// face met that way, so the tetrahedron is pushed along +n.
+TEST(CollisionPipeline, TetrahedronIsPushedOffAPointInsideIt) {
+  const std::string xml = R"(<Node name="root" dt="0.01" gravity="0 0 0">
+    <CollisionPipeline/><BruteForceBroadPhase/><BVHNarrowPhase name="narrow"/><DiscreteIntersection/>
+    <CollisionResponse response="PenalityContactForceField"/>
+    <Node name="tet">
+      <EulerImplicitSolver/><CGLinearSolver iterations="50" tolerance="1e-12" threshold="1e-14"/>
+      <MechanicalObject name="x" position="0 0 0  1 0 0  0 1 0  0 0 1"/>
+      <MeshTopology tetrahedra="0 1 2 3"/>
+      <UniformMass totalMass="1"/>
+      <TetrahedronCollisionModel name="tets"/>
+    </Node>
+    <Node name="obstacle">
+      <MechanicalObject position="0.1 0.1 0.2  5 0 0  5 0 1"/>
+      <MeshTopology triangles="0 2 1"/>
+      <PointCollisionModel computeNormals="1" simulated="0" moving="0"/>
+    </Node>
+  </Node>)";
+  scene::LoadedScene s = test::load(xml);
+  ASSERT_TRUE(s.root);
+  animate(*s.root);
+  std::size_t n = 0;
+  for (const PairOutputs& p : test::get<BVHNarrowPhase>(*s.root, "narrow")->outputs()) n += p.outputs.size();
+  EXPECT_EQ(n, 1u);
+  Node* tet = s.root->find_child_named("tet");
+  EXPECT_EQ(tet->interaction_force_fields.size(), 1u);  // in the body's node
+  EXPECT_EQ(tet->children().size(), 1u);                // the mapped contact points
+  for (int i = 0; i < 5; ++i) animate(*s.root);
+  const auto& x = test::get<MechanicalState>(*tet, "x")->read(kPosition);
+  EXPECT_GT(x[1], 0.0);  // vertex 0 (and the whole tetrahedron) moved along +y
+  EXPECT_GT(x[1], 20 * std::fabs(x[0]));  // along the point's normal, (0.1, 4.9, 0) unnormalised
+  EXPECT_EQ(x[2], 0.0);
+}
+
+}  // namespace
+}  // namespace sinew

@@ -38,6 +38,7 @@ struct ElemInfo {
 struct PointElem {
   Vec3 p;
   ElemInfo info;
+  Vec3 n = Vec3::Zero();  // vertex normal (PointCollisionModel computeNormals), else zero
 };
 
 struct LineElem {
@@ -51,6 +52,12 @@ struct TriangleElem {
   Vec3 normal;                  // stored unit normal (frozen for non-moving models)
   std::array<unsigned, 3> v{};  // their point indices
   int flags = 0;                // TriangleFlag bits
+  ElemInfo info;
+};
+
+struct TetrahedronElem {
+  std::array<Vec3, 4> p;        // vertices 0..3 (topology order)
+  std::array<unsigned, 4> v{};  // their point indices
   ElemInfo info;
 };
 

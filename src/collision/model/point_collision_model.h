@@ -25,7 +25,9 @@ class PointCollisionModel final : public CollisionModelBase {
   void compute_bounding_tree(int depth) override;
   bool element_can_collide(unsigned i, const CollisionModelBase& other, unsigned j) const override;
 
-  PointElem elem(unsigned i) const { return {x_[i], {i, x_.size(), contact_distance.value(), this}}; }
+  PointElem elem(unsigned i) const {
+    return {x_[i], {i, x_.size(), contact_distance.value(), this}, i < normals_.size() ? normals_[i] : Vec3::Zero()};
+  }
   const MeshTopologyBase* mesh() const { return topology.get(); }
   // LocalMinDistance's view of point i (triangles and edges around it), at
   // the positions of the current detection; built once per detection on first use.

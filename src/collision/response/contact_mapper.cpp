@@ -5,6 +5,7 @@
 
 #include "collision/model/line_collision_model.h"
 #include "collision/model/sphere_collision_model.h"
+#include "collision/model/tetrahedron_collision_model.h"
 #include "collision/model/triangle_collision_model.h"
 #include "core/node.h"
 #include "state/mechanical_object.h"
@@ -65,6 +66,20 @@ unsigned ContactMapper::add_point(const Vec3& P, unsigned elem, double& r) {
       p.n = 2;
       p.v = {e.v[0], e.v[1], 0, 0};
       p.w = {1.0 - fx, fx, 0, 0};
+      return mapping_->add(p);
+    }
+    case CollisionModelBase::Kind::tetrahedron: {
+      // Barycentric coordinates of P in the tetrahedron (SOFA's Tetrahedron::getBary).
+      const TetrahedronElem t = static_cast<TetrahedronCollisionModel*>(model_)->elem(elem);
+      Mat3 m;
+      m.col(0) = t.p[1] - t.p[0];
+      m.col(1) = t.p[2] - t.p[0];
+      m.col(2) = t.p[3] - t.p[0];
+      const Vec3 b = m.inverse() * (P - t.p[0]);
+      ContactMapping::Point p;
+      p.n = 4;
+      p.v = t.v;
+      p.w = {1.0 - b[0] - b[1] - b[2], b[0], b[1], b[2]};
       return mapping_->add(p);
     }
     case CollisionModelBase::Kind::triangle: {
