@@ -42,6 +42,21 @@ void CollisionModelBase::init() {
   if (!init_model()) set_state(ComponentState::invalid);
 }
 
+void CollisionModelBase::compute_continuous_bounding_tree(double dt, Motion motion, int depth) {
+  const auto x = positions();
+  x_end_.resize(x.size());
+  if (motion == Motion::free_motion) {
+    const auto xf = as_vec3(mstate_->read(kFreePosition));
+    for (std::size_t i = 0; i < x.size(); ++i) x_end_[i] = i < xf.size() ? xf[i] : x[i];
+  } else if (motion == Motion::inertia) {
+    const auto v = as_vec3(mstate_->read(kVelocity));
+    for (std::size_t i = 0; i < x.size(); ++i) x_end_[i] = x[i] + v[i] * dt;
+  } else {
+    std::copy(x.begin(), x.end(), x_end_.begin());
+  }
+  compute_bounding_tree(depth);
+}
+
 bool CollisionModelBase::is_active() const {
   if (!active.value() || state() != ComponentState::valid) return false;
   for (const Node* n = node(); n; n = n->parent())

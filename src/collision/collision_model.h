@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cmath>
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <vector>
@@ -58,6 +59,15 @@ class CollisionModelBase : public CollisionModel {
   virtual void compute_bounding_tree(int depth) = 0;
   const CubeTree& tree() const { return tree_; }
 
+  // Continuous detection (CCD, spec/interaction.md §2.8): the end positions of
+  // this step's motion are computed first (Inertia: x + v·dt; FreeMotion: the
+  // free positions), and each element's box then bounds its start and end.
+  enum class Motion { none, inertia, free_motion };
+  void compute_continuous_bounding_tree(double dt, Motion motion, int depth);
+  // End positions of the last continuous detection (empty otherwise), indexed like the state.
+  std::span<const Vec3> end_positions() const { return x_end_; }
+  void clear_end_positions() { x_end_.clear(); }
+
   // Model-level filter (§3.2), checked both ways by the broad phase.
   bool can_collide_with(const CollisionModelBase& other) const;
   // Element-level filter for pairs of models of the same node (self collision).
@@ -76,11 +86,20 @@ class CollisionModelBase : public CollisionModel {
  protected:
   // Finds the node's state (Vec3d required) and the topology; false after msg_error.
   virtual bool init_model() = 0;
+  // Continuous detection: widens `box` by the end positions of vertices `vs`, padded by `pad`.
+  void widen_to_end(Aabb& box, std::initializer_list<unsigned> vs, double pad) const {
+    if (x_end_.empty()) return;
+    for (unsigned v : vs) {
+      box.min = box.min.cwiseMin(x_end_[v] - Vec3::Constant(pad));
+      box.max = box.max.cwiseMax(x_end_[v] + Vec3::Constant(pad));
+    }
+  }
   // Positions of the state (Vec3 layout), read at every detection.
   std::span<const Vec3> positions() const { return as_vec3(mstate_->read(kPosition)); }
 
   CubeTree tree_;
   MechanicalState* mstate_ = nullptr;
+  std::vector<Vec3> x_end_;
 
  private:
   Kind kind_;

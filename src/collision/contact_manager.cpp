@@ -8,7 +8,8 @@ namespace sinew {
 namespace {
 // The responses Sinew implements, by the names scenes use.
 constexpr const char* kPenalty = "PenalityContactForceField";
-bool known_response(const std::string& n) { return n == kPenalty; }
+// "nullptr" is a deliberate "no contact" (SOFA skips the pair).
+bool known_response(const std::string& n) { return n == kPenalty || n == "nullptr"; }
 }  // namespace
 
 void CollisionResponse::init() {

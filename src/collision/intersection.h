@@ -27,6 +27,10 @@ class Intersection : public Component {
   virtual double alarm_distance() const = 0;
   virtual double contact_distance() const = 0;
 
+  // Continuous methods (CCD) bound each element's motion over the step.
+  virtual CollisionModelBase::Motion continuous_motion() const { return CollisionModelBase::Motion::none; }
+  virtual bool use_continuous() const { return false; }
+
   // Called at the start of every detection (refreshes what the tests read from the fields).
   virtual void begin_detection() {}
 

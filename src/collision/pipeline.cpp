@@ -39,7 +39,7 @@ std::string CollisionScope::missing() const {
   return m;
 }
 
-void CollisionScope::detect() {
+void CollisionScope::detect(double dt) {
   for (Component* c : std::initializer_list<Component*>{intersection, broad, narrow, manager})
     if (c->state() != ComponentState::valid) return;
   intersection->begin_detection();
@@ -47,7 +47,12 @@ void CollisionScope::detect() {
   broad->begin(*intersection);
   for (CollisionModelBase* m : models) {
     if (!m->is_active()) continue;
-    m->compute_bounding_tree(depth);
+    if (intersection->use_continuous()) {
+      m->compute_continuous_bounding_tree(dt, intersection->continuous_motion(), depth);
+    } else {
+      m->clear_end_positions();
+      m->compute_bounding_tree(depth);
+    }
     if (m->empty()) {
       m->warn_once(std::string("has no ") + element_name(m->kind()) +
                    " (its state or topology is empty): it collides with nothing");
@@ -144,8 +149,8 @@ class CollisionPipeline final : public CollisionPipelineBase {
     }
   }
 
-  void collide(double) override {
-    scope_.detect();
+  void collide(double dt) override {
+    scope_.detect(dt);
     scope_.respond(*node());
   }
 
@@ -179,9 +184,9 @@ class CompositeCollisionPipeline final : public CollisionPipelineBase {
     }
   }
 
-  void collide(double) override {
+  void collide(double dt) override {
     for (SubCollisionPipeline* p : sub_pipelines.get())
-      if (p->state() == ComponentState::valid) p->scope().detect();
+      if (p->state() == ComponentState::valid) p->scope().detect(dt);
     for (SubCollisionPipeline* p : sub_pipelines.get())
       if (p->state() == ComponentState::valid) p->scope().respond(*node());
   }

@@ -24,8 +24,9 @@ struct CollisionScope {
 
   // Empty when complete, else what is missing.
   std::string missing() const;
-  // Bounding trees, broad and narrow phases, contacts (§1.3 steps 1–4).
-  void detect();
+  // Bounding trees (continuous over dt for CCD methods), broad and narrow
+  // phases, contacts (§1.3 steps 1–4).
+  void detect(double dt);
   // Attaches each contact's response: obstacle–body contacts in the body's
   // node, body–body contacts in `root` (§1.3 step 5, §4.2).
   void respond(Node& root);

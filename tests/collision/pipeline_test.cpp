@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "badinput_helpers.h"
+#include "elem_builders.h"
 #include "collision/intersect/min_proximity_tests.h"
 #include "collision/intersect/new_proximity_tests.h"
 #include "collision/model/point_collision_model.h"
@@ -323,6 +324,105 @@ TEST(CollisionPipeline, TetrahedronIsPushedOffAPointInsideIt) {
   EXPECT_GT(x[1], 0.0);  // vertex 0 (and the whole tetrahedron) moved along +y
   EXPECT_GT(x[1], 20 * std::fabs(x[0]));  // along the point's normal, (0.1, 4.9, 0) unnormalised
   EXPECT_EQ(x[2], 0.0);
+}
+
+}  // namespace
+}  // namespace sinew
+
+namespace sinew {
+namespace {
+
+// RuleBasedContactManager: the first rule matching a pair (by model name,
+// group id or *) chooses the response; "nullptr" means no contact; $var$ is
+// replaced by the variable's value; "default" alone is no rule at all.
+std::size_t contacts_with_rules(const std::string& manager) {
+  const std::string xml = R"(<Node name="root" dt="0.01" gravity="0 -9.81 0">
+    <CollisionPipeline/><BruteForceBroadPhase/><BVHNarrowPhase/>
+    <MinProximityIntersection alarmDistance="0.5" contactDistance="0.2"/>
+    )" + manager + R"(
+    <Node name="ball">
+      <EulerImplicitSolver/><CGLinearSolver iterations="20" tolerance="1e-12" threshold="1e-14"/>
+      <MechanicalObject position="0.5 0.1 0.2"/><UniformMass totalMass="1"/>
+      <PointCollisionModel name="ballPoints" group="1"/>
+    </Node>
+    <Node name="floor">
+      <MechanicalObject position="-1 0 -1  2 0 -1  2 0 2  -1 0 2"/>
+      <MeshTopology triangles="0 2 1  0 3 2"/>
+      <TriangleCollisionModel name="floorTriangles" group="2" simulated="0" moving="0"/>
+    </Node>
+  </Node>)";
+  scene::LoadedScene s = test::load(xml);
+  if (!s.root) return 99;
+  animate(*s.root);
+  return s.root->find_child_named("ball")->interaction_force_fields.size();
+}
+
+TEST(CollisionPipeline, RuleBasedContactManagerChoosesTheResponseByRule) {
+  const char* base = R"(<RuleBasedContactManager response="PenalityContactForceField" )";
+  EXPECT_EQ(contacts_with_rules(std::string(base) + R"(rules="default"/>)"), 1u);
+  EXPECT_EQ(contacts_with_rules(std::string(base) + R"(rules="1 2 nullptr"/>)"), 0u);
+  EXPECT_EQ(contacts_with_rules(std::string(base) + R"(rules="floorTriangles * nullptr"/>)"), 0u);
+  EXPECT_EQ(contacts_with_rules(std::string(base) + R"(rules="3 * nullptr"/>)"), 1u);
+  EXPECT_EQ(contacts_with_rules(
+                R"(<RuleBasedContactManager response="nullptr" variables="kind" kind="PenalityContactForceField")"
+                R"( rules="ballPoints floorTriangles $kind$"/>)"),
+            1u);
+}
+
+}  // namespace
+}  // namespace sinew
+
+namespace sinew {
+namespace {
+
+// CCDTightInclusionIntersection: a point 0.5 above a floor moving at 100/s
+// downwards crosses it within the step (dt 0.01): with Inertia the root finder
+// sees it; the contact is stated at the start positions (value 0.5 − ms, the
+// floor's normal, the point's projection on the floor); the proximity method
+// (alarm 0.3) and CCD with no motion (None) see nothing at that distance.
+std::vector<DetectionOutput> ccd_outputs(const std::string& method) {
+  const std::string xml = R"(<Node name="root" dt="0.01" gravity="0 0 0">
+    <CollisionPipeline/><BruteForceBroadPhase/><BVHNarrowPhase name="narrow"/>
+    )" + method + R"(
+    <CollisionResponse response="PenalityContactForceField"/>
+    <Node name="ball">
+      <EulerImplicitSolver/><CGLinearSolver iterations="20" tolerance="1e-12" threshold="1e-14"/>
+      <MechanicalObject position="0.5 0.5 0.2" velocity="0 -100 0"/><UniformMass totalMass="1"/>
+      <PointCollisionModel/>
+    </Node>
+    <Node name="floor">
+      <MechanicalObject position="-1 0 -1  2 0 -1  2 0 2  -1 0 2"/>
+      <MeshTopology triangles="0 2 1  0 3 2"/>
+      <TriangleCollisionModel simulated="0" moving="0"/>
+    </Node>
+  </Node>)";
+  scene::LoadedScene s = test::load(xml);
+  std::vector<DetectionOutput> all;
+  if (!s.root) return all;
+  s.root->collision_pipeline->collide(0.01);
+  for (const PairOutputs& p : test::get<BVHNarrowPhase>(*s.root, "narrow")->outputs())
+    all.insert(all.end(), p.outputs.begin(), p.outputs.end());
+  return all;
+}
+
+TEST(CollisionPipeline, ContinuousDetectionSeesAPointCrossingATriangleWithinTheStep) {
+  const auto hit = ccd_outputs(
+      R"(<CCDTightInclusionIntersection continuousCollisionType="Inertia" alarmDistance="0" contactDistance="0.001"/>)");
+  ASSERT_EQ(hit.size(), 1u);
+  EXPECT_TRUE(test::vec_near(hit[0].normal, Vec3(0, 1, 0), 1e-12));
+  EXPECT_TRUE(test::vec_near(hit[0].point1, Vec3(0.5, 0, 0.2), 1e-9));
+  EXPECT_TRUE(test::vec_near(hit[0].point2, Vec3(0.5, 0.5, 0.2), 1e-12));
+  EXPECT_NEAR(hit[0].value, 0.5 - 0.001, 1e-9);
+  EXPECT_TRUE(ccd_outputs(R"(<CCDTightInclusionIntersection continuousCollisionType="None" contactDistance="0.001"/>)")
+                  .empty());
+  EXPECT_TRUE(ccd_outputs(R"(<MinProximityIntersection alarmDistance="0.3" contactDistance="0.2"/>)").empty());
+}
+
+TEST(CollisionPipeline, ContinuousDetectionRefusesAnUnknownType) {
+  test::TempDir dir;
+  const test::Outcome o = test::run_xml(dir, R"(<Node name="root">
+    <CCDTightInclusionIntersection continuousCollisionType="Sometimes"/></Node>)", 1);
+  EXPECT_TRUE(test::any_contains_all(o.errors, {"continuousCollisionType", "Sometimes"})) << o.all();
 }
 
 }  // namespace

@@ -48,6 +48,7 @@ void LineCollisionModel::compute_bounding_tree(int depth) {
     } else {
       box.min = x_[e[0]].cwiseMin(x_[e[1]]) - Vec3::Constant(d);
       box.max = x_[e[0]].cwiseMax(x_[e[1]]) + Vec3::Constant(d);
+      widen_to_end(box, {e[0], e[1]}, d);
       if (!finite_box(box))
         box = skipped_box(*this, "edge", i, "a non-finite position");
       else if (e[0] == e[1] || x_[e[0]] == x_[e[1]])

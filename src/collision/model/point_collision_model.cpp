@@ -23,6 +23,7 @@ void PointCollisionModel::compute_bounding_tree(int depth) {
     const double d = contact_distance.value();
     for (unsigned i = 0; i < x_.size(); ++i) {
       Aabb box{x_[i] - Vec3::Constant(d), x_[i] + Vec3::Constant(d)};
+      widen_to_end(box, {i}, d);
       if (!finite_box(box)) box = skipped_box(*this, "point", i, "a non-finite position");
       tree_.set_box(i, box);
     }

@@ -33,6 +33,7 @@ void SphereCollisionModel::compute_bounding_tree(int depth) {
   for (unsigned i = 0; i < x_.size(); ++i) {
     const double r = r_[i];
     Aabb box{x_[i] - Vec3::Constant(r + d), x_[i] + Vec3::Constant(r + d)};
+    widen_to_end(box, {i}, r + d);
     if (!(r > 0) || !std::isfinite(r))
       box = skipped_box(*this, "sphere", i, "a radius that is not a finite value > 0");
     else if (!finite_box(box))

@@ -42,6 +42,7 @@ void TetrahedronCollisionModel::compute_bounding_tree(int depth) {
     } else {
       box.min = x_[t[0]].cwiseMin(x_[t[1]]).cwiseMin(x_[t[2]]).cwiseMin(x_[t[3]]);
       box.max = x_[t[0]].cwiseMax(x_[t[1]]).cwiseMax(x_[t[2]]).cwiseMax(x_[t[3]]);
+      widen_to_end(box, {t[0], t[1], t[2], t[3]}, 0.0);
       const double vol6 = (x_[t[1]] - x_[t[0]]).cross(x_[t[2]] - x_[t[0]]).dot(x_[t[3]] - x_[t[0]]);
       if (!finite_box(box)) box = skipped_box(*this, "tetrahedron", i, "a non-finite position");
       else if (vol6 == 0.0) box = skipped_box(*this, "tetrahedron", i, "zero volume (degenerate)");

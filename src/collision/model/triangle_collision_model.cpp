@@ -85,6 +85,7 @@ void TriangleCollisionModel::compute_bounding_tree(int depth) {
     const Vec3 &p1 = x_[t[0]], &p2 = x_[t[1]], &p3 = x_[t[2]];
     box.min = p1.cwiseMin(p2).cwiseMin(p3) - Vec3::Constant(d);
     box.max = p1.cwiseMax(p2).cwiseMax(p3) + Vec3::Constant(d);
+    widen_to_end(box, {t[0], t[1], t[2]}, d);
     const Vec3 cross = (p2 - p1).cross(p3 - p1);
     if (normals) {
       normals_[i] = cross;
