@@ -68,6 +68,11 @@ class CollisionModelBase : public CollisionModel {
   std::span<const Vec3> end_positions() const { return x_end_; }
   void clear_end_positions() { x_end_.clear(); }
 
+  // Builds what element tests would otherwise build on first use (topology
+  // neighbourhoods; with `neighbourhoods`, LocalMinDistance's views), so that
+  // several tasks can test this model's elements at once.
+  virtual void prepare_for_sharing(bool neighbourhoods) const {}
+
   // Model-level filter (§3.2), checked both ways by the broad phase.
   bool can_collide_with(const CollisionModelBase& other) const;
   // Element-level filter for pairs of models of the same node (self collision).

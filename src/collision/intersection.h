@@ -30,6 +30,8 @@ class Intersection : public Component {
   // Continuous methods (CCD) bound each element's motion over the step.
   virtual CollisionModelBase::Motion continuous_motion() const { return CollisionModelBase::Motion::none; }
   virtual bool use_continuous() const { return false; }
+  // Whether the tests read the models' neighbourhood views (LocalMinDistance's filters).
+  virtual bool uses_neighbourhoods() const { return false; }
 
   // Called at the start of every detection (refreshes what the tests read from the fields).
   virtual void begin_detection() {}

@@ -32,6 +32,7 @@ class LocalMinDistance final : public ProximityIntersection {
                               "Collision"};
 
   const lmd::Params& params() const { return params_; }
+  bool uses_neighbourhoods() const override { return true; }
 
   void init() override {
     if (!check_distances()) return;

@@ -60,8 +60,7 @@ void CollisionScope::detect(double dt) {
     }
     broad->add_model(m);
   }
-  narrow->begin();
-  for (const ModelPair& p : broad->pairs()) narrow->add_pair(p, *intersection);
+  narrow->detect(broad->pairs(), *intersection);
   manager->create_contacts(narrow->outputs(), *intersection);
   // numberOfContacts: contacts (model pairs) touching each model.
   for (CollisionModelBase* m : models) {

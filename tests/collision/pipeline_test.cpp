@@ -427,3 +427,44 @@ TEST(CollisionPipeline, ContinuousDetectionRefusesAnUnknownType) {
 
 }  // namespace
 }  // namespace sinew
+
+namespace sinew {
+namespace {
+
+// ParallelBVHNarrowPhase: one task per model pair, outputs identical (values
+// and order) to the sequential narrow phase, for each intersection method.
+TEST(CollisionPipeline, ParallelNarrowPhaseGivesTheSequentialOutputs) {
+  std::mt19937 rng(11);
+  std::string bodies;
+  for (int b = 0; b < 6; ++b)
+    bodies += "<Node name=\"b" + std::to_string(b) + R"("><MechanicalObject position=")" + points_text(rng, 40, 0, 2) +
+              R"("/><PointCollisionModel/><SphereCollisionModel radius="0.05"/></Node>)";
+  auto outputs = [&](const char* narrow, const char* method) {
+    const std::string xml = std::string(R"(<Node name="root" dt="0.01">
+      <CollisionPipeline depth="4"/><BruteForceBroadPhase/><)") + narrow + R"( name="narrow"/>
+      <)" + method + R"( alarmDistance="0.2" contactDistance="0.05"/>
+      <CollisionResponse response="PenalityContactForceField"/>)" + bodies + "</Node>";
+    scene::LoadedScene s = test::load(xml);
+    std::vector<DetectionOutput> all;
+    if (!s.root) return all;
+    s.root->collision_pipeline->collide(0.01);
+    for (const PairOutputs& p : test::get<BVHNarrowPhase>(*s.root, "narrow")->outputs())
+      all.insert(all.end(), p.outputs.begin(), p.outputs.end());
+    return all;
+  };
+  for (const char* method : {"MinProximityIntersection", "NewProximityIntersection", "LocalMinDistance"}) {
+    const auto seq = outputs("BVHNarrowPhase", method), par = outputs("ParallelBVHNarrowPhase", method);
+    ASSERT_GT(seq.size(), 50u) << method;
+    ASSERT_EQ(seq.size(), par.size()) << method;
+    for (std::size_t i = 0; i < seq.size(); ++i) {
+      EXPECT_EQ(seq[i].elem1, par[i].elem1);
+      EXPECT_EQ(seq[i].elem2, par[i].elem2);
+      EXPECT_EQ(seq[i].id, par[i].id);
+      EXPECT_EQ(seq[i].value, par[i].value);
+      EXPECT_EQ(seq[i].normal, par[i].normal);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sinew

@@ -22,6 +22,10 @@ class LineCollisionModel final : public CollisionModelBase {
   std::size_t size() const override { return edges_.size(); }
   void compute_bounding_tree(int depth) override;
   bool element_can_collide(unsigned i, const CollisionModelBase& other, unsigned j) const override;
+  void prepare_for_sharing(bool) const override {
+    topology->edges_around_vertex();
+    topology->triangles_around_edge();
+  }
 
   LineElem elem(unsigned i) const {
     const Edge& e = edges_[i];

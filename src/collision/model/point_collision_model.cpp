@@ -84,6 +84,14 @@ void PointCollisionModel::build_lmd() const {
   lmd_other_start_[n] = static_cast<unsigned>(lmd_others_.size());
 }
 
+void PointCollisionModel::prepare_for_sharing(bool neighbourhoods) const {
+  if (const MeshTopologyBase* t = topology.get()) {
+    t->edges_around_vertex();
+    t->triangles_around_vertex();
+  }
+  if (neighbourhoods && lmd_stamp_ != stamp_) build_lmd();
+}
+
 local_min_distance::PointNeighbourhood PointCollisionModel::lmd_neighbourhood(unsigned i) const {
   if (lmd_stamp_ != stamp_) build_lmd();
   local_min_distance::PointNeighbourhood nb;

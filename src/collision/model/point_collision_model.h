@@ -24,6 +24,7 @@ class PointCollisionModel final : public CollisionModelBase {
   std::size_t size() const override { return x_.size(); }
   void compute_bounding_tree(int depth) override;
   bool element_can_collide(unsigned i, const CollisionModelBase& other, unsigned j) const override;
+  void prepare_for_sharing(bool neighbourhoods) const override;
 
   PointElem elem(unsigned i) const {
     return {x_[i], {i, x_.size(), contact_distance.value(), this}, i < normals_.size() ? normals_[i] : Vec3::Zero()};
