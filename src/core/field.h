@@ -56,6 +56,8 @@ class BaseField {
 
   bool is_set() const { return set_; }
   void mark_set() { set_ = true; }
+  // Back to "not given" (the value is kept): SOFA's Data::unset.
+  void unset() { set_ = false; }
   std::uint64_t version() const { return version_; }
   void touch() { changed(); }
 

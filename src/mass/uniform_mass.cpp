@@ -1,6 +1,7 @@
 #include "mass/uniform_mass.h"
 
 #include <Eigen/LU>
+#include <fstream>
 
 #include "core/node.h"
 #include "core/registry.h"
@@ -36,10 +37,17 @@ void UniformMass::init() {
   if (rigid && vm.size() >= 11)
     for (int k = 0; k < 9; ++k) inertia(k / 3, k % 3) = vm[2 + k];
 
-  if (!filename.value().empty()) {
-    msg_error("mass files (filename=) are not supported yet");
-    set_state(ComponentState::invalid);
-    return;
+  if (!filename.value().empty() && filename.value() != "unused") {
+    if (!rigid) {
+      msg_warning("filename is read for Rigid3d masses only: ignored for " + std::string(s.info().name));
+    } else {
+      double mass = vm.empty() ? 1.0 : vm[0];
+      if (!load_rigid_file(mass, inertia)) {
+        set_state(ComponentState::invalid);
+        return;
+      }
+      vm = vertex_mass.get();  // the file's vertexMass
+    }
   }
   if (total_mass.is_set() && total_mass.value() < 0) {
     msg_error("totalMass must not be negative");
@@ -66,6 +74,55 @@ void UniformMass::init() {
     msg_warning("the mass of each point is 0: dynamic solvers need a positive mass (singular system, division by zero)");
   inertia_mass_ = inertia * m_;
   inv_inertia_mass_ = inertia_mass_.inverse();
+}
+
+bool UniformMass::load_rigid_file(double& mass, Mat3& inertia) {
+  std::ifstream in(filename.value());
+  if (!in) {
+    msg_error("cannot open mass file '" + filename.value() + "'");
+    return false;
+  }
+  std::string line;
+  std::getline(in, line);  // header ("Xsp 3.0")
+  std::string cmd;
+  auto read = [&](double* v, int n, const char* what) {
+    for (int i = 0; i < n; ++i)
+      if (!(in >> v[i])) {
+        msg_error("mass file '" + filename.value() + "': cannot read the values of '" + what + "'");
+        return false;
+      }
+    return true;
+  };
+  double skip[4];
+  while (in >> cmd) {
+    if (cmd == "inrt") {
+      double v[9];
+      if (!read(v, 9, "inrt")) return false;
+      for (int k = 0; k < 9; ++k) inertia(k / 3, k % 3) = v[k];
+    } else if (cmd == "vertexMass") {
+      if (!read(&mass, 1, "vertexMass")) return false;
+      // The file's mass is the vertex mass; when the scene gave none, it also
+      // replaces totalMass (SOFA forces vertexMass set and unsets totalMass).
+      const bool given = vertex_mass.is_set();
+      std::vector<double> vm = vertex_mass.value();
+      if (vm.empty()) vm.push_back(mass);
+      else vm[0] = mass;
+      vertex_mass.set(vm);
+      if (!given) total_mass.unset();
+    } else if (cmd == "cntr" || cmd == "center" || cmd == "grav") {
+      if (!read(skip, 3, cmd.c_str())) return false;  // not used by the mass
+    } else if (cmd == "frme") {
+      if (!read(skip, 4, "frme")) return false;
+    } else if (cmd == "volm" || cmd == "visc" || cmd == "stck" || cmd == "step" || cmd == "prec") {
+      if (!read(skip, 1, cmd.c_str())) return false;
+    } else if (cmd[0] == '#') {
+      std::getline(in, line);
+    } else {
+      msg_error("mass file '" + filename.value() + "': unknown command '" + cmd + "'");
+      std::getline(in, line);
+    }
+  }
+  return true;
 }
 
 void UniformMass::add_force(const MechParams& p) {

@@ -26,6 +26,8 @@ class UniformMass final : public Mass {
   Field<bool> show_initial_center{this, "showInitialCenterOfGravity", false, "viewer", "Visualization"};
   Field<bool> show_x0{this, "showX0", false, "viewer", "Visualization"};
 
+  UniformMass() { filename.set_file(true); }
+
   void init() override;
   void add_force(const MechParams& p) override;
   void add_mdx(const MechParams& p, int res, int dx, double factor) override;
@@ -40,6 +42,9 @@ class UniformMass final : public Mass {
 
  private:
   double m_ = 1.0;                    // mass of each DoF
+  // Reads a .rigid file (SOFA's loadRigidMass): mass and inertia of each DoF; false after an error.
+  bool load_rigid_file(double& mass, Mat3& inertia);
+
   Mat3 inertia_mass_ = Mat3::Identity();   // Rigid3d: inertia·mass (world axes)
   Mat3 inv_inertia_mass_ = Mat3::Identity();
   std::vector<unsigned> active_;      // DoFs with mass

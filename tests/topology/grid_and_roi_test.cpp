@@ -296,3 +296,34 @@ TEST(BoxROI, IndicesFeedALinkedField) {
   consumer.set_parent(&roi.indices);
   EXPECT_EQ(consumer.get(), (Idx{0, 1, 2, 3, 4, 5, 6, 7, 8}));
 }
+
+namespace sinew {
+namespace {
+
+// CylinderGridTopology: a 3×3 square layer mapped onto a disc of radius 2
+// (corners (±2, ±2) become (±√2, ±√2), edge midpoints stay at distance 2),
+// two layers 4 apart along the axis; the grid's connectivity.
+TEST(CylinderGridTopology, PlacesTheGridInACylinder) {
+  scene::LoadedScene s = test::load(R"(<Node name="root">
+    <CylinderGridTopology name="cyl" n="3 3 2" radius="2" length="4" axis="0 0 1" center="1 0 0"/></Node>)");
+  ASSERT_TRUE(s.root);
+  auto* t = test::get<MeshTopologyBase>(*s.root, "cyl");
+  ASSERT_NE(t, nullptr);
+  ASSERT_EQ(t->nb_points(), 18u);
+  const double r2 = std::sqrt(2.0);
+  EXPECT_TRUE((t->point(0) - Vec3(1 - r2, -r2, 0)).norm() < 1e-12);  // corner (−2, −2)
+  EXPECT_TRUE((t->point(1) - Vec3(1, -2, 0)).norm() < 1e-12);        // edge midpoint (0, −2)
+  EXPECT_TRUE((t->point(4) - Vec3(1, 0, 0)).norm() < 1e-12);         // centre
+  EXPECT_TRUE((t->point(17) - Vec3(1 + r2, r2, 4)).norm() < 1e-12);  // last corner, second layer
+  EXPECT_EQ(t->hexahedra().size(), 4u);
+}
+
+TEST(CylinderGridTopology, OnePointAcrossIsAnError) {
+  scene::LoadedScene s = test::build(R"(<Node name="root"><CylinderGridTopology n="1 3 2"/></Node>)");
+  ASSERT_TRUE(s.root);
+  init_root(*s.root);
+  EXPECT_FALSE(test::messages(s.root->diagnostics(), Severity::error).empty());
+}
+
+}  // namespace
+}  // namespace sinew

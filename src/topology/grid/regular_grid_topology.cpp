@@ -121,7 +121,7 @@ void RegularGridTopology::generate() {
     pts.reserve(static_cast<std::size_t>(nx) * ny * nz);
     for (int k = 0; k < nz; ++k)
       for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) pts.push_back(origin_ + dx_ * i + dy_ * j + dz_ * k);
+        for (int i = 0; i < nx; ++i) pts.push_back(grid_point(i, j, k));
   }
   auto p = [&](int i, int j, int k) { return static_cast<unsigned>(point_index(i, j, k)); };
 

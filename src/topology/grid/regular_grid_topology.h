@@ -7,7 +7,7 @@
 
 namespace sinew {
 
-class RegularGridTopology final : public MeshContainer {
+class RegularGridTopology : public MeshContainer {
  public:
   RegularGridTopology();
 
@@ -39,6 +39,9 @@ class RegularGridTopology final : public MeshContainer {
 
  protected:
   void generate() override;
+  // Position of grid point (i, j, k): origin + i·dx + j·dy + k·dz here; other
+  // grids (CylinderGridTopology) place the same connectivity differently.
+  virtual Vec3 grid_point(int i, int j, int k) const { return origin_ + dx_ * i + dy_ * j + dz_ * k; }
 
  private:
   VecNi<3> dims_{2, 2, 2};
