@@ -78,6 +78,7 @@ void report_divergence(StepContext& s, Component& state, const char* what, long 
 void run_stage(StepContext& s, Stage stage) {
   switch (stage) {
     case Stage::begin_events: return stage_begin_events(s);
+    case Stage::free_motion: return stage_free_motion(s);
     case Stage::collision: return stage_collision(s);
     case Stage::interaction_forces: return stage_interaction_forces(s);
     case Stage::solve: return stage_solve(s);
@@ -142,8 +143,55 @@ void stage_solve(StepContext& s) {
   }
 }
 
-// Lagrangian constraints (spec/interaction.md §5) land here.
-void stage_constraint_correction(StepContext&) {}
+// Free motion (spec/interaction.md §5.1 step 5): every solver node integrates
+// its subtree from x, v into the free vectors (solver-less interaction force
+// fields are not evaluated), vf is projected and mapped down, then
+// xf = x + dt·vf on every state, mapped ones included (a first-order
+// extrapolation there, not the mapping of xf).
+void stage_free_motion(StepContext& s) {
+  MechanicalOps& ops = *s.view.whole;
+  // The free vectors start as copies of x and v, once (while they are empty).
+  for (MechanicalState* st : ops.all_states()) {
+    if (!st->has_vec(kFreePosition)) st->write(kFreePosition) = st->read(kPosition);
+    if (!st->has_vec(kFreeVelocity)) st->write(kFreeVelocity) = st->read(kVelocity);
+  }
+  auto free_solve = [&](Node& n) {
+    for (OdeSolver* solver : n.solvers)
+      if (solver->state() == ComponentState::valid) solver->solve(s.dt, kFreePosition, kFreeVelocity);
+  };
+  if (s.parallel_solvers) {
+    const auto& nodes = s.view.solver_nodes;
+    tbb::parallel_for(std::size_t{0}, nodes.size(), [&](std::size_t i) { free_solve(*nodes[i]); });
+  } else {
+    for (const GraphView::SolveItem& item : s.view.solve_order)
+      if (item.solves) free_solve(*item.node);
+  }
+  ops.project_response(kFreeVelocity);
+  ops.propagate_dx(kFreeVelocity);
+  if (s.constraint_order == ConstraintOrder::pos || s.constraint_order == ConstraintOrder::pos_and_vel)
+    for (MechanicalState* st : ops.all_states()) st->add_deriv_to_coord(kFreePosition, kPosition, kFreeVelocity, s.dt);
+}
+
+// Lagrangian constraints (spec/interaction.md §5.1 step 6): the constraint
+// solver corrects x and v of every body with a constraint correction (the
+// others keep their start-of-step state); the correction is then projected
+// and mapped down. Empty for DefaultAnimationLoop (no constraint solver).
+void stage_constraint_correction(StepContext& s) {
+  ConstraintSolver* solver = s.constraint_solver;
+  if (!solver || solver->state() != ComponentState::valid) return;
+  ConstraintParams p;
+  p.order = s.constraint_order;
+  p.dt = s.dt;
+  MechanicalOps& ops = *s.view.whole;
+  if (p.order == ConstraintOrder::vel) {
+    solver->solve_constraint(p, kVelocity, kVelocity);
+    for (MechanicalState* st : ops.independent_states()) st->add_deriv_to_coord(kPosition, kPosition, kVelocity, s.dt);
+  } else {
+    solver->solve_constraint(p, kPosition, kVelocity);
+  }
+  ops.project_response(solver->dx_vec());
+  ops.propagate_dx(solver->dx_vec());
+}
 
 void stage_project_and_propagate(StepContext& s) {
   MechanicalOps& ops = *s.view.whole;

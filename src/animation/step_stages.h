@@ -45,10 +45,14 @@ struct StepContext {
   double dt;
   double t0, t1;              // time at the start and the end of the step
   bool parallel_solvers = false;  // parallelODESolving
+  // FreeMotionAnimationLoop: the constraint solver and the order it solves for.
+  ConstraintSolver* constraint_solver = nullptr;
+  ConstraintOrder constraint_order = ConstraintOrder::pos_and_vel;
 };
 
 // One function per Stage, in its order.
 void stage_begin_events(StepContext& s);
+void stage_free_motion(StepContext& s);
 void stage_collision(StepContext& s);
 void stage_interaction_forces(StepContext& s);
 void stage_solve(StepContext& s);

@@ -1,16 +1,32 @@
 #include "collision/contact_manager.h"
 
+#include <map>
+
 #include "collision/response/penalty_contact.h"
 #include "core/registry.h"
 
 namespace sinew {
 
 namespace {
-// The responses Sinew implements, by the names scenes use.
 constexpr const char* kPenalty = "PenalityContactForceField";
+std::map<std::string, ContactFactory>& factories() {
+  static std::map<std::string, ContactFactory> f = {
+      {kPenalty, [](CollisionModelBase& a, CollisionModelBase& b, const Intersection& m) -> std::unique_ptr<Contact> {
+         return std::make_unique<PenaltyContact>(a, b, m);
+       }}};
+  return f;
+}
 // "nullptr" is a deliberate "no contact" (SOFA skips the pair).
-bool known_response(const std::string& n) { return n == kPenalty || n == "nullptr"; }
+bool known_response(const std::string& n) { return n == "nullptr" || factories().count(n) != 0; }
 }  // namespace
+
+void add_contact_response(const std::string& name, ContactFactory factory) { factories()[name] = std::move(factory); }
+
+std::string contact_response_names() {
+  std::string out;
+  for (const auto& [name, f] : factories()) out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
 
 void CollisionResponse::init() {
   const std::string& r = response.value();
@@ -19,7 +35,8 @@ void CollisionResponse::init() {
     return;
   }
   if (!known_response(r))
-    msg_error("response \"" + r + "\" is not available (available: " + kPenalty + "); pairs using it get no contact");
+    msg_error("response \"" + r + "\" is not available (available: " + contact_response_names() +
+              "); pairs using it get no contact");
 }
 
 std::string CollisionResponse::response_for(const CollisionModelBase& m1, const CollisionModelBase& m2) const {
@@ -38,11 +55,10 @@ std::unique_ptr<Contact> CollisionResponse::create(const std::string& name, Coll
       msg_error("no contact between " + m1.describe() + " and " + m2.describe() + ": " + why);
     return nullptr;
   };
-  std::unique_ptr<Contact> c;
-  if (name == kPenalty)
-    c = std::make_unique<PenaltyContact>(m1, m2, method);
-  else
-    return fail("response \"" + name + "\" is not available (available: " + kPenalty + ")");
+  auto factory = factories().find(name);
+  if (factory == factories().end())
+    return fail("response \"" + name + "\" is not available (available: " + contact_response_names() + ")");
+  std::unique_ptr<Contact> c = factory->second(m1, m2, method);
   // responseParams: name=value pairs separated by '&' (or '?').
   const std::string& params = response_params.value();
   std::size_t start = 0;

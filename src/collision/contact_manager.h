@@ -3,6 +3,7 @@
 // starts colliding, updated every step, removed when it stops.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,9 +14,18 @@
 
 namespace sinew {
 
+// Contact responses by the names scenes use ("PenalityContactForceField",
+// "FrictionContactConstraint", ...). Modules above collision (constraints)
+// add theirs when they register their components.
+using ContactFactory =
+    std::function<std::unique_ptr<Contact>(CollisionModelBase&, CollisionModelBase&, const Intersection&)>;
+void add_contact_response(const std::string& name, ContactFactory factory);
+// Names of the available responses, sorted, comma-separated (for messages).
+std::string contact_response_names();
+
 class CollisionResponse : public Component {
  public:
-  Field<std::string> response{this, "response", "", "contact response: PenalityContactForceField", "Collision"};
+  Field<std::string> response{this, "response", "", "contact response: PenalityContactForceField, FrictionContactConstraint, ...", "Collision"};
   Field<std::string> response_params{this, "responseParams", "",
                                      "parameters of the response, as name1=value1&name2=value2", "Collision"};
 

@@ -1,6 +1,7 @@
 #include "collision/pipeline.h"
 
 #include <algorithm>
+#include <type_traits>
 
 #include "core/node.h"
 #include "core/registry.h"
@@ -89,16 +90,23 @@ void CollisionScope::respond(Node& root) {
     if (c->model1().simulated.value() && c->model2().simulated.value()) attach(c, root);
   // SOFA re-attaches every response at the end of its node each step: keep
   // the responses of each node last, in contact order (no change, no cost).
-  for (Node* n : touched_) {
-    const auto& list = n->interaction_force_fields;
+  // Penalty responses are interaction force fields, constraint responses
+  // Lagrangian constraints: each kind is kept last in its own list.
+  auto keep_last = [&](Node* n, const auto& list) {
+    using Item = std::remove_pointer_t<typename std::decay_t<decltype(list)>::value_type>;
     wanted_.clear();
     for (Contact* c : contacts)
-      if (c->response() && c->response()->node() == n) wanted_.push_back(c->response());
+      if (c->response() && c->response()->node() == n && dynamic_cast<Item*>(c->response()))
+        wanted_.push_back(c->response());
     bool in_order = list.size() >= wanted_.size();
     for (std::size_t k = 0; in_order && k < wanted_.size(); ++k)
-      in_order = list[list.size() - wanted_.size() + k] == wanted_[k];
+      in_order = static_cast<Component*>(list[list.size() - wanted_.size() + k]) == wanted_[k];
     if (!in_order)
       for (Component* r : wanted_) n->move_to_end(r);
+  };
+  for (Node* n : touched_) {
+    keep_last(n, n->interaction_force_fields);
+    keep_last(n, n->lagrangian_constraints);
   }
 }
 

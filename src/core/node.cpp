@@ -103,6 +103,9 @@ Component* Node::add_object(std::unique_ptr<Component> c, bool at_front) {
   if (auto* s = dynamic_cast<OdeSolver*>(raw)) solvers.push_back(s);
   if (auto* s = dynamic_cast<LinearSolver*>(raw)) linear_solvers.push_back(s);
   if (auto* co = dynamic_cast<ContextObject*>(raw)) context_objects.push_back(co);
+  if (auto* lc = dynamic_cast<LagrangianConstraint*>(raw)) lagrangian_constraints.push_back(lc);
+  if (auto* cc = dynamic_cast<ConstraintCorrection*>(raw)) constraint_corrections.push_back(cc);
+  if (auto* cs = dynamic_cast<ConstraintSolver*>(raw)) constraint_solvers.push_back(cs);
   return raw;
 }
 
@@ -121,6 +124,9 @@ void Node::unfile(Component* c) {
   drop(solvers);
   drop(linear_solvers);
   drop(context_objects);
+  drop(lagrangian_constraints);
+  drop(constraint_corrections);
+  drop(constraint_solvers);
 }
 
 namespace {
@@ -196,6 +202,7 @@ void Node::move_to_end(Component* c) {
   to_end(force_fields);
   to_end(interaction_force_fields);
   to_end(projective_constraints);
+  to_end(lagrangian_constraints);
   if (moved) bump_structure_version();
 }
 

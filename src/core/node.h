@@ -13,6 +13,7 @@
 
 #include "core/base.h"
 #include "core/field.h"
+#include "core/constraint_problem.h"
 #include "core/profile.h"
 #include "core/roles.h"
 #include "core/step_observer.h"
@@ -82,6 +83,9 @@ class Node final : public Base {
   std::vector<OdeSolver*> solvers;
   std::vector<LinearSolver*> linear_solvers;
   std::vector<ContextObject*> context_objects;
+  std::vector<LagrangianConstraint*> lagrangian_constraints;  // constraintSet
+  std::vector<ConstraintCorrection*> constraint_corrections;
+  std::vector<ConstraintSolver*> constraint_solvers;
 
   // ------------------------------------------------------------ look-ups (§3.3)
   // Node slot, else the first state (object order) of the nearest ancestor that has one.

@@ -5,6 +5,7 @@ namespace sinew {
 const char* stage_name(Stage s) {
   switch (s) {
     case Stage::begin_events: return "begin events";
+    case Stage::free_motion: return "free motion";
     case Stage::collision: return "collision";
     case Stage::interaction_forces: return "interaction forces";
     case Stage::solve: return "solve";

@@ -19,6 +19,7 @@ namespace sinew {
 // (spec/framework.md §4.1). The free-motion loop reuses the same stages.
 enum class Stage : int {
   begin_events,           // AnimateBeginEvent; controllers and devices apply inputs
+  free_motion,            // FreeMotionAnimationLoop: solvers integrate into the free vectors
   collision,              // reset, broad phase, narrow phase, response (empty without collision models)
   interaction_forces,     // explicit interaction force fields above the solver nodes, into externalForce
   solve,                  // each solver node integrates its subtree

@@ -51,6 +51,51 @@ void ProjectiveConstraint::init() {
   }
 }
 
+// Rows of the output's constraint Jacobian mapped onto the inputs: each
+// non-zero component k of an entry on output DOF d is spread over the J
+// entries of scalar row d·w+k. J entries are grouped by output row with a
+// counting sort (stable: the mapping's own order within a row).
+bool Mapping::apply_jt_constraints() {
+  MechanicalState* out = output();
+  if (!out) return true;
+  ConstraintMatrix& c = out->constraint_jacobian();
+  if (c.empty()) return true;
+  c.compress();
+  constraint_j_.clear();
+  if (!jacobian(constraint_j_)) return false;
+  const int wo = out->info().deriv_width;
+  const std::size_t scalars = out->size() * static_cast<std::size_t>(wo);
+  constraint_row_start_.assign(scalars + 2, 0);
+  for (const JacobianEntry& e : constraint_j_)
+    if (e.row < scalars) ++constraint_row_start_[e.row + 2];
+  for (std::size_t r = 2; r < constraint_row_start_.size(); ++r) constraint_row_start_[r] += constraint_row_start_[r - 1];
+  constraint_sorted_.resize(constraint_j_.size());
+  for (const JacobianEntry& e : constraint_j_)
+    if (e.row < scalars) constraint_sorted_[constraint_row_start_[e.row + 1]++] = e;
+  // constraint_row_start_[r] .. [r+1] now spans row r.
+  const std::vector<MechanicalState*> ins = inputs();
+  const auto entries = c.entries();
+  for (const ConstraintMatrix::Row& row : c.rows()) {
+    for (int e = row.begin; e < row.end; ++e) {
+      const double* v = c.value(e);
+      for (int k = 0; k < wo; ++k) {
+        if (v[k] == 0.0) continue;
+        const std::size_t scalar = static_cast<std::size_t>(entries[e].dof) * wo + k;
+        if (scalar >= scalars) continue;
+        for (int j = constraint_row_start_[scalar]; j < constraint_row_start_[scalar + 1]; ++j) {
+          const JacobianEntry& je = constraint_sorted_[j];
+          if (je.input >= ins.size()) continue;
+          MechanicalState* in = ins[je.input];
+          const int wi = in->info().deriv_width;
+          in->constraint_jacobian().add_component(row.id, static_cast<int>(je.col / wi), static_cast<int>(je.col % wi),
+                                                  v[k] * je.value);
+        }
+      }
+    }
+  }
+  return true;
+}
+
 void Mapping::parse(AttributeMap& attrs, Diagnostics& diag) {
   if (const std::string* v = attrs.take("isMechanical")) {
     if (!map_forces.read(*v) && !v->empty())

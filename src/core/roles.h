@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/component.h"
+#include "core/constraint_matrix.h"
 #include "core/matrix_sink.h"
 #include "math/types.h"
 
@@ -75,6 +76,17 @@ class MechanicalState : public Component {
   virtual void end_integration() = 0;
   // Independent ⇔ its node has no mechanical mapping.
   bool independent() const;
+  // Whether vector `id` holds values yet (FreeMotionAnimationLoop initialises
+  // the free vectors from x and v only while they are empty).
+  virtual bool has_vec(int id) const = 0;
+
+  // Rows of the Lagrangian constraint Jacobian on this state (spec/interaction.md §5.2),
+  // rebuilt by the constraint solver every step.
+  ConstraintMatrix& constraint_jacobian() { return jacobian_; }
+  const ConstraintMatrix& constraint_jacobian() const { return jacobian_; }
+
+ private:
+  ConstraintMatrix jacobian_;
 };
 
 // The vector a mechanical operation uses on state `s` for `id`: solver
@@ -153,6 +165,10 @@ class ProjectiveConstraint : public Component {
   virtual void project_response(int dx) = 0;
   virtual void project_velocity(int v, double t) = 0;
   virtual void project_position(int x, double t) = 0;
+  // Removes the constraint response of the DOFs it projects from the rows of
+  // the constraint Jacobian (SOFA's projectJacobianMatrix); each constraint
+  // does what SOFA's does (some leave the rows alone).
+  virtual void project_jacobian(ConstraintMatrix& J) = 0;
   // Assembled systems: scalar indices (in the state) whose rows and columns are
   // cleared with 1 on the diagonal. Constraints that project differently
   // (line, plane) return false and are handled by the assembler otherwise.
@@ -205,6 +221,14 @@ class Mapping : public Component {
   // geometric stiffness as raw entries on the input states.
   virtual bool jacobian(std::vector<JacobianEntry>& out) { return false; }
   virtual bool build_geometric_stiffness(MatrixSink& K) { return true; }
+  // in.constraint_jacobian += rows of out.constraint_jacobian expressed on the
+  // inputs' DOFs (same row ids), SOFA's applyJT on MatrixDeriv. The default
+  // goes through jacobian(); false when this mapping cannot carry constraints.
+  virtual bool apply_jt_constraints();
+
+ private:
+  std::vector<JacobianEntry> constraint_j_, constraint_sorted_;  // scratch of apply_jt_constraints
+  std::vector<int> constraint_row_start_;
 };
 
 class OdeSolver : public Component {
@@ -213,6 +237,11 @@ class OdeSolver : public Component {
   ~OdeSolver() override;
   // Advances the subtree of the solver's node by dt, writing positions/velocities to x_result/v_result.
   virtual void solve(double dt, int x_result, int v_result) = 0;
+  // How much a solution dx of the solver's linear system moves positions and
+  // velocities (SOFA's getPositionIntegrationFactor / getVelocityIntegrationFactor),
+  // read by constraint corrections. Default: implicit Euler's dt and 1.
+  virtual double position_integration_factor(double dt) const { return dt; }
+  virtual double velocity_integration_factor(double dt) const { return 1.0; }
   // Advice closing the message of the check stage when this solver's states stop being finite.
   virtual const char* divergence_hint() const { return "reduce dt or check the material parameters"; }
 

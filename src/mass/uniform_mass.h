@@ -39,6 +39,8 @@ class UniformMass final : public Mass {
   std::optional<double> potential_energy() const override;
 
   double mass() const { return m_; }
+  // Rigid3d: (inertia · mass)⁻¹ of each DoF, world axes (SOFA's invInertiaMassMatrix).
+  const Mat3& inv_inertia_mass() const { return inv_inertia_mass_; }
 
  private:
   double m_ = 1.0;                    // mass of each DoF

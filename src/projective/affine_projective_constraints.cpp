@@ -47,6 +47,13 @@ class IndexedProjection : public ProjectiveConstraint {
     }
   }
   std::vector<unsigned> active_;
+  // SOFA's line and plane projections do not project constraint rows: they say so and keep them.
+  void rows_not_projected(const ConstraintMatrix& J) {
+    if (J.empty() || warned_rows_) return;
+    warned_rows_ = true;
+    msg_error("cannot project Lagrangian constraint rows (SOFA does not either); the rows on its DoFs are kept");
+  }
+  bool warned_rows_ = false;
 };
 
 class PointProjectiveConstraint final : public IndexedProjection {
@@ -63,6 +70,10 @@ class PointProjectiveConstraint final : public IndexedProjection {
     }
   }
   void project_velocity(int v, double) override { project_response(v); }
+  void project_jacobian(ConstraintMatrix& J) override {
+    if (fix_all.value()) return J.zero_all();
+    for (unsigned i : active_) J.zero_dof(static_cast<int>(i), 0, J.width());
+  }
   void project_position(int x, double) override {
     auto p = as_vec3(mstate->write(x));
     if (fix_all.value()) {
@@ -97,6 +108,7 @@ class LineProjectiveConstraint final : public IndexedProjection {
       for (int j = 0; j < 3; ++j) P_(i, j) = n[i] * n[j];
   }
   void project_response(int dx) override { project(dx, P_); }
+  void project_jacobian(ConstraintMatrix& J) override { rows_not_projected(J); }
   void project_velocity(int v, double) override { project(v, P_); }
   void project_position(int x, double) override {
     auto p = as_vec3(mstate->write(x));
@@ -125,6 +137,7 @@ class PlaneProjectiveConstraint final : public IndexedProjection {
       for (int j = 0; j < 3; ++j) P_(i, j) = (i == j ? 1.0 : 0.0) - n[i] * n[j];
   }
   void project_response(int dx) override { project(dx, P_); }
+  void project_jacobian(ConstraintMatrix& J) override { rows_not_projected(J); }
   void project_velocity(int v, double) override { project(v, P_); }
   void project_position(int x, double) override {
     auto p = as_vec3(mstate->write(x));

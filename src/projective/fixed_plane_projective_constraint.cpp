@@ -1,5 +1,6 @@
 #include "projective/fixed_plane_projective_constraint.h"
 
+#include <algorithm>
 #include <string>
 
 #include "core/registry.h"
@@ -57,6 +58,19 @@ void FixedPlaneProjectiveConstraint::project_response(int dx) {
   const std::size_t w = static_cast<std::size_t>(mstate->info().deriv_width);
   for (unsigned i : active_) {
     double* p = v.data() + i * w;
+    double s = 0.0;
+    for (int c = 0; c < projected_; ++c) s += p[c] * dir_[c];
+    for (int c = 0; c < projected_; ++c) p[c] -= dir_[c] * s;
+  }
+}
+
+// Entries on constrained DOFs lose their component along the direction (SOFA adds −dir·(val·dir)).
+void FixedPlaneProjectiveConstraint::project_jacobian(ConstraintMatrix& J) {
+  J.compress();
+  for (std::size_t e = 0; e < J.entries().size(); ++e) {
+    const int dof = J.entries()[e].dof;
+    if (std::find(active_.begin(), active_.end(), static_cast<unsigned>(dof)) == active_.end()) continue;
+    double* p = J.value(static_cast<int>(e));
     double s = 0.0;
     for (int c = 0; c < projected_; ++c) s += p[c] * dir_[c];
     for (int c = 0; c < projected_; ++c) p[c] -= dir_[c] * s;

@@ -35,6 +35,7 @@ class FixedPlaneProjectiveConstraint final : public ProjectiveConstraint {
 
   void init() override;
   void project_response(int dx) override;
+  void project_jacobian(ConstraintMatrix& J) override;
   void project_velocity(int, double) override {}
   void project_position(int, double) override {}
   bool dirichlet_indices(std::vector<std::size_t>& out) override;

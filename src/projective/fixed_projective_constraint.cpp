@@ -33,6 +33,12 @@ void FixedProjectiveConstraint::zero(int id) {
 
 void FixedProjectiveConstraint::project_response(int dx) { zero(dx); }
 
+// SOFA clears the fixed DOFs' columns (every row with fixAll).
+void FixedProjectiveConstraint::project_jacobian(ConstraintMatrix& J) {
+  if (fix_all.value()) return J.zero_all();
+  for (unsigned i : active_) J.zero_dof(static_cast<int>(i), 0, J.width());
+}
+
 void FixedProjectiveConstraint::project_velocity(int v, double) {
   if (activate_project_velocity.value()) zero(v);
 }

@@ -92,6 +92,15 @@ void LinearMovementProjectiveConstraint::project_response(int dx) {
   }
 }
 
+// Same DOFs as project_response: their columns are cleared while the movement runs.
+void LinearMovementProjectiveConstraint::project_jacobian(ConstraintMatrix& J) {
+  if (state() != ComponentState::valid) return;
+  find_key_times();
+  if (!active()) return;
+  for (unsigned i : indices.get())
+    if (i < mstate->size()) J.zero_dof(static_cast<int>(i), 0, J.width());
+}
+
 void LinearMovementProjectiveConstraint::project_velocity(int vid, double) {
   if (state() != ComponentState::valid) return;
   find_key_times();

@@ -44,6 +44,7 @@ class LinearMovementProjectiveConstraint final : public ProjectiveConstraint {
   void init() override;
   void reset() override;
   void project_response(int dx) override;
+  void project_jacobian(ConstraintMatrix& J) override;
   void project_velocity(int v, double t) override;
   void project_position(int x, double t) override;
   bool dirichlet_indices(std::vector<std::size_t>& out) override;

@@ -56,23 +56,25 @@ class LinearVelocityProjectiveConstraint final : public ProjectiveConstraint {
     prev_v_.assign(w_, 0.0);
     next_v_.assign(w_, 0.0);
     finished_ = false;
+    x0_.clear();
+    xp_.clear();
   }
 
+  // SOFA leaves the constraint rows alone for this constraint.
+  void project_jacobian(ConstraintMatrix&) override {}
+
   void project_response(int dx) override {
-    find_key_times();
-    if ((finished_ || continue_after_end.value()) && next_t_ != prev_t_) {
-      std::vector<double>& d = mstate->write(dx);
-      for (unsigned i : indices.get())
-        for (int c = 0; c < w_; ++c) d[i * w_ + c] = 0.0;
-    }
+    update_keys();
+    if (!active()) return;
+    std::vector<double>& d = mstate->write(dx);
+    for (unsigned i : indices.get())
+      for (int c = 0; c < w_; ++c) d[i * w_ + c] = 0.0;
   }
 
   void project_velocity(int vid, double) override {
-    find_key_times();
-    if (!((finished_ || continue_after_end.value()) && next_t_ != prev_t_)) return;
-    const double t = node()->time.value();
-    std::vector<double> v(w_);
-    for (int c = 0; c < w_; ++c) v[c] = (next_v_[c] - prev_v_[c]) * ((t - prev_t_) / (next_t_ - prev_t_)) + prev_v_[c];
+    update_keys();
+    if (!active()) return;
+    const std::vector<double> v = current_velocity();
     std::vector<double>& d = mstate->write(vid);
     const auto& coords = coordinates.get();
     for (unsigned i : indices.get()) {
@@ -92,12 +94,10 @@ class LinearVelocityProjectiveConstraint final : public ProjectiveConstraint {
       for (unsigned i : indices.get())
         for (int c = 0; c < cw_; ++c) x0_[i * cw_ + c] = xp_[i * cw_ + c] = x[i * cw_ + c];
     }
-    find_key_times();
-    if (!(finished_ || continue_after_end.value())) return;
-    const double t = node()->time.value(), dt_sim = node()->dt.value();
-    const double s = (t - prev_t_) / (next_t_ - prev_t_);
-    std::vector<double> m(w_);
-    for (int c = 0; c < w_; ++c) m[c] = (next_v_[c] - prev_v_[c]) * s + prev_v_[c];
+    update_keys();
+    if (!active()) return;
+    const double dt_sim = node()->dt.value();
+    const std::vector<double> m = current_velocity();
     const auto& coords = coordinates.get();
     for (unsigned i : indices.get()) {
       double* xi = &x[i * cw_];
@@ -119,24 +119,42 @@ class LinearVelocityProjectiveConstraint final : public ProjectiveConstraint {
   }
 
  private:
-  // Keys around the current time; `finished_` means a next key was found.
-  void find_key_times() {
+  // SOFA's findKeyTimes, called until it reports the end: past the last key
+  // the velocity stays at the last key's (kept only with continueAfterEnd);
+  // inside the keys, the two around the current time.
+  void update_keys() {
+    if (finished_) return;
     const double t = node()->time.value();
-    finished_ = false;
     const auto& kt = key_times.get();
     const auto& kv = velocities.get();
-    if (kt.empty() || t < kt.front() || t > kt.back()) return;
+    if (kt.empty()) return;
+    if (t > kt.back()) {
+      prev_v_ = next_v_;
+      next_t_ = std::numeric_limits<double>::infinity();
+      finished_ = true;
+      return;
+    }
+    if (t < kt.front()) return;
     next_t_ = prev_t_ = kt.front();
-    for (std::size_t k = 0; k < kt.size() && !finished_; ++k) {
+    for (std::size_t k = 0; k < kt.size(); ++k) {
       if (kt[k] <= t) {
         prev_t_ = kt[k];
         prev_v_.assign(kv.begin() + k * w_, kv.begin() + (k + 1) * w_);
       } else {
         next_t_ = kt[k];
         next_v_.assign(kv.begin() + k * w_, kv.begin() + (k + 1) * w_);
-        finished_ = true;
+        return;
       }
     }
+  }
+  bool active() const { return (!finished_ || continue_after_end.value()) && next_t_ != prev_t_; }
+  // Linear interpolation between the keys; the last key's velocity once finished.
+  std::vector<double> current_velocity() const {
+    if (finished_) return prev_v_;
+    const double t = node()->time.value();
+    std::vector<double> v(w_);
+    for (int c = 0; c < w_; ++c) v[c] = (next_v_[c] - prev_v_[c]) * ((t - prev_t_) / (next_t_ - prev_t_)) + prev_v_[c];
+    return v;
   }
 
   StateType type_;

@@ -36,6 +36,17 @@ class PartialFixedProjectiveConstraint final : public ProjectiveConstraint {
     keep_indices_in_state(*this, indices.get(), mstate->size(), active_);
   }
   void project_response(int dx) override { zero(dx); }
+  // SOFA zeroes the fixed directions of the listed DOFs in every row.
+  void project_jacobian(ConstraintMatrix& J) override {
+    auto clear = [&](int i) {
+      for (int c = 0; c < static_cast<int>(mask_.size()); ++c)
+        if (mask_[c]) J.zero_dof(i, c, 1);
+    };
+    if (fix_all.value())
+      for (std::size_t i = 0; i < mstate->size(); ++i) clear(static_cast<int>(i));
+    else
+      for (unsigned i : active_) clear(static_cast<int>(i));
+  }
   void project_velocity(int v, double) override {
     if (project_velocity_flag.value() || activate_project_velocity.value()) zero(v);
   }

@@ -68,6 +68,12 @@ Field<FlatVec>* MechanicalObject::standard(int id) {
   }
 }
 
+bool MechanicalObject::has_vec(int id) const {
+  if (Field<FlatVec>* f = const_cast<MechanicalObject*>(this)->standard(id)) return !f->value().data.empty();
+  auto it = dynamic_.find(id);
+  return it != dynamic_.end() && !it->second.empty();
+}
+
 void MechanicalObject::resize_vec(std::vector<double>& v, bool coord, std::size_t n) const {
   const auto& inf = info();
   const int w = coord ? inf.coord_width : inf.deriv_width;

@@ -48,6 +48,7 @@ class MechanicalObject final : public MechanicalState {
   std::size_t size() const override { return size_; }
   void resize(std::size_t n) override;
   const std::vector<double>& read(int id) const override;
+  bool has_vec(int id) const override;
   std::vector<double>& write(int id) override;
   void touch(int id) override;
   void add_deriv_to_coord(int x_out, int x_in, int v, double h) override;

@@ -21,6 +21,7 @@ class TestState final : public MechanicalState {
   StateType state_type() const override { return StateType::vec3; }
   std::size_t size() const override { return 0; }
   void resize(std::size_t) override {}
+  bool has_vec(int) const override { return false; }
   const std::vector<double>& read(int) const override { return data_; }
   std::vector<double>& write(int) override { return data_; }
   void touch(int) override {}
@@ -79,6 +80,7 @@ class TestLoop final : public AnimationLoop {
 class TestConstraint final : public ProjectiveConstraint {
  public:
   void project_response(int) override {}
+  void project_jacobian(ConstraintMatrix&) override {}
   void project_velocity(int, double) override {}
   void project_position(int, double) override {}
 };

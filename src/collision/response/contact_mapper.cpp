@@ -150,6 +150,12 @@ void ContactMapper::update() {
   mapping_->apply_j(kVelocity, kVelocity);
 }
 
+void ContactMapper::update_xfree() {
+  if (identity() || !mapping_) return;
+  mapping_->apply(kFreePosition);
+  mapping_->apply_j(kFreeVelocity, kFreeVelocity);
+}
+
 void ContactMapper::cleanup() {
   if (!child_) return;
   if (Node* parent = child_->parent()) parent->remove_child(child_);

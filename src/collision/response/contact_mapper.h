@@ -29,6 +29,8 @@ class ContactMapper {
   unsigned add_point(const Vec3& P, unsigned elem, double& r);
   // Maps positions and velocities of the contact points from the model's state.
   void update();
+  // Same for the free positions and velocities (constraint responses, SOFA's updateXfree).
+  void update_xfree();
   // Removes the mapped child node (the contact is gone).
   void cleanup();
 

@@ -20,6 +20,9 @@ class EulerExplicitSolver final : public OdeSolver {
 
   void init() override;
   void solve(double dt, int x_result, int v_result) override;
+  // SOFA's solution factors {symplectic·dt², dt, 1}: position, velocity.
+  double position_integration_factor(double dt) const override { return symplectic.value() ? dt * dt : 0.0; }
+  double velocity_integration_factor(double dt) const override { return dt; }
 
  private:
   int acc_ = -1;

@@ -14,6 +14,9 @@ class RungeKutta2Solver final : public OdeSolver {
  public:
   void init() override;
   void solve(double dt, int x_result, int v_result) override;
+  // SOFA's solution factors {0, dt/2, 1}: position, velocity.
+  double position_integration_factor(double) const override { return 0.0; }
+  double velocity_integration_factor(double dt) const override { return dt / 2; }
 
  private:
   // a = M⁻¹ f(X, V) at time t, with X and V projected in place first (SOFA's computeAcc).

@@ -1,0 +1,185 @@
+// LinearSolverConstraintCorrection (spec/interaction.md §5.3): the exact
+// compliance J·A⁻¹·Jᵀ of a body, A being the system matrix its linear solver
+// assembled and factorised during the free motion.
+//
+// Compliance: W += factor·J·A⁻¹·Jᵀ (factor: the ODE solver's position factor,
+// dt for implicit Euler), plus regularizationTerm on rows touching the state.
+// Correction: A·dx = Jᵀλ with the same factorisation, x = xf + pf·dx,
+// v = vf + vf·dx (the ODE solver's position and velocity factors).
+#include <algorithm>
+#include <limits>
+#include <string>
+
+#include <Eigen/SparseCore>
+
+#include "core/constraint_problem.h"
+#include "core/node.h"
+#include "core/registry.h"
+#include "math/rigid.h"
+#include "solver/linear/matrix_linear_solver.h"
+
+namespace sinew {
+
+namespace {
+
+class LinearSolverConstraintCorrection final : public ConstraintCorrection {
+ public:
+  Field<bool> wire_optimization{this, "wire_optimization", false,
+                                "order the rows of this body by their smallest DoF (wire-like bodies)", "Correction"};
+  Field<double> regularization_term{this, "regularizationTerm", 0.0,
+                                    "added to the diagonal of W on the rows touching this body", "Correction"};
+  Link<LinearSolver> linear_solver{this, "linearSolver", "linear solver whose factorisation gives A⁻¹"};
+  Link<OdeSolver> ode_solver{this, "ODESolver", "ODE solver giving the integration factors"};
+
+  void init() override {
+    ConstraintCorrection::init();
+    if (state() != ComponentState::valid) return;
+    if (!linear_solver) linear_solver.set(node()->find_local<LinearSolver>());
+    if (!linear_solver) {
+      msg_error("no linear solver linked (linearSolver) nor in this node");
+      set_state(ComponentState::invalid);
+      return;
+    }
+    solver_ = dynamic_cast<MatrixLinearSolver*>(linear_solver.get());
+    if (!solver_) {
+      msg_error(linear_solver->describe() +
+                " does not assemble its matrix (SOFA refuses GraphScattered solvers here): link a direct solver "
+                "such as SparseLDLSolver");
+      set_state(ComponentState::invalid);
+      return;
+    }
+    if (!ode_solver) ode_solver.set(node()->find_local<OdeSolver>());
+    if (!ode_solver) ode_solver.set(node()->root()->find_down<OdeSolver>());
+    if (!ode_solver) {
+      msg_error("no ODE solver linked (ODESolver), in this node or anywhere from the root");
+      set_state(ComponentState::invalid);
+      return;
+    }
+    if (wire_optimization.value())
+      msg_warning("wire_optimization only reorders rows for the unbuilt solvers; it has no effect with built ones");
+  }
+
+  void add_compliance(const ConstraintParams& p, ConstraintProblem& problem) override {
+    if (!locate()) return;
+    const ConstraintMatrix& J = mstate->constraint_jacobian();
+    if (J.empty()) return;
+    build_jacobian(J, problem.n);
+    const double factor = p.order == ConstraintOrder::pos || p.order == ConstraintOrder::pos_and_vel
+                              ? ode_solver->position_integration_factor(p.dt)
+                              : ode_solver->velocity_integration_factor(p.dt);
+    w_.setZero(problem.n, problem.n);
+    solver_->add_jminvjt(w_, j_, factor);
+    for (int r = 0; r < problem.n; ++r)
+      for (int c = 0; c < problem.n; ++c) problem.w(r, c) += w_(r, c);
+    const double reg = regularization_term.value();
+    if (reg > std::numeric_limits<double>::epsilon())
+      for (const ConstraintMatrix::Row& row : J.rows())
+        if (row.end > row.begin) problem.w(row.id, row.id) += reg;
+  }
+
+  void apply_correction(const ConstraintParams& p, const std::vector<double>& lambda, int x_out, int v_out,
+                        int dx_out) override {
+    if (!locate()) return;
+    const int w = mstate->info().deriv_width;
+    const std::size_t n = mstate->size();
+    // rhs = Jᵀλ in the solver's global layout (zero elsewhere), then A·dx = rhs.
+    rhs_.setZero(static_cast<Eigen::Index>(solver_->system()->size()));
+    const ConstraintMatrix& J = mstate->constraint_jacobian();
+    for (const ConstraintMatrix::Row& r : J.rows()) {
+      const double l = lambda[r.id];
+      if (l == 0.0) continue;
+      for (int e = r.begin; e < r.end; ++e) {
+        const double* v = J.value(e);
+        const std::size_t base = offset_ + static_cast<std::size_t>(J.entries()[e].dof) * w;
+        for (int c = 0; c < w; ++c) rhs_[base + c] += v[c] * l;
+      }
+    }
+    sol_.setZero(rhs_.size());
+    solver_->solve_global(sol_, rhs_);
+    const double pf = ode_solver->position_integration_factor(p.dt);
+    const double vf = ode_solver->velocity_integration_factor(p.dt);
+    std::vector<double>& dx = mstate->write(dx_out);
+    dx.resize(n * w);
+    if (p.order == ConstraintOrder::vel) {
+      const std::vector<double>& vfree = mstate->read(p.v);
+      std::vector<double>& v = mstate->write(v_out);
+      for (std::size_t k = 0; k < n * w; ++k) {
+        dx[k] = sol_[offset_ + k] * vf;
+        v[k] = vfree[k] + dx[k];
+      }
+      return;
+    }
+    for (std::size_t k = 0; k < n * w; ++k) dx[k] = sol_[offset_ + k] * pf;
+    const std::vector<double>& xfree = mstate->read(p.x);
+    std::vector<double>& x = mstate->write(x_out);
+    if (mstate->state_type() == StateType::rigid3) {
+      for (std::size_t i = 0; i < n; ++i) rigid3_add_deriv(&xfree[i * 7], &dx[i * 6], 1.0, &x[i * 7]);
+    } else {
+      for (std::size_t k = 0; k < n * w; ++k) x[k] = xfree[k] + dx[k];
+    }
+    if (p.order == ConstraintOrder::pos_and_vel) {
+      const std::vector<double>& vfree = mstate->read(p.v);
+      std::vector<double>& v = mstate->write(v_out);
+      for (std::size_t k = 0; k < n * w; ++k) v[k] = vfree[k] + sol_[offset_ + k] * vf;
+    }
+  }
+
+ private:
+  // Offset of this state in the solver's system; false (with one error) when
+  // the system was never assembled or does not hold this state.
+  bool locate() {
+    MatrixLinearSystem* sys = solver_ ? solver_->system() : nullptr;
+    if (sys && sys->assembled()) {
+      for (const SystemAssembler::StateBlock& b : sys->assembler().layout())
+        if (b.state == mstate.get()) {
+          offset_ = b.offset;
+          return true;
+        }
+    }
+    if (!warned_) {
+      warned_ = true;
+      msg_error("the system of " + linear_solver->describe() + " does not hold " + mstate->describe() +
+                " (was it assembled during the free motion?): no constraint correction for this body");
+    }
+    return false;
+  }
+
+  // J as a sparse matrix over the solver's global unknowns.
+  void build_jacobian(const ConstraintMatrix& J, int rows) {
+    const int w = mstate->info().deriv_width;
+    triplets_.clear();
+    for (const ConstraintMatrix::Row& r : J.rows())
+      for (int e = r.begin; e < r.end; ++e) {
+        const double* v = J.value(e);
+        const std::size_t base = offset_ + static_cast<std::size_t>(J.entries()[e].dof) * w;
+        for (int c = 0; c < w; ++c)
+          if (v[c] != 0.0) triplets_.emplace_back(r.id, static_cast<int>(base + c), v[c]);
+      }
+    j_.resize(rows, static_cast<Eigen::Index>(solver_->system()->size()));
+    j_.setFromTriplets(triplets_.begin(), triplets_.end());
+  }
+
+  MatrixLinearSolver* solver_ = nullptr;
+  std::size_t offset_ = 0;
+  bool warned_ = false;
+  std::vector<Eigen::Triplet<double>> triplets_;
+  Eigen::SparseMatrix<double, Eigen::RowMajor, int> j_;
+  Eigen::MatrixXd w_;
+  Eigen::VectorXd rhs_, sol_;
+};
+
+}  // namespace
+
+void register_linear_solver_constraint_correction(Registry& r) {
+  ComponentInfo info;
+  info.name = "LinearSolverConstraintCorrection";
+  info.category = "Constraint/Lagrangian/Correction";
+  info.description = "exact compliance J·A⁻¹·Jᵀ from the body's factorised system matrix";
+  info.templates = {"Vec1d", "Vec2d", "Vec3d", "Rigid3d"};
+  info.default_template = "Vec3d";
+  info.requirement = Requirement::state;
+  info.create = creator<LinearSolverConstraintCorrection>();
+  r.add(std::move(info));
+}
+
+}  // namespace sinew

@@ -1,0 +1,105 @@
+#include "constraint/solver/generic_constraint_solver.h"
+
+#include <cmath>
+#include <string>
+
+#include "constraint/solver/resolution.h"
+#include "core/node.h"
+#include "core/value_text.h"
+
+namespace sinew {
+
+void GenericConstraintSolver::init() {
+  dx_ = MechanicalOps::alloc_vec();
+  if (max_iterations.value() < 0) {
+    msg_error("maxIterations must be >= 0");
+    set_state(ComponentState::invalid);
+  }
+}
+
+double GenericConstraintSolver::effective_tolerance() const {
+  double tol = tolerance.value();
+  if (scale_tolerance.value() && !all_verified.value()) tol *= problem_.n;
+  return tol;
+}
+
+void GenericConstraintSolver::build_system(const ConstraintParams& p) {
+  add_compliances(scope_, p, problem_, regularization_term.value());
+}
+
+void GenericConstraintSolver::gauss_seidel_sweep(bool measure_error, double tol, double& error, bool& verified) {
+  ConstraintProblem& P = problem_;
+  double* f = P.f.data();
+  double* d = P.d.data();
+  const int n = P.n;
+  for (const ConstraintBlock& b : P.blocks) {
+    const int j = b.first, nb = b.rows;
+    f_old_.assign(f + j, f + j + nb);
+    // d = dfree + W·f on the block's rows (full rows, current forces).
+    for (int l = 0; l < nb; ++l) {
+      const double* wr = &P.W[static_cast<std::size_t>(j + l) * n];
+      double s = P.dfree[j + l];
+      for (int k = 0; k < n; ++k) s += wr[k] * f[k];
+      d[j + l] = s;
+    }
+    resolution_solve(b, P, d, f);
+    if (!measure_error) continue;
+    double block_error = 0.0;
+    if (nb > 1) {
+      for (int l = 0; l < nb; ++l) {
+        double line = 0.0;
+        for (int m = 0; m < nb; ++m) {
+          const double e = P.w(j + l, j + m) * (f[j + m] - f_old_[m]);
+          line += e * e;
+        }
+        line = std::sqrt(line);
+        if (line > tol) verified = false;
+        block_error += line;
+      }
+    } else {
+      block_error = std::fabs(P.w(j, j) * (f[j] - f_old_[0]));
+      if (block_error > tol) verified = false;
+    }
+    if (b.tolerance != 0.0) {
+      if (block_error > b.tolerance) verified = false;
+      block_error *= tol / b.tolerance;
+    }
+    error += block_error;
+  }
+}
+
+void GenericConstraintSolver::solve_constraint(const ConstraintParams& p, int x_out, int v_out) {
+  sync_constraint_scope(*node(), scope_);
+  // prepareStates: the correction vector starts at zero on every state.
+  for (MechanicalState* st : scope_.ops->all_states()) {
+    std::vector<double>& dx = st->write(vec_for(*st, dx_, kDx));
+    std::fill(dx.begin(), dx.end(), 0.0);
+  }
+  const int n = build_constraint_jacobian(scope_, p, /*project=*/true);
+  if (!fill_constraint_problem(scope_, p, n, problem_, *this)) return;
+  build_system(p);
+  iterations_ = 0;
+  error_ = 0.0;
+  converged_ = true;
+  solve_system();
+  current_error.set(error_);
+  current_iterations.set(iterations_);
+  current_num_constraints.set(problem_.n);
+  current_num_constraint_groups.set(static_cast<int>(problem_.blocks.size()));
+  if (compute_constraint_forces.value()) constraint_forces.set(problem_.f);
+  bool finite = true;
+  for (double v : problem_.f) finite = finite && std::isfinite(v);
+  if (!finite) {
+    msg_error("the constraint forces are not finite (" + std::to_string(problem_.n) +
+              " rows): no correction applied this step; check the compliance of the constraint corrections");
+    std::fill(problem_.f.begin(), problem_.f.end(), 0.0);
+  } else if (!converged_ && !warned_divergence_) {
+    warned_divergence_ = true;
+    msg_warning("no convergence after " + std::to_string(iterations_) + " iterations: error " +
+                parse::format_double(error_) + " > tolerance " + parse::format_double(effective_tolerance()) +
+                " (" + std::to_string(problem_.n) + " rows); the constraints may contradict each other (warned once)");
+  }
+  apply_corrections(scope_, p, problem_.f, x_out, v_out, dx_);
+}
+
+}  // namespace sinew

@@ -1,0 +1,107 @@
+#include "constraint/solver/resolution.h"
+
+#include <cmath>
+#include <limits>
+
+namespace sinew {
+
+namespace {
+
+// Inverse of a 3×3 matrix (row-major), with SOFA's determinant, zero test and
+// cofactor order (type::invertMatrix), so that warm-started blocks match.
+bool invert3(const double m[9], double out[9]) {
+  auto a = [m](int r, int c) { return m[r * 3 + c]; };
+  const double det = a(0, 0) * a(1, 1) * a(2, 2) + a(1, 0) * a(2, 1) * a(0, 2) + a(2, 0) * a(0, 1) * a(1, 2) -
+                     a(0, 0) * a(2, 1) * a(1, 2) - a(1, 0) * a(0, 1) * a(2, 2) - a(2, 0) * a(1, 1) * a(0, 2);
+  if (std::abs(det) <= std::numeric_limits<double>::epsilon() || !std::isfinite(det)) return false;
+  auto o = [out](int r, int c) -> double& { return out[r * 3 + c]; };
+  o(0, 0) = (a(1, 1) * a(2, 2) - a(2, 1) * a(1, 2)) / det;
+  o(1, 0) = (a(1, 2) * a(2, 0) - a(2, 2) * a(1, 0)) / det;
+  o(2, 0) = (a(1, 0) * a(2, 1) - a(2, 0) * a(1, 1)) / det;
+  o(0, 1) = (a(2, 1) * a(0, 2) - a(0, 1) * a(2, 2)) / det;
+  o(1, 1) = (a(2, 2) * a(0, 0) - a(0, 2) * a(2, 0)) / det;
+  o(2, 1) = (a(2, 0) * a(0, 1) - a(0, 0) * a(2, 1)) / det;
+  o(0, 2) = (a(0, 1) * a(1, 2) - a(1, 1) * a(0, 2)) / det;
+  o(1, 2) = (a(0, 2) * a(1, 0) - a(1, 2) * a(0, 0)) / det;
+  o(2, 2) = (a(0, 0) * a(1, 1) - a(1, 0) * a(0, 1)) / det;
+  return true;
+}
+
+}  // namespace
+
+bool resolution_init(ConstraintBlock& b, const ConstraintProblem& p, double* f) {
+  const int j = b.first;
+  switch (b.kind) {
+    case ConstraintBlock::Kind::bilateral:
+      if (b.warm) f[j] = b.warm[0];
+      return true;
+    case ConstraintBlock::Kind::bilateral3: {
+      double m[9];
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) m[r * 3 + c] = p.w(j + r, j + c);
+      const bool ok = invert3(m, b.inv);
+      if (!ok)
+        for (double& v : b.inv) v = 0.0;
+      if (b.warm)
+        for (int r = 0; r < 3; ++r) f[j + r] = b.warm[r];
+      return ok;
+    }
+    case ConstraintBlock::Kind::unilateral:
+      return true;
+    case ConstraintBlock::Kind::unilateral_friction:
+      b.w[0] = p.w(j, j);
+      b.w[1] = p.w(j, j + 1);
+      b.w[2] = p.w(j, j + 2);
+      b.w[3] = p.w(j + 1, j + 1);
+      b.w[4] = p.w(j + 1, j + 2);
+      b.w[5] = p.w(j + 2, j + 2);
+      return true;
+  }
+  return true;
+}
+
+void resolution_solve(const ConstraintBlock& b, const ConstraintProblem& p, double* d, double* f) {
+  const int j = b.first;
+  switch (b.kind) {
+    case ConstraintBlock::Kind::bilateral:
+      f[j] -= d[j] / p.w(j, j);
+      return;
+    case ConstraintBlock::Kind::bilateral3:
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) f[j + r] -= d[j + c] * b.inv[r * 3 + c] * b.load;
+      return;
+    case ConstraintBlock::Kind::unilateral:
+      f[j] -= d[j] / p.w(j, j);
+      if (f[j] < 0) f[j] = 0.0;
+      return;
+    case ConstraintBlock::Kind::unilateral_friction: {
+      const double fn0 = f[j];
+      f[j] -= d[j] / b.w[0];
+      if (f[j] < 0) {
+        f[j] = f[j + 1] = f[j + 2] = 0.0;
+        return;
+      }
+      d[j + 1] += b.w[1] * (f[j] - fn0);
+      d[j + 2] += b.w[2] * (f[j] - fn0);
+      // One averaged tangential compliance for both directions (SOFA).
+      f[j + 1] -= 2 * d[j + 1] / (b.w[3] + b.w[5]);
+      f[j + 2] -= 2 * d[j + 2] / (b.w[3] + b.w[5]);
+      const double norm_t = std::sqrt(f[j + 1] * f[j + 1] + f[j + 2] * f[j + 2]);
+      const double fn = b.mu * f[j];
+      if (norm_t > fn) {
+        const double factor = fn / norm_t;
+        f[j + 1] *= factor;
+        f[j + 2] *= factor;
+      }
+      return;
+    }
+  }
+}
+
+void resolution_store(ConstraintBlock& b, const double* f) {
+  if (b.warm)
+    for (int r = 0; r < b.rows; ++r) b.warm[r] = f[b.first + r];
+  if (b.active) *b.active = f[b.first] != 0.0;
+}
+
+}  // namespace sinew

@@ -1,0 +1,22 @@
+// The projection laws of constraint blocks (SOFA's ConstraintResolution
+// classes, spec/interaction.md §5.4.1), as free functions over a block and
+// the problem's arrays.
+//
+// init: prepares the block from W (inverse of a 3×3 block, cached W entries)
+// and writes its warm start into f; resolve: updates f[first..] from the
+// current violation d; store: keeps the forces for the next step's warm start.
+#pragma once
+
+#include "core/constraint_problem.h"
+
+namespace sinew {
+
+// Prepares the block; false when a 3×3 bilateral block of W is singular
+// (the block then keeps zero forces).
+bool resolution_init(ConstraintBlock& b, const ConstraintProblem& p, double* f);
+// One projection of the block; d holds the violation with the current forces
+// (the friction law updates its tangential entries in place, as SOFA does).
+void resolution_solve(const ConstraintBlock& b, const ConstraintProblem& p, double* d, double* f);
+void resolution_store(ConstraintBlock& b, const double* f);
+
+}  // namespace sinew

@@ -1,0 +1,128 @@
+// The Lagrangian constraint problem of one step (spec/interaction.md §5.2):
+// W λ + dfree = d, with each block of rows projected by its resolution law.
+//
+// Plain data shared by the constraint components (which fill dfree and
+// declare their blocks), the constraint corrections (which add their
+// compliance to W) and the solvers (which find λ). Storage is reused from
+// step to step.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/roles.h"
+
+namespace sinew {
+
+// Which quantity the constraints are solved for (SOFA's ConstraintOrder).
+enum class ConstraintOrder : std::uint8_t { pos, vel, acc, pos_and_vel };
+
+// The vectors a constraint step reads: free positions and velocities.
+struct ConstraintParams {
+  int x = kFreePosition;
+  int v = kFreeVelocity;
+  ConstraintOrder order = ConstraintOrder::pos_and_vel;
+  double dt = 0;
+};
+
+// A block of rows solved together (SOFA's ConstraintResolution), as data: the
+// solver switches on `kind` (no virtual call per block and iteration).
+struct ConstraintBlock {
+  enum class Kind : std::uint8_t {
+    bilateral,            // 1 row: f -= d / W_jj (warm start from *warm)
+    bilateral3,           // 3 rows: f -= load · W_b⁻¹ d (warm start from warm[0..2])
+    unilateral,           // 1 row: f -= d / W_jj, f = max(f, 0)
+    unilateral_friction,  // 3 rows (n, t, s): Coulomb cone with coefficient mu
+  };
+  Kind kind = Kind::bilateral;
+  int first = 0;   // first row
+  int rows = 1;    // number of rows
+  double mu = 0;   // unilateral_friction
+  double load = 1; // bilateral3
+  double tolerance = 0;      // own tolerance (0: the solver's)
+  double* warm = nullptr;    // previous forces: read at init, written at store (null: none)
+  bool* active = nullptr;    // unilateral_friction: whether the contact pushed (written at store)
+  // Filled by the solver at init.
+  double inv[9] = {};        // bilateral3: W_b⁻¹ (row-major)
+  double w[6] = {};          // unilateral_friction: W00 W01 W02 W11 W12 W22
+};
+
+struct ConstraintProblem {
+  int n = 0;
+  std::vector<double> W;      // n×n, row-major
+  std::vector<double> dfree;  // violation at the free motion
+  std::vector<double> f;      // λ
+  std::vector<double> d;      // work: current violation
+  std::vector<ConstraintBlock> blocks;  // in row order, covering rows 0..n-1
+
+  void clear(int rows) {
+    n = rows;
+    W.assign(static_cast<std::size_t>(rows) * rows, 0.0);
+    dfree.assign(rows, 0.0);
+    f.assign(rows, 0.0);
+    d.assign(rows, 0.0);
+    blocks.clear();
+  }
+  double& w(int i, int j) { return W[static_cast<std::size_t>(i) * n + j]; }
+  double w(int i, int j) const { return W[static_cast<std::size_t>(i) * n + j]; }
+};
+
+// ---------------------------------------------------------------- roles
+
+// A Lagrangian constraint (SOFA's BaseLagrangianConstraint): rows of J on one
+// or two states, their violation and how each block of rows is solved. The
+// three calls come in this order, with the same numbering, every step.
+class LagrangianConstraint : public Component {
+ public:
+  // Appends its rows to its states' Jacobians (constraint_jacobian()),
+  // numbered from `row`, which it advances.
+  virtual void build_constraint_matrix(const ConstraintParams& p, int& row) = 0;
+  // Writes the violation of its rows into dfree (indexed by row id).
+  virtual void constraint_violation(const ConstraintParams& p, std::vector<double>& dfree) = 0;
+  // Appends one block per group of its rows, in row order.
+  virtual void constraint_resolutions(const ConstraintParams& p, std::vector<ConstraintBlock>& out) = 0;
+};
+
+// A constraint correction (SOFA's BaseConstraintCorrection): the compliance
+// of one independent state in constraint space, and the motion correction
+// the constraint forces cause.
+class ConstraintCorrection : public Component {
+ public:
+  Link<MechanicalState> mstate{this, "mstate", "state this correction acts on (default: the node's)"};
+  void init() override;
+
+  // W += compliance of the rows of this state's Jacobian (§5.3).
+  virtual void add_compliance(const ConstraintParams& p, ConstraintProblem& problem) = 0;
+  // dx = C·Jᵀλ; then (POS_AND_VEL) x = xf + xfactor·dx, v = vf + vfactor·dx,
+  // (POS) x only, (VEL) v only. `dx_out` receives the applied correction.
+  virtual void apply_correction(const ConstraintParams& p, const std::vector<double>& lambda, int x_out, int v_out,
+                                int dx_out) = 0;
+
+  // Unbuilt solvers and the LCP solver (§5.3 "unbuilt helpers").
+  // Whether this correction supports the unbuilt interface below.
+  virtual bool supports_unbuilt() const { return false; }
+  // Stores cforce = Jᵀf for the initial forces and zeroes the displacements.
+  virtual void reset_for_unbuilt(const std::vector<double>& f) {}
+  // W[a..b) diagonal block += compliance between those rows (no integration factor).
+  virtual void add_block_diagonal_compliance(ConstraintProblem& problem, int begin, int end) {}
+  // d[i] += J_i·cdisp for rows i in [begin, end).
+  virtual void add_constraint_displacement(std::vector<double>& d, int begin, int end) {}
+  // cforce += J_i·df_i for rows in [begin, end); cdisp = C·cforce on the touched DOFs.
+  virtual void set_constraint_dforce(const std::vector<double>& df, int begin, int end) {}
+  // LCP path: externalForce = Jᵀf, then the motion correction from it.
+  virtual void reset_contact_force() {}
+  virtual void apply_contact_force(const ConstraintParams& p, const std::vector<double>& f) {}
+};
+
+// A constraint solver (SOFA's ConstraintSolver): builds the problem of the
+// step, solves it and applies the corrections (§5.2).
+class ConstraintSolver : public Component {
+ public:
+  // Solves at the end of the free motion. POS_AND_VEL: writes x_out and v_out;
+  // VEL: v_out only. The solver's own dx vector receives the corrections.
+  virtual void solve_constraint(const ConstraintParams& p, int x_out, int v_out) = 0;
+  // Vector id holding the applied corrections (to project and propagate).
+  virtual int dx_vec() const = 0;
+};
+
+}  // namespace sinew
