@@ -95,7 +95,7 @@ void GenericConstraintSolver::solve_constraint(const ConstraintParams& p, int x_
     std::fill(problem_.f.begin(), problem_.f.end(), 0.0);
   } else if (!converged_ && !warned_divergence_) {
     warned_divergence_ = true;
-    msg_warning("no convergence after " + std::to_string(iterations_) + " iterations: error " +
+    msg_warning("no convergence after " + std::to_string(iterations_) + " iterations: residual " +
                 parse::format_double(error_) + " > tolerance " + parse::format_double(effective_tolerance()) +
                 " (" + std::to_string(problem_.n) + " rows); the constraints may contradict each other (warned once)");
   }
