@@ -31,6 +31,8 @@ void register_viewer_only(Registry& r) {
       {"DirectionalLight", "viewer light"},
       {"PositionalLight", "viewer light"},
       {"SpotLight", "viewer light"},
+      {"ViewerSetting", "viewer window settings (resolution, fullscreen, picking method)"},
+      {"RecordedCamera", "camera that follows a recorded or rotating path"},
       {"GlobalSystemMatrixImage", "image of a linear system's matrix (SofaMatrix plugin)"},
   };
   for (const auto& e : list) {
