@@ -42,6 +42,9 @@ struct ConstraintBlock {
   double tolerance = 0;      // own tolerance (0: the solver's)
   double* warm = nullptr;    // previous forces: read at init, written at store (null: none)
   bool* active = nullptr;    // unilateral_friction: whether the contact pushed (written at store)
+  // Set by the solver when a diagonal entry of the block in W is not positive
+  // (no body can move along those rows): the block keeps zero forces.
+  bool disabled = false;
   // Filled by the solver at init.
   double inv[9] = {};        // bilateral3: W_b⁻¹ (row-major)
   double w[6] = {};          // unilateral_friction: W00 W01 W02 W11 W12 W22

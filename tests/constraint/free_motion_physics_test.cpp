@@ -167,5 +167,41 @@ TEST(FreeMotionPhysics, ContradictoryBilateralConstraintsReportNonConvergenceAnd
   EXPECT_TRUE(test::any_contains(warnings, "residual "));
 }
 
+// A point pinned (FixedProjectiveConstraint) inside a closed box it is too
+// close to: every contact row is projected away, nothing can satisfy the
+// contacts. The rows are reported and left without force; the state stays finite.
+TEST(FreeMotionPhysics, PinnedPointInsideAClosedBoxIsReportedAndStaysFinite) {
+  scene::LoadedScene s = test::load(R"(<Node name="root" dt="0.01" gravity="0 -9.81 0">
+    <FreeMotionAnimationLoop/>
+    <BlockGaussSeidelConstraintSolver tolerance="1e-10" maxIterations="100"/>
+    <CollisionPipeline/><BruteForceBroadPhase/><BVHNarrowPhase/>
+    <MinProximityIntersection alarmDistance="1" contactDistance="0.6"/>
+    <CollisionResponse response="FrictionContactConstraint"/>
+    <Node name="box">
+      <MechanicalObject position="-0.5 -0.5 -0.5  0.5 -0.5 -0.5  0.5 -0.5 0.5  -0.5 -0.5 0.5  -0.5 0.5 -0.5  0.5 0.5 -0.5  0.5 0.5 0.5  -0.5 0.5 0.5"/>
+      <MeshTopology triangles="0 2 1 0 3 2 4 5 6 4 6 7 0 1 5 0 5 4 1 2 6 1 6 5 2 3 7 2 7 6 3 0 4 3 4 7"/>
+      <TriangleCollisionModel simulated="0" moving="0"/>
+    </Node>
+    <Node name="body">
+      <EulerImplicitSolver/><CGLinearSolver iterations="25" tolerance="1e-12" threshold="1e-12"/>
+      <MechanicalObject name="p" position="0.1 0.05 0.02"/>
+      <UniformMass totalMass="1"/>
+      <FixedProjectiveConstraint indices="0"/>
+      <PointCollisionModel/>
+      <UncoupledConstraintCorrection compliance="1"/>
+    </Node>
+  </Node>)");
+  ASSERT_TRUE(s.root);
+  for (int i = 0; i < 20; ++i) animate(*s.root);
+  auto* p = test::get<MechanicalObject>(*s.root->find_child_named("body"), "p");
+  const std::vector<double>& x = p->read(kPosition);
+  EXPECT_DOUBLE_EQ(x[0], 0.1);
+  EXPECT_DOUBLE_EQ(x[1], 0.05);
+  EXPECT_DOUBLE_EQ(x[2], 0.02);
+  for (double v : p->read(kVelocity)) EXPECT_EQ(v, 0.0);
+  const auto warnings = test::messages(s.root->diagnostics(), Severity::warning);
+  EXPECT_TRUE(test::any_contains(warnings, "have no compliance")) << ::testing::PrintToString(warnings);
+}
+
 }  // namespace
 }  // namespace sinew

@@ -27,6 +27,24 @@ void GenericConstraintSolver::build_system(const ConstraintParams& p) {
   add_compliances(scope_, p, problem_, regularization_term.value());
 }
 
+// A row whose diagonal in W is not positive moves nothing (both sides fixed:
+// no constraint correction, or DOFs held by projective constraints); SOFA
+// would divide by zero there. Such blocks keep zero forces, with one warning.
+void GenericConstraintSolver::disable_rigid_blocks() {
+  for (ConstraintBlock& b : problem_.blocks) {
+    for (int r = 0; r < b.rows && !b.disabled; ++r) {
+      const double w = problem_.w(b.first + r, b.first + r);
+      b.disabled = !(w > 0.0) || !std::isfinite(w);
+    }
+    if (b.disabled && !warned_rigid_rows_) {
+      warned_rigid_rows_ = true;
+      msg_warning("rows " + std::to_string(b.first) + ".." + std::to_string(b.first + b.rows - 1) +
+                  " have no compliance (no constraint correction can move them, or projective constraints hold "
+                  "their DoFs): their forces stay zero (warned once)");
+    }
+  }
+}
+
 void GenericConstraintSolver::gauss_seidel_sweep(bool measure_error, double tol, double& error, bool& verified) {
   ConstraintProblem& P = problem_;
   double* f = P.f.data();
@@ -78,6 +96,7 @@ void GenericConstraintSolver::solve_constraint(const ConstraintParams& p, int x_
   const int n = build_constraint_jacobian(scope_, p, /*project=*/true);
   if (!fill_constraint_problem(scope_, p, n, problem_, *this)) return;
   build_system(p);
+  disable_rigid_blocks();
   iterations_ = 0;
   error_ = 0.0;
   converged_ = true;

@@ -52,6 +52,8 @@ class GenericConstraintSolver : public ConstraintSolver {
   // with measure_error, adds each block's error and clears `verified` when a
   // line exceeds tol.
   void gauss_seidel_sweep(bool measure_error, double tol, double& error, bool& verified);
+  // Marks the blocks with a non-positive diagonal in W (nothing can move them).
+  void disable_rigid_blocks();
 
   ConstraintScope scope_;
   ConstraintProblem problem_;
@@ -62,6 +64,7 @@ class GenericConstraintSolver : public ConstraintSolver {
  private:
   int dx_ = -1;
   bool warned_divergence_ = false;
+  bool warned_rigid_rows_ = false;
   std::vector<double> f_old_;
 };
 

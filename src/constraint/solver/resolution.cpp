@@ -31,6 +31,10 @@ bool invert3(const double m[9], double out[9]) {
 
 bool resolution_init(ConstraintBlock& b, const ConstraintProblem& p, double* f) {
   const int j = b.first;
+  if (b.disabled) {
+    for (int r = 0; r < b.rows; ++r) f[j + r] = 0.0;
+    return false;
+  }
   switch (b.kind) {
     case ConstraintBlock::Kind::bilateral:
       if (b.warm) f[j] = b.warm[0];
@@ -61,6 +65,7 @@ bool resolution_init(ConstraintBlock& b, const ConstraintProblem& p, double* f) 
 }
 
 void resolution_solve(const ConstraintBlock& b, const ConstraintProblem& p, double* d, double* f) {
+  if (b.disabled) return;
   const int j = b.first;
   switch (b.kind) {
     case ConstraintBlock::Kind::bilateral:
@@ -99,6 +104,7 @@ void resolution_solve(const ConstraintBlock& b, const ConstraintProblem& p, doub
 }
 
 void resolution_store(ConstraintBlock& b, const double* f) {
+  if (b.disabled) return;
   if (b.warm)
     for (int r = 0; r < b.rows; ++r) b.warm[r] = f[b.first + r];
   if (b.active) *b.active = f[b.first] != 0.0;
