@@ -24,6 +24,9 @@ bool LineCollisionModel::init_model() {
 // Edges follow the topology: rebuilt when its edge list changed. True when rebuilt.
 bool LineCollisionModel::update_from_topology() {
   const MeshTopologyBase& t = *topology;
+  tris_ = &t.triangles();
+  tris_around_edge_ = &t.triangles_around_edge();
+  edges_around_vertex_ = &t.edges_around_vertex();
   const std::uint64_t v = t.elements_version(MeshTopologyBase::Elements::edges);
   if (v == edges_version_ && edges_.size() == t.edges().size()) return false;
   edges_version_ = v;
@@ -60,12 +63,12 @@ void LineCollisionModel::compute_bounding_tree(int depth) {
 }
 
 local_min_distance::LineNeighbourhood LineCollisionModel::lmd_neighbourhood(unsigned i) const {
-  const MeshTopologyBase& t = *topology;
-  const auto& around = t.triangles_around_edge();
+  if (!tris_) const_cast<LineCollisionModel*>(this)->update_from_topology();
+  const auto& around = *tris_around_edge_;
   const std::size_t n = x_.size();
   if (i < around.size() && around[i].size() == 2) {
-    const Triangle& t0 = t.triangles()[around[i][0]];
-    const Triangle& t1 = t.triangles()[around[i][1]];
+    const Triangle& t0 = (*tris_)[around[i][0]];
+    const Triangle& t1 = (*tris_)[around[i][1]];
     if (std::max({t0[0], t0[1], t0[2], t1[0], t1[1], t1[2]}) < n)
       return local_min_distance::two_triangles(elem(i), t0, {x_[t0[0]], x_[t0[1]], x_[t0[2]]},
                                                {x_[t1[0]], x_[t1[1]], x_[t1[2]]}, both_side.value());
@@ -77,8 +80,8 @@ local_min_distance::LineNeighbourhood LineCollisionModel::lmd_neighbourhood(unsi
 
 bool LineCollisionModel::element_can_collide(unsigned i, const CollisionModelBase& other, unsigned j) const {
   if (!self_collision.value() || other.node() != node()) return true;
-  const MeshTopologyBase& t = *topology;
-  const auto& around = t.edges_around_vertex();
+  if (!tris_) const_cast<LineCollisionModel*>(this)->update_from_topology();
+  const auto& around = *edges_around_vertex_;
   static const MeshTopologyBase::IndexList none;
   auto edges_at = [&](unsigned v) -> const MeshTopologyBase::IndexList& {
     return v < around.size() ? around[v] : none;

@@ -44,6 +44,11 @@ class LineCollisionModel final : public CollisionModelBase {
   std::span<const Vec3> x_;
   std::vector<Edge> edges_;
   std::uint64_t edges_version_ = ~std::uint64_t{0};
+  // The topology's lists the per-element filters read, fetched once per
+  // detection (a topology list read goes through its field's link checks).
+  const std::vector<Triangle>* tris_ = nullptr;
+  const std::vector<MeshTopologyBase::IndexList>* tris_around_edge_ = nullptr;
+  const std::vector<MeshTopologyBase::IndexList>* edges_around_vertex_ = nullptr;
   const PointCollisionModel* points_ = nullptr;  // the node's point model (self-collision filter)
 };
 

@@ -61,21 +61,27 @@ void PointCollisionModel::build_lmd() const {
   lmd_normal_start_.assign(n + 1, 0);
   lmd_other_start_.assign(n + 1, 0);
   const MeshTopologyBase* t = topology.get();
+  // Lists fetched once: each read of a topology list goes through its field's link checks.
+  static const std::vector<MeshTopologyBase::IndexList> no_lists;
+  static const std::vector<Triangle> no_triangles;
+  static const std::vector<Edge> no_edges;
+  const auto& tav = t ? t->triangles_around_vertex() : no_lists;
+  const auto& eav = t ? t->edges_around_vertex() : no_lists;
+  const auto& triangles = t ? t->triangles() : no_triangles;
+  const auto& edges = t ? t->edges() : no_edges;
   for (unsigned i = 0; i < n; ++i) {
     lmd_normal_start_[i] = static_cast<unsigned>(lmd_normals_.size());
     lmd_other_start_[i] = static_cast<unsigned>(lmd_others_.size());
     if (!t) continue;
-    const auto& tav = t->triangles_around_vertex();
     if (i < tav.size())
       for (unsigned k : tav[i]) {
-        const Triangle& tri = t->triangles()[k];
+        const Triangle& tri = triangles[k];
         if (tri[0] < n && tri[1] < n && tri[2] < n)
           lmd_normals_.push_back(local_min_distance::unit_normal(x_[tri[0]], x_[tri[1]], x_[tri[2]]));
       }
-    const auto& eav = t->edges_around_vertex();
     if (i < eav.size())
       for (unsigned k : eav[i]) {
-        const Edge& e = t->edges()[k];
+        const Edge& e = edges[k];
         const unsigned other = e[0] == i ? e[1] : e[0];
         if (other < n) lmd_others_.push_back(x_[other]);
       }
