@@ -393,6 +393,33 @@ TEST(ConstantForceField, TotalForceIsSharedByAllPoints) {
   for (int i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(f[3 * i + 2], -1.25);
 }
 
+// Rigid3d: a force is a force then a torque (6 values); Rigid2d: 3 values.
+TEST(ConstantForceField, RigidForcesCarryTorques) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <MechanicalObject name="dofs" template="Rigid3" position="0 0 0 0 0 0 1  1 0 0 0 0 0 1"/>
+    <ConstantForceField name="ff" indices="1" forces="1 -1 0 0 0 2"/>
+  </Node>)");
+  auto* ff = get<ConstantForceField>(*s.root, "ff");
+  ASSERT_EQ(ff->state(), ComponentState::valid);
+  MechanicalState& st = *s.root->mechanical_state;
+  const auto f = force_at(*ff, st, st.write(kPosition));
+  ASSERT_EQ(f.size(), 12u);
+  for (int c = 0; c < 6; ++c) EXPECT_DOUBLE_EQ(f[c], 0.0);
+  EXPECT_DOUBLE_EQ(f[6], 1.0);
+  EXPECT_DOUBLE_EQ(f[7], -1.0);
+  EXPECT_DOUBLE_EQ(f[11], 2.0);
+  auto s2 = load(R"(<Node gravity="0 0 0">
+    <MechanicalObject name="dofs" template="Rigid2" position="0 0 0  1 0 0"/>
+    <ConstantForceField name="ff" totalForce="2 0 4"/>
+  </Node>)");
+  auto* ff2 = get<ConstantForceField>(*s2.root, "ff");
+  ASSERT_EQ(ff2->state(), ComponentState::valid);
+  MechanicalState& st2 = *s2.root->mechanical_state;
+  const auto f2 = force_at(*ff2, st2, st2.write(kPosition));
+  EXPECT_DOUBLE_EQ(f2[3], 1.0);
+  EXPECT_DOUBLE_EQ(f2[5], 2.0);
+}
+
 TEST(ConstantForceField, ForcesPerIndexAndBadIndex) {
   auto s = load(R"(<Node gravity="0 0 0">
     <MechanicalObject name="dofs" position="0 0 0  1 0 0  2 0 0"/>
