@@ -381,6 +381,29 @@ TEST(RestShapeSpringsForceField, PullsBackToTheRestPositionWithExactTangent) {
   EXPECT_DOUBLE_EQ(df[2], -20.0);
 }
 
+// Rigid3d: a linear spring on the centre and an angular one on the rotation
+// from the rest orientation: turned by 0.3 rad about z, the torque is −ka·0.3 about z.
+TEST(RestShapeSpringsForceField, RigidFramesGetALinearAndAnAngularSpring) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <MechanicalObject name="dofs" template="Rigid3" position="0 0 0 0 0 0 1"/>
+    <RestShapeSpringsForceField name="ff" stiffness="10" angularStiffness="4"/>
+  </Node>)");
+  auto* ff = get<RestShapeSpringsForceField>(*s.root, "ff");
+  ASSERT_EQ(ff->state(), ComponentState::valid);
+  MechanicalState& st = *s.root->mechanical_state;
+  const double h = 0.15;  // half angle
+  const auto f = force_at(*ff, st, {1, -2, 0.5, 0, 0, std::sin(h), std::cos(h)});
+  EXPECT_DOUBLE_EQ(f[0], -10.0);
+  EXPECT_DOUBLE_EQ(f[1], 20.0);
+  EXPECT_DOUBLE_EQ(f[2], -5.0);
+  EXPECT_NEAR(f[3], 0.0, 1e-15);
+  EXPECT_NEAR(f[4], 0.0, 1e-15);
+  EXPECT_NEAR(f[5], -4.0 * 0.3, 1e-14);
+  const auto df = dforce(*ff, st, {1, 1, 1, 1, 1, 1}, 2.0);
+  EXPECT_DOUBLE_EQ(df[0], -20.0);
+  EXPECT_DOUBLE_EQ(df[5], -8.0);
+}
+
 TEST(ConstantForceField, TotalForceIsSharedByAllPoints) {
   auto s = load(R"(<Node gravity="0 0 0">
     <MechanicalObject name="dofs" position="0 0 0  1 0 0  2 0 0  3 0 0"/>

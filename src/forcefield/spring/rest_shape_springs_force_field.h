@@ -1,7 +1,9 @@
 // RestShapeSpringsForceField: springs pulling points back to their rest
 // position (own rest_position, or the positions of `external_rest_shape`):
 // f_i −= k_i·(x_i − x0_i) per active direction (spec/mechanics.md §3.7).
-// Vec1d/Vec2d/Vec3d states (rigid states are not supported).
+// Vec1d/Vec2d/Vec3d states, and Rigid3d: a linear spring on the centre (or on
+// a pivot point carried by the frame) and an angular spring on the rotation
+// from the rest orientation (axis·angle·angularStiffness).
 #pragma once
 
 #include <vector>
@@ -44,10 +46,13 @@ class RestShapeSpringsForceField final : public ForceField {
   bool compute_indices();
   const std::vector<double>* rest() const;
   std::vector<unsigned> idx_, ext_idx_;
-  std::vector<double> k_;
+  void add_force_rigid(const MechParams& p);
+  void add_dforce_rigid(const MechParams& p, double kfactor);
+  std::vector<double> k_, ka_;
   std::vector<char> active_;
   std::size_t state_size_ = 0;
-  int dim_ = 3;
+  int dim_ = 3;  // scalars of a position (Vec) or of a derivative's linear part (rigid: 3)
+  bool rigid_ = false;
 };
 
 }  // namespace sinew
