@@ -36,6 +36,9 @@ void UniformMass::init() {
   Mat3 inertia = Mat3::Identity();
   if (rigid && vm.size() >= 11)
     for (int k = 0; k < 9; ++k) inertia(k / 3, k % 3) = vm[2 + k];
+  // Rigid2d: "mass volume inertia", the inertia a scalar (about the normal axis).
+  double inertia2 = 1.0;
+  if (s.state_type() == StateType::rigid2 && vm.size() >= 3) inertia2 = vm[2];
 
   if (!filename.value().empty() && filename.value() != "unused") {
     if (!rigid) {
@@ -74,6 +77,7 @@ void UniformMass::init() {
     msg_warning("the mass of each point is 0: dynamic solvers need a positive mass (singular system, division by zero)");
   inertia_mass_ = inertia * m_;
   inv_inertia_mass_ = inertia_mass_.inverse();
+  inertia_mass2_ = inertia2 * m_;
 }
 
 bool UniformMass::load_rigid_file(double& mass, Mat3& inertia) {
@@ -155,6 +159,13 @@ void UniformMass::add_mdx(const MechParams&, int res, int dx, double factor) {
   std::vector<double>& r = s.write(res);
   const std::vector<double>& d = s.read(dx);
   const int w = s.info().deriv_width;
+  if (s.state_type() == StateType::rigid2) {
+    for (unsigned i : active_) {
+      for (int c = 0; c < 2; ++c) r[i * 3 + c] += d[i * 3 + c] * m_ * factor;
+      r[i * 3 + 2] += d[i * 3 + 2] * inertia_mass2_ * factor;
+    }
+    return;
+  }
   if (s.state_type() == StateType::rigid3) {
     for (unsigned i : active_) {
       for (int c = 0; c < 3; ++c) r[i * 6 + c] += d[i * 6 + c] * m_ * factor;
@@ -174,6 +185,13 @@ void UniformMass::acc_from_f(const MechParams&, int a, int f) {
   std::vector<double>& av = s.write(a);
   const std::vector<double>& fv = s.read(f);
   const int w = s.info().deriv_width;
+  if (s.state_type() == StateType::rigid2) {
+    for (unsigned i : active_) {
+      for (int c = 0; c < 2; ++c) av[i * 3 + c] = fv[i * 3 + c] / m_;
+      av[i * 3 + 2] = fv[i * 3 + 2] / inertia_mass2_;
+    }
+    return;
+  }
   if (s.state_type() == StateType::rigid3) {
     for (unsigned i : active_) {
       for (int c = 0; c < 3; ++c) av[i * 6 + c] = fv[i * 6 + c] / m_;
@@ -201,7 +219,10 @@ bool UniformMass::build_mass(MatrixSink& M) {
   MechanicalState* s = mstate.get();
   const int w = s->info().deriv_width;
   for (unsigned i : active_) {
-    if (s->state_type() == StateType::rigid3) {
+    if (s->state_type() == StateType::rigid2) {
+      for (int c = 0; c < 2; ++c) M.add(s, i * 3 + c, s, i * 3 + c, m_);
+      M.add(s, i * 3 + 2, s, i * 3 + 2, inertia_mass2_);
+    } else if (s->state_type() == StateType::rigid3) {
       for (int c = 0; c < 3; ++c) M.add(s, i * 6 + c, s, i * 6 + c, m_);
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b) M.add(s, i * 6 + 3 + a, s, i * 6 + 3 + b, inertia_mass_(a, b));
@@ -217,7 +238,7 @@ void register_uniform_mass(Registry& r) {
   info.name = "UniformMass";
   info.category = "Mass";
   info.description = "same mass on every degree of freedom";
-  info.templates = {"Vec1d", "Vec2d", "Vec3d", "Vec6d", "Rigid3d"};
+  info.templates = {"Vec1d", "Vec2d", "Vec3d", "Vec6d", "Rigid2d", "Rigid3d"};
   info.default_template = "Vec3d";
   info.requirement = Requirement::state;
   info.create = creator<UniformMass>();

@@ -2,7 +2,8 @@
 //
 // Vec templates: M = m·I. Rigid3d: vertexMass is "mass volume I00 … I22";
 // the inertia tensor is scaled by the mass and expressed in world axes
-// (never rotated with the body, as SOFA does). Gravity is added in addForce
+// (never rotated with the body, as SOFA does). Rigid2d: "mass volume inertia",
+// a scalar inertia. Gravity is added in addForce
 // unless separateGravity.
 #pragma once
 
@@ -49,6 +50,7 @@ class UniformMass final : public Mass {
 
   Mat3 inertia_mass_ = Mat3::Identity();   // Rigid3d: inertia·mass (world axes)
   Mat3 inv_inertia_mass_ = Mat3::Identity();
+  double inertia_mass2_ = 1.0;             // Rigid2d: inertia·mass
   std::vector<unsigned> active_;      // DoFs with mass
 };
 

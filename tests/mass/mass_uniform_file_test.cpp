@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/matrix_sink.h"
+#include "core/mechanical_ops.h"
 #include "core/simulation.h"
 #include "mass/uniform_mass.h"
 #include "badinput_helpers.h"
@@ -45,6 +46,34 @@ TEST(UniformMass, UnreadableMassFileIsAnError) {
     <MechanicalObject template="Rigid3d" position="0 0 0 0 0 0 1"/>
     <UniformMass filename="bad.rigid"/></Node>)"), 1);
   EXPECT_TRUE(test::any_contains_all(o.errors, {"bad.rigid", "inrt"})) << o.all();
+}
+
+}  // namespace
+}  // namespace sinew
+
+namespace sinew {
+namespace {
+
+// Rigid2d: vertexMass is "mass volume inertia"; the rotation's mass is inertia·mass.
+TEST(UniformMass, Rigid2dUsesTheScalarInertia) {
+  scene::LoadedScene s = test::load(R"(<Node name="root" gravity="0 -10 0">
+    <MechanicalObject name="x" template="Rigid2" position="0 0 0  1 2 0.5"/>
+    <UniformMass name="mass" vertexMass="2 1 0.5"/>
+  </Node>)");
+  ASSERT_TRUE(s.root);
+  auto* m = test::get<UniformMass>(*s.root, "mass");
+  ASSERT_EQ(m->state(), ComponentState::valid);
+  MechanicalState& st = *s.root->mechanical_state;
+  const int dx = MechanicalOps::alloc_vec(), res = MechanicalOps::alloc_vec();
+  st.write(dx) = {1, 1, 1, 1, 1, 1};
+  st.write(res).assign(6, 0.0);
+  m->add_mdx(MechParams{}, res, dx, 1.0);
+  EXPECT_DOUBLE_EQ(st.read(res)[0], 2.0);
+  EXPECT_DOUBLE_EQ(st.read(res)[2], 1.0);  // 0.5 · 2
+  st.write(kForce).assign(6, 0.0);
+  m->add_force(MechParams{});
+  EXPECT_DOUBLE_EQ(st.read(kForce)[4], -20.0);  // gravity on the centre only
+  EXPECT_DOUBLE_EQ(st.read(kForce)[5], 0.0);
 }
 
 }  // namespace

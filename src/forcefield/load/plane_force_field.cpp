@@ -10,12 +10,14 @@ namespace sinew {
 void PlaneForceField::init() {
   ForceField::init();
   if (state() != ComponentState::valid) return;
-  if (mstate->state_type() != StateType::vec3 && mstate->state_type() != StateType::rigid3) {
-    msg_error("only Vec3d and Rigid3d states are supported");
+  if (mstate->state_type() == StateType::vec6) {
+    msg_error("Vec6d states are not supported (Vec1d, Vec2d, Vec3d, Rigid2d, Rigid3d)");
     set_state(ComponentState::invalid);
     return;
   }
-  // Rigid3d: the plane acts on the frame centres; no torque (SOFA's DPos is the translation).
+  // Rigid frames: the plane acts on the centres; no torque (SOFA's DPos is the translation).
+  // 1D and 2D states use the first components of the normal.
+  dim_ = static_cast<unsigned>(mstate->info().spatial_dim);
   cw_ = mstate->info().coord_width;
   dw_ = mstate->info().deriv_width;
   k_ = stiffness.get();
@@ -55,18 +57,20 @@ void PlaneForceField::add_force(const MechParams& p) {
   const double pd = d.value();
   for (unsigned i = ibegin; i < iend; i++) {
     const double* xi = &x[cw_ * i];
-    const double dist = xi[0] * n[0] + xi[1] * n[1] + xi[2] * n[2] - pd;
+    double dist = 0.0;
+    for (unsigned c = 0; c < dim_; ++c) dist += xi[c] * n[c];
+    dist -= pd;
     if (bilateral.value() || dist < 0) {
       const double fi = -k_ * dist;
       const double di = -c_ * dist;
-      double F[3];
-      for (int c = 0; c < 3; ++c) F[c] = n[c] * fi - v[dw_ * i + c] * di;
+      double F[3] = {0, 0, 0};
+      for (unsigned c = 0; c < dim_; ++c) F[c] = n[c] * fi - v[dw_ * i + c] * di;
       const double amp = F[0] * F[0] + F[1] * F[1] + F[2] * F[2];
       if (limit > 0 && amp > limit) {
         const double sc = std::sqrt(limit / amp);
         for (double& c : F) c *= sc;
       }
-      for (int c = 0; c < 3; ++c) f[dw_ * i + c] += F[c];
+      for (unsigned c = 0; c < dim_; ++c) f[dw_ * i + c] += F[c];
       contacts_.push_back(i);
     }
   }
@@ -83,7 +87,9 @@ std::optional<double> PlaneForceField::potential_energy() const {
   double e = 0;
   for (unsigned i = ibegin; i < iend; i++) {
     const double* xi = &x[cw_ * i];
-    const double dist = xi[0] * n[0] + xi[1] * n[1] + xi[2] * n[2] - d.value();
+    double dist = 0.0;
+    for (unsigned c = 0; c < dim_; ++c) dist += xi[c] * n[c];
+    dist -= d.value();
     if (bilateral.value() || dist < 0) e += 0.5 * k_ * dist * dist;
   }
   return e;
@@ -97,18 +103,26 @@ void PlaneForceField::add_dforce(const MechParams& p, double kfactor) {
   const Vec3 n = normal.value();
   for (unsigned i : contacts_) {
     const double* dxi = &dx[dw_ * i];
-    const double t = fact * (dxi[0] * n[0] + dxi[1] * n[1] + dxi[2] * n[2]);
-    for (int c = 0; c < 3; ++c) df[dw_ * i + c] += n[c] * t;
+    double dot = 0.0;
+    for (unsigned c = 0; c < dim_; ++c) dot += dxi[c] * n[c];
+    const double t = fact * dot;
+    for (unsigned c = 0; c < dim_; ++c) df[dw_ * i + c] += n[c] * t;
   }
 }
 
 bool PlaneForceField::build_stiffness(MatrixSink& K) {
   const MechanicalState* s = mstate.get();
   const Vec3 n = normal.value();
-  Mat3 m;
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) m(a, b) = -k_ * (n[a] * n[b]);
-  for (unsigned i : contacts_) K.add_block(s, dw_ * i, s, dw_ * i, m);
+  if (dim_ == 3) {
+    Mat3 m;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) m(a, b) = -k_ * (n[a] * n[b]);
+    for (unsigned i : contacts_) K.add_block(s, dw_ * i, s, dw_ * i, m);
+    return true;
+  }
+  for (unsigned i : contacts_)
+    for (unsigned a = 0; a < dim_; ++a)
+      for (unsigned b = 0; b < dim_; ++b) K.add(s, dw_ * i + a, s, dw_ * i + b, -k_ * (n[a] * n[b]));
   return true;
 }
 
@@ -117,7 +131,7 @@ void register_plane_force_field(Registry& r) {
   info.name = "PlaneForceField";
   info.category = "ForceField/MechanicalLoad";
   info.description = "penalty force keeping points on one side of a plane";
-  info.templates = {"Vec3d", "Rigid3d"};
+  info.templates = {"Vec1d", "Vec2d", "Vec3d", "Rigid2d", "Rigid3d"};
   info.default_template = "Vec3d";
   info.requirement = Requirement::state;
   info.create = creator<PlaneForceField>();

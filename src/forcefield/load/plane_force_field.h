@@ -39,6 +39,7 @@ class PlaneForceField final : public ForceField {
  private:
   double k_ = 500, c_ = 5, max_ = 0;
   unsigned cw_ = 3, dw_ = 3;  // coord and deriv widths (Rigid3d: 7, 6; the centre is the first 3)
+  unsigned dim_ = 3;          // spatial dimension: components of the normal used
   std::vector<unsigned> contacts_;
 };
 
