@@ -67,6 +67,11 @@ void ConstraintMatrix::compress() {
   }
 }
 
+const ConstraintMatrix::Row* ConstraintMatrix::find_row(int id) const {
+  auto it = std::lower_bound(rows_.begin(), rows_.end(), id, [](const Row& r, int v) { return r.id < v; });
+  return it != rows_.end() && it->id == id ? &*it : nullptr;
+}
+
 void ConstraintMatrix::zero_dof(int dof, int first_component, int count) {
   for (std::size_t i = 0; i < entries_.size(); ++i)
     if (entries_[i].dof == dof)

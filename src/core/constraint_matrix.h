@@ -41,6 +41,8 @@ class ConstraintMatrix {
   void compress();
   // Valid after compress() (until the next add).
   std::span<const Row> rows() const { return rows_; }
+  // The compressed row with id `id`, or null (SOFA's readLine(id) == end()).
+  const Row* find_row(int id) const;
   std::span<const Entry> entries() const { return entries_; }
   const double* value(int entry) const { return &values_[static_cast<std::size_t>(entry) * width_]; }
   double* value(int entry) { return &values_[static_cast<std::size_t>(entry) * width_]; }

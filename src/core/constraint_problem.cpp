@@ -12,4 +12,8 @@ void ConstraintCorrection::init() {
   }
 }
 
+bool ConstraintCorrection::has_constraint_row(int row) const {
+  return mstate && mstate->constraint_jacobian().find_row(row) != nullptr;
+}
+
 }  // namespace sinew

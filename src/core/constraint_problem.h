@@ -84,6 +84,22 @@ class LagrangianConstraint : public Component {
   virtual void constraint_violation(const ConstraintParams& p, std::vector<double>& dfree) = 0;
   // Appends one block per group of its rows, in row order.
   virtual void constraint_resolutions(const ConstraintParams& p, std::vector<ConstraintBlock>& out) = 0;
+
+  // What the LCP solver's warm start needs (SOFA's getConstraintInfo): groups
+  // of rows with persistent ids. Called after build_constraint_matrix, only
+  // by solvers with an initial guess. Default: no information (no warm start).
+  struct BlockInfo {
+    const LagrangianConstraint* parent = nullptr;
+    int first_row = 0;   // row of the first group
+    int lines = 1;       // rows per group
+    int groups = 0;      // number of groups
+    bool has_id = false; // whether ids[offset .. offset+groups) are persistent ids
+    int offset = 0;      // index of the first group's id in the id vector
+  };
+  virtual void constraint_info(std::vector<BlockInfo>& blocks, std::vector<std::int64_t>& ids) {
+    (void)blocks;
+    (void)ids;
+  }
 };
 
 // A constraint correction (SOFA's BaseConstraintCorrection): the compliance
@@ -101,20 +117,47 @@ class ConstraintCorrection : public Component {
   virtual void apply_correction(const ConstraintParams& p, const std::vector<double>& lambda, int x_out, int v_out,
                                 int dx_out) = 0;
 
-  // Unbuilt solvers and the LCP solver (§5.3 "unbuilt helpers").
+  // Unbuilt solvers and the LCP solver (§5.3 "unbuilt helpers"). Rows are
+  // row ids of the problem; ranges are half-open [begin, end).
+  // Whether this state's Jacobian has row `row` (SOFA's hasConstraintNumber).
+  virtual bool has_constraint_row(int row) const;
   // Whether this correction supports the unbuilt interface below.
   virtual bool supports_unbuilt() const { return false; }
-  // Stores cforce = Jᵀf for the initial forces and zeroes the displacements.
-  virtual void reset_for_unbuilt(const std::vector<double>& f) {}
-  // W[a..b) diagonal block += compliance between those rows (no integration factor).
-  virtual void add_block_diagonal_compliance(ConstraintProblem& problem, int begin, int end) {}
+  // Starts an unbuilt resolution: cforce = Jᵀf of the initial forces; the
+  // displacements cdisp start at zero (even when f is not: SOFA's way).
+  // `sequence` (the rows in solving order) may be reordered (wire optimisation).
+  virtual void reset_for_unbuilt(const ConstraintParams& p, const std::vector<double>& f, std::vector<int>& sequence) {
+    (void)p;
+    (void)f;
+    (void)sequence;
+  }
+  // W[begin..end)² += compliance between those rows of this state (Uncoupled:
+  // without the integration factor, SOFA's unbuilt quirk).
+  virtual void add_block_diagonal_compliance(ConstraintProblem& problem, int begin, int end) {
+    (void)problem;
+    (void)begin;
+    (void)end;
+  }
   // d[i] += J_i·cdisp for rows i in [begin, end).
-  virtual void add_constraint_displacement(std::vector<double>& d, int begin, int end) {}
-  // cforce += J_i·df_i for rows in [begin, end); cdisp = C·cforce on the touched DOFs.
-  virtual void set_constraint_dforce(const std::vector<double>& df, int begin, int end) {}
-  // LCP path: externalForce = Jᵀf, then the motion correction from it.
+  virtual void add_constraint_displacement(std::vector<double>& d, int begin, int end) {
+    (void)d;
+    (void)begin;
+    (void)end;
+  }
+  // cforce += Σ J_i·df_i for rows in [begin, end); cdisp follows on the touched DOFs.
+  virtual void set_constraint_dforce(const std::vector<double>& df, int begin, int end) {
+    (void)df;
+    (void)begin;
+    (void)end;
+  }
+  // LCP path: before the build (Uncoupled: externalForce = 0) ...
   virtual void reset_contact_force() {}
-  virtual void apply_contact_force(const ConstraintParams& p, const std::vector<double>& f) {}
+  // ... and after the solve: the correction of the forces f, written into
+  // the state's position, velocity and dx from the free vectors.
+  virtual void apply_contact_force(const ConstraintParams& p, const std::vector<double>& f) {
+    (void)p;
+    (void)f;
+  }
 };
 
 // A constraint solver (SOFA's ConstraintSolver): builds the problem of the

@@ -124,7 +124,137 @@ class LinearSolverConstraintCorrection final : public ConstraintCorrection {
     }
   }
 
+  // ---- unbuilt resolution. SOFA asks the linear solver for partial solves
+  // (only BTDLinearSolver implements them; the others leave the solution
+  // untouched); here the accumulated constraint force is solved with the
+  // full factorisation whenever it changed, which is what an exact partial
+  // solve gives on the DoFs read.
+  bool supports_unbuilt() const override { return true; }
+
+  void reset_for_unbuilt(const ConstraintParams& p, const std::vector<double>& f, std::vector<int>& sequence) override {
+    problem_dt_ = p.dt;  // the helpers below read the ODE factors at the step's dt
+    if (!locate()) return;
+    const ConstraintMatrix& J = mstate->constraint_jacobian();
+    const int w = mstate->info().deriv_width;
+    cforce_.setZero(static_cast<Eigen::Index>(solver_->system()->size()));
+    for (const ConstraintMatrix::Row& r : J.rows()) {
+      const double fc = static_cast<std::size_t>(r.id) < f.size() ? f[r.id] : 0.0;
+      if (fc == 0.0) continue;
+      for (int e = r.begin; e < r.end; ++e) {
+        const double* v = J.value(e);
+        const std::size_t base = offset_ + static_cast<std::size_t>(J.entries()[e].dof) * w;
+        for (int c = 0; c < w; ++c) cforce_[base + c] += v[c] * fc;
+      }
+    }
+    disp_dirty_ = true;
+    if (wire_optimization.value()) wire_order(sequence);
+  }
+
+  // J·A⁻¹·Jᵀ on the block, with the position factor (dt for implicit Euler),
+  // plus the regularisation on its rows that touch this body.
+  void add_block_diagonal_compliance(ConstraintProblem& problem, int begin, int end) override {
+    if (!locate() || end <= begin) return;
+    const ConstraintMatrix& J = mstate->constraint_jacobian();
+    const int w = mstate->info().deriv_width;
+    triplets_.clear();
+    bool any = false;
+    for (int id = begin; id < end; ++id) {
+      const ConstraintMatrix::Row* r = J.find_row(id);
+      if (!r) continue;
+      any = true;
+      for (int e = r->begin; e < r->end; ++e) {
+        const double* v = J.value(e);
+        const std::size_t base = offset_ + static_cast<std::size_t>(J.entries()[e].dof) * w;
+        for (int c = 0; c < w; ++c)
+          if (v[c] != 0.0) triplets_.emplace_back(id - begin, static_cast<int>(base + c), v[c]);
+      }
+    }
+    if (!any) return;
+    const int nb = end - begin;
+    j_.resize(nb, static_cast<Eigen::Index>(solver_->system()->size()));
+    j_.setFromTriplets(triplets_.begin(), triplets_.end());
+    w_.setZero(nb, nb);
+    solver_->add_jminvjt(w_, j_, ode_solver->position_integration_factor(problem_dt_));
+    for (int r = 0; r < nb; ++r)
+      for (int c = 0; c < nb; ++c) problem.w(begin + r, begin + c) += w_(r, c);
+    const double reg = regularization_term.value();
+    if (reg > std::numeric_limits<double>::epsilon())
+      for (int id = begin; id < end; ++id)
+        if (const ConstraintMatrix::Row* r = J.find_row(id); r && r->end > r->begin) problem.w(id, id) += reg;
+  }
+
+  void add_constraint_displacement(std::vector<double>& d, int begin, int end) override {
+    if (!locate() || cforce_.size() == 0) return;
+    if (disp_dirty_) {
+      disp_.setZero(cforce_.size());
+      solver_->solve_global(disp_, cforce_);
+      disp_dirty_ = false;
+    }
+    const ConstraintMatrix& J = mstate->constraint_jacobian();
+    const int w = mstate->info().deriv_width;
+    const double pf = ode_solver->position_integration_factor(problem_dt_);
+    for (int id = begin; id < end; ++id) {
+      const ConstraintMatrix::Row* r = J.find_row(id);
+      if (!r) continue;
+      for (int e = r->begin; e < r->end; ++e) {
+        const double* v = J.value(e);
+        const std::size_t base = offset_ + static_cast<std::size_t>(J.entries()[e].dof) * w;
+        for (int c = 0; c < w; ++c) d[id] += v[c] * (disp_[base + c] * pf);
+      }
+    }
+  }
+
+  void set_constraint_dforce(const std::vector<double>& df, int begin, int end) override {
+    if (!locate() || cforce_.size() == 0) return;
+    const ConstraintMatrix& J = mstate->constraint_jacobian();
+    const int w = mstate->info().deriv_width;
+    for (int id = begin; id < end; ++id) {
+      const ConstraintMatrix::Row* r = J.find_row(id);
+      if (!r) continue;
+      for (int e = r->begin; e < r->end; ++e) {
+        const double* v = J.value(e);
+        const std::size_t base = offset_ + static_cast<std::size_t>(J.entries()[e].dof) * w;
+        for (int c = 0; c < w; ++c) cforce_[base + c] += v[c] * df[id];
+      }
+      disp_dirty_ = true;
+    }
+  }
+
+  // ---- LCP path. SOFA clears the state's force vector here (not
+  // externalForce): nothing reads it before the next step recomputes it.
+  void reset_contact_force() override {
+    std::vector<double>& f = mstate->write(kForce);
+    std::fill(f.begin(), f.end(), 0.0);
+  }
+
+  void apply_contact_force(const ConstraintParams& p, const std::vector<double>& f) override {
+    ConstraintParams q = p;
+    q.x = kFreePosition;
+    q.v = kFreeVelocity;
+    q.order = ConstraintOrder::pos_and_vel;
+    apply_correction(q, f, kPosition, kVelocity, kDx);
+  }
+
  private:
+  // SOFA's wire optimisation: the rows of this body leave the sequence and
+  // come back at its end, ordered by the smallest DoF each row touches
+  // (rows of other bodies keep their order, in front).
+  void wire_order(std::vector<int>& sequence) {
+    const ConstraintMatrix& J = mstate->constraint_jacobian();
+    const std::size_t n = mstate->size();
+    per_dof_.assign(n + 2, {});
+    for (const ConstraintMatrix::Row& r : J.rows()) {
+      std::size_t min_dof = n + 1;
+      for (int e = r.begin; e < r.end; ++e)
+        min_dof = std::min(min_dof, static_cast<std::size_t>(J.entries()[e].dof));
+      per_dof_[min_dof].push_back(r.id);
+      sequence.erase(std::remove(sequence.begin(), sequence.end(), r.id), sequence.end());
+    }
+    // SOFA appends only the DoFs 0..n-1: rows without entries are dropped.
+    for (std::size_t dof = 0; dof < n; ++dof)
+      for (int id : per_dof_[dof]) sequence.push_back(id);
+  }
+
   // Offset of this state in the solver's system; false (with one error) when
   // the system was never assembled or does not hold this state.
   bool locate() {
@@ -166,6 +296,11 @@ class LinearSolverConstraintCorrection final : public ConstraintCorrection {
   Eigen::SparseMatrix<double, Eigen::RowMajor, int> j_;
   Eigen::MatrixXd w_;
   Eigen::VectorXd rhs_, sol_;
+  // unbuilt resolution
+  Eigen::VectorXd cforce_, disp_;  // accumulated constraint force (system layout) and A⁻¹ of it
+  bool disp_dirty_ = true;
+  double problem_dt_ = 0.0;
+  std::vector<std::vector<int>> per_dof_;
 };
 
 }  // namespace

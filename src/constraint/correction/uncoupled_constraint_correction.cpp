@@ -76,7 +76,7 @@ class UncoupledConstraintCorrection final : public ConstraintCorrection {
       const ConstraintMatrix::Row& ra = rows[a];
       {
         double w = 0.0;
-        for (int e = ra.begin; e < ra.end; ++e) w += pair(entries[e].dof, J.value(e), J.value(e), c0);
+        for (int e = ra.begin; e < ra.end; ++e) w += pair(scaled_, entries[e].dof, J.value(e), J.value(e), c0);
         problem.w(ra.id, ra.id) += w;
       }
       // Rows sorted by DOF: the shared DOFs of two rows in one pass.
@@ -88,7 +88,7 @@ class UncoupledConstraintCorrection final : public ConstraintCorrection {
           if (entries[i].dof < entries[k].dof) ++i;
           else if (entries[k].dof < entries[i].dof) ++k;
           else {
-            w += pair(entries[i].dof, J.value(i), J.value(k), c0);
+            w += pair(scaled_, entries[i].dof, J.value(i), J.value(k), c0);
             ++i;
             ++k;
           }
@@ -145,7 +145,134 @@ class UncoupledConstraintCorrection final : public ConstraintCorrection {
     }
   }
 
+  // ---- unbuilt resolution (UnbuiltGaussSeidel, unbuilt LCP): the DoFs keep
+  // the constraint force accumulated so far and the displacement it causes.
+  bool supports_unbuilt() const override { return true; }
+
+  void reset_for_unbuilt(const ConstraintParams&, const std::vector<double>& f, std::vector<int>&) override {
+    const std::size_t n = mstate->size() * mstate->info().deriv_width;
+    cforce_.assign(n, 0.0);
+    // SOFA starts the displacements at zero even when the initial forces
+    // are not: an initial guess is only seen once a DoF's force changes.
+    cdisp_.assign(n, 0.0);
+    add_jt(f, cforce_);
+  }
+
+  // Without the integration factor, unlike add_compliance: with
+  // useOdeSolverIntegrationFactors the unbuilt solvers see a compliance dt
+  // times too large while the correction still scales by dt (SOFA's quirk,
+  // reproduced: BilateralLagrangianConstraint_UGS's reference encodes it).
+  void add_block_diagonal_compliance(ConstraintProblem& problem, int begin, int end) override {
+    const ConstraintMatrix& J = mstate->constraint_jacobian();
+    const auto entries = J.entries();
+    const double c0 = default_compliance.value();
+    for (int id1 = begin; id1 < end; ++id1) {
+      const ConstraintMatrix::Row* ra = J.find_row(id1);
+      if (!ra) continue;
+      double self = 0.0;
+      for (int e = ra->begin; e < ra->end; ++e) self += pair(comp_, entries[e].dof, J.value(e), J.value(e), c0);
+      problem.w(id1, id1) += self;
+      for (int id2 = id1 + 1; id2 < end; ++id2) {
+        const ConstraintMatrix::Row* rb = J.find_row(id2);
+        if (!rb) continue;
+        double w = 0.0;
+        int i = ra->begin, k = rb->begin;
+        while (i < ra->end && k < rb->end) {
+          if (entries[i].dof < entries[k].dof) ++i;
+          else if (entries[k].dof < entries[i].dof) ++k;
+          else {
+            w += pair(comp_, entries[i].dof, J.value(i), J.value(k), c0);
+            ++i;
+            ++k;
+          }
+        }
+        if (w != 0.0) {
+          problem.w(id1, id2) += w;
+          problem.w(id2, id1) += w;
+        }
+      }
+    }
+  }
+
+  void add_constraint_displacement(std::vector<double>& d, int begin, int end) override {
+    if (state() != ComponentState::valid || cdisp_.empty()) return;
+    const ConstraintMatrix& J = mstate->constraint_jacobian();
+    const int w = mstate->info().deriv_width;
+    for (int id = begin; id < end; ++id) {
+      const ConstraintMatrix::Row* r = J.find_row(id);
+      if (!r) continue;
+      for (int e = r->begin; e < r->end; ++e) {
+        const double* v = J.value(e);
+        const double* disp = &cdisp_[static_cast<std::size_t>(J.entries()[e].dof) * w];
+        double s = 0.0;
+        for (int c = 0; c < w; ++c) s += v[c] * disp[c];
+        d[id] += s;
+      }
+    }
+  }
+
+  void set_constraint_dforce(const std::vector<double>& df, int begin, int end) override {
+    if (cforce_.empty()) return;
+    const ConstraintMatrix& J = mstate->constraint_jacobian();
+    const int w = mstate->info().deriv_width;
+    const double c0 = default_compliance.value();
+    for (int id = begin; id < end; ++id) {
+      const ConstraintMatrix::Row* r = J.find_row(id);
+      if (!r) continue;
+      for (int e = r->begin; e < r->end; ++e) {
+        const double* v = J.value(e);
+        const std::size_t dof = static_cast<std::size_t>(J.entries()[e].dof);
+        double* cf = &cforce_[dof * w];
+        for (int c = 0; c < w; ++c) cf[c] += v[c] * df[id];
+        dof_dx(dof, cf, c0, &cdisp_[dof * w]);  // no integration factor
+      }
+    }
+  }
+
+  // ---- LCP path: the contact force goes through externalForce.
+  void reset_contact_force() override {
+    std::vector<double>& ext = mstate->write(kExternalForce);
+    std::fill(ext.begin(), ext.end(), 0.0);
+  }
+
+  void apply_contact_force(const ConstraintParams& p, const std::vector<double>& f) override {
+    if (state() != ComponentState::valid) return;
+    const std::size_t n = mstate->size();
+    const int w = mstate->info().deriv_width;
+    std::vector<double>& ext = mstate->write(kExternalForce);
+    ext.resize(n * w, 0.0);
+    add_jt(f, ext);
+    corr_.assign(n * w, 0.0);
+    const double c0 = default_compliance.value();
+    for (std::size_t i = 0; i < n; ++i) dof_dx(i, &ext[i * w], c0, &corr_[i * w]);
+    const bool ode = use_ode_factors.value();
+    const double xf = ode ? ode_->position_integration_factor(p.dt) : correction_position_factor.value();
+    const double vf = ode ? ode_->velocity_integration_factor(p.dt) : correction_velocity_factor.value() / p.dt;
+    std::vector<double>& dx = mstate->write(kDx);
+    dx.resize(n * w);
+    for (std::size_t k = 0; k < n * w; ++k) dx[k] = corr_[k] * xf;
+    add_to_coords(kFreePosition, kDx, kPosition);
+    const std::vector<double>& vfree = mstate->read(kFreeVelocity);
+    std::vector<double>& v = mstate->write(kVelocity);
+    for (std::size_t k = 0; k < n * w; ++k) v[k] = vfree[k] + corr_[k] * vf;
+  }
+
  private:
+  // out += Jᵀf over the rows whose force is not zero.
+  void add_jt(const std::vector<double>& f, std::vector<double>& out) const {
+    const ConstraintMatrix& J = mstate->constraint_jacobian();
+    const int w = mstate->info().deriv_width;
+    for (const ConstraintMatrix::Row& r : J.rows()) {
+      const double l = static_cast<std::size_t>(r.id) < f.size() ? f[r.id] : 0.0;
+      if (l == 0.0) continue;
+      for (int e = r.begin; e < r.end; ++e) {
+        const double* v = J.value(e);
+        double* o = &out[static_cast<std::size_t>(J.entries()[e].dof) * w];
+        for (int c = 0; c < w; ++c) o[c] += v[c] * l;
+      }
+    }
+  }
+
   // SOFA's correctionFactor: the ODE solver's position factor for position
   // orders, its velocity factor for velocity ones.
   double correction_factor(const ConstraintParams& p) const {
@@ -155,10 +282,11 @@ class UncoupledConstraintCorrection final : public ConstraintCorrection {
                : ode_->velocity_integration_factor(p.dt);
   }
 
-  // Compliance between two Jacobian entries on DoF `dof` (scaled_ holds the factor).
-  double pair(int dof, const double* a, const double* b, double c0) const {
+  // Compliance between two Jacobian entries on DoF `dof`, with the per-DoF
+  // compliances `comp` (scaled_ or comp_) and `c0` for DoFs beyond them.
+  double pair(const std::vector<double>& comp, int dof, const double* a, const double* b, double c0) const {
     if (rigid_) {
-      const double* c = scaled_.data();
+      const double* c = comp.data();
       double w = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) * c[0];
       w += (a[3] * c[1] + a[4] * c[2] + a[5] * c[3]) * b[3];
       w += (a[3] * c[2] + a[4] * c[4] + a[5] * c[5]) * b[4];
@@ -168,7 +296,7 @@ class UncoupledConstraintCorrection final : public ConstraintCorrection {
     const int width = mstate->info().deriv_width;
     double dot = 0.0;
     for (int k = 0; k < width; ++k) dot += a[k] * b[k];
-    return dot * (static_cast<std::size_t>(dof) < scaled_.size() ? scaled_[dof] : c0);
+    return dot * (static_cast<std::size_t>(dof) < comp.size() ? comp[dof] : c0);
   }
 
   // dx of one DoF from its constraint force (unscaled compliance).
@@ -268,6 +396,7 @@ class UncoupledConstraintCorrection final : public ConstraintCorrection {
   std::vector<double> comp_;    // compliance as used (per DoF, or the 7 rigid numbers)
   std::vector<double> scaled_;  // comp_ × integration factor (add_compliance scratch)
   std::vector<double> force_, corr_;
+  std::vector<double> cforce_, cdisp_;  // unbuilt resolution: force and displacement per DoF
 };
 
 }  // namespace

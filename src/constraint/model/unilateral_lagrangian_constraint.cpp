@@ -128,4 +128,21 @@ void UnilateralLagrangianConstraint::constraint_resolutions(const ConstraintPara
   }
 }
 
+void UnilateralLagrangianConstraint::constraint_info(std::vector<BlockInfo>& blocks, std::vector<std::int64_t>& ids) {
+  if (contacts_.empty()) return;
+  BlockInfo info;
+  info.parent = this;
+  info.first_row = contacts_[0].row;
+  // SOFA reads the friction of the first contact only for the whole set.
+  info.lines = contacts_[0].mu > 0.0 ? 3 : 1;
+  info.has_id = true;
+  info.offset = static_cast<int>(ids.size());
+  info.groups = static_cast<int>(contacts_.size());
+  // A contact set seen for the first time gives negated ids, so that its
+  // forces are only reused from the step after next (SOFA's yetIntegrated).
+  for (const Contact& c : contacts_) ids.push_back(yet_integrated ? c.id : -c.id);
+  yet_integrated = true;
+  blocks.push_back(info);
+}
+
 }  // namespace sinew

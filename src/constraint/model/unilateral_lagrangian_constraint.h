@@ -50,6 +50,9 @@ class UnilateralLagrangianConstraint final : public LagrangianConstraint {
   void build_constraint_matrix(const ConstraintParams& p, int& row) override;
   void constraint_violation(const ConstraintParams& p, std::vector<double>& dfree) override;
   void constraint_resolutions(const ConstraintParams& p, std::vector<ConstraintBlock>& out) override;
+  // One group per contact (3 rows if the first contact has friction, else
+  // 1), ids negated until the first call has passed (yet_integrated).
+  void constraint_info(std::vector<BlockInfo>& blocks, std::vector<std::int64_t>& ids) override;
 
  private:
   MechanicalState* s1_;
