@@ -1,5 +1,7 @@
 #include "core/roles.h"
 
+#include <algorithm>
+
 #include "core/mechanical_ops.h"
 #include "core/node.h"
 #include "core/value_text.h"
@@ -54,30 +56,48 @@ void ProjectiveConstraint::init() {
 // Rows of the output's constraint Jacobian mapped onto the inputs: each
 // non-zero component k of an entry on output DOF d is spread over the J
 // entries of scalar row d·w+k. J entries are grouped by output row with a
-// counting sort (stable: the mapping's own order within a row).
+// counting sort (stable: the mapping's own order within a row); each mapped
+// row is accumulated per input DoF and appended once per DoF in increasing
+// DoF order, so an input fed by this mapping alone needs no sort to compress.
 bool Mapping::apply_jt_constraints() {
   MechanicalState* out = output();
   if (!out) return true;
   ConstraintMatrix& c = out->constraint_jacobian();
   if (c.empty()) return true;
   c.compress();
-  constraint_j_.clear();
-  if (!jacobian(constraint_j_)) return false;
-  const int wo = out->info().deriv_width;
-  const std::size_t scalars = out->size() * static_cast<std::size_t>(wo);
-  constraint_row_start_.assign(scalars + 2, 0);
-  for (const JacobianEntry& e : constraint_j_)
-    if (e.row < scalars) ++constraint_row_start_[e.row + 2];
-  for (std::size_t r = 2; r < constraint_row_start_.size(); ++r) constraint_row_start_[r] += constraint_row_start_[r - 1];
-  constraint_sorted_.resize(constraint_j_.size());
-  for (const JacobianEntry& e : constraint_j_)
-    if (e.row < scalars) constraint_sorted_[constraint_row_start_[e.row + 1]++] = e;
-  // constraint_row_start_[r] .. [r+1] now spans row r.
   const std::vector<MechanicalState*> ins = inputs();
+  auto& acc = constraint_sink_.acc_;
+  if (acc.size() < ins.size()) acc.resize(ins.size());
+  for (std::size_t k = 0; k < ins.size(); ++k) {
+    acc[k].width = ins[k]->info().deriv_width;
+    acc[k].slot.assign(ins[k]->size(), -1);
+  }
+  const int wo = out->info().deriv_width;
+  const bool fast = has_jt_entry();
+  std::size_t scalars = 0;
+  if (!fast) {
+    constraint_j_.clear();
+    if (!jacobian(constraint_j_)) return false;
+    scalars = out->size() * static_cast<std::size_t>(wo);
+    constraint_row_start_.assign(scalars + 2, 0);
+    for (const JacobianEntry& e : constraint_j_)
+      if (e.row < scalars) ++constraint_row_start_[e.row + 2];
+    for (std::size_t r = 2; r < constraint_row_start_.size(); ++r)
+      constraint_row_start_[r] += constraint_row_start_[r - 1];
+    constraint_sorted_.resize(constraint_j_.size());
+    for (const JacobianEntry& e : constraint_j_)
+      if (e.row < scalars) constraint_sorted_[constraint_row_start_[e.row + 1]++] = e;
+    // constraint_row_start_[r] .. [r+1] now spans row r.
+  }
+  double one[8] = {};
   const auto entries = c.entries();
   for (const ConstraintMatrix::Row& row : c.rows()) {
     for (int e = row.begin; e < row.end; ++e) {
       const double* v = c.value(e);
+      if (fast) {
+        jt_entry(static_cast<unsigned>(entries[e].dof), v, constraint_sink_);
+        continue;
+      }
       for (int k = 0; k < wo; ++k) {
         if (v[k] == 0.0) continue;
         const std::size_t scalar = static_cast<std::size_t>(entries[e].dof) * wo + k;
@@ -85,12 +105,26 @@ bool Mapping::apply_jt_constraints() {
         for (int j = constraint_row_start_[scalar]; j < constraint_row_start_[scalar + 1]; ++j) {
           const JacobianEntry& je = constraint_sorted_[j];
           if (je.input >= ins.size()) continue;
-          MechanicalState* in = ins[je.input];
-          const int wi = in->info().deriv_width;
-          in->constraint_jacobian().add_component(row.id, static_cast<int>(je.col / wi), static_cast<int>(je.col % wi),
-                                                  v[k] * je.value);
+          const int wi = acc[je.input].width;
+          std::fill(one, one + wi, 0.0);
+          one[je.col % wi] = v[k] * je.value;
+          constraint_sink_.add(je.input, je.col / wi, one);
         }
       }
+    }
+    // Flush the row: one entry per touched DoF, in DoF order.
+    for (std::size_t k = 0; k < ins.size(); ++k) {
+      ConstraintRowSink::Acc& a = acc[k];
+      if (a.dofs.empty()) continue;
+      std::sort(a.dofs.begin(), a.dofs.end());
+      ConstraintMatrix& target = ins[k]->constraint_jacobian();
+      for (int dof : a.dofs) {
+        int& slot = a.slot[dof];
+        target.add(row.id, dof, &a.values[static_cast<std::size_t>(slot) * a.width]);
+        slot = -1;
+      }
+      a.dofs.clear();
+      a.values.clear();
     }
   }
   return true;

@@ -187,6 +187,36 @@ class VisualState : public Component {
   virtual std::vector<double>* visual_vec(int id) = 0;
 };
 
+// Where a mapping's Jᵀ of one constraint-row entry goes (apply_jt_constraints):
+// per input, the row's values accumulated by input DoF.
+class ConstraintRowSink {
+ public:
+  // values: the input's derivative width scalars, added to DoF `dof` of input `input`.
+  void add(std::size_t input, unsigned dof, const double* values) {
+    Acc& a = acc_[input];
+    if (dof >= a.slot.size()) return;
+    int& slot = a.slot[dof];
+    const int w = a.width;
+    if (slot < 0) {
+      slot = static_cast<int>(a.dofs.size());
+      a.dofs.push_back(static_cast<int>(dof));
+      a.values.resize(a.values.size() + static_cast<std::size_t>(w), 0.0);
+    }
+    double* dst = &a.values[static_cast<std::size_t>(slot) * w];
+    for (int c = 0; c < w; ++c) dst[c] += values[c];
+  }
+
+ private:
+  friend class Mapping;
+  struct Acc {
+    int width = 3;
+    std::vector<int> slot;        // per input DoF: index in dofs, or -1
+    std::vector<int> dofs;        // DoFs touched by the current row
+    std::vector<double> values;   // width values per touched DoF
+  };
+  std::vector<Acc> acc_;
+};
+
 class Mapping : public Component {
  public:
   Field<bool> map_forces{this, "mapForces", true, "propagate forces through this mapping", "Mapping"};
@@ -225,10 +255,16 @@ class Mapping : public Component {
   // inputs' DOFs (same row ids), SOFA's applyJT on MatrixDeriv. The default
   // goes through jacobian(); false when this mapping cannot carry constraints.
   virtual bool apply_jt_constraints();
+  // Fast path of apply_jt_constraints for mappings that can give Jᵀ of one
+  // output entry (DoF `out_dof`, derivative `v`) without assembling J.
+  virtual bool has_jt_entry() const { return false; }
+  virtual void jt_entry(unsigned out_dof, const double* v, ConstraintRowSink& sink) const {}
 
  private:
-  std::vector<JacobianEntry> constraint_j_, constraint_sorted_;  // scratch of apply_jt_constraints
+  // Scratch of apply_jt_constraints, kept between steps (no allocation once warm).
+  std::vector<JacobianEntry> constraint_j_, constraint_sorted_;
   std::vector<int> constraint_row_start_;
+  ConstraintRowSink constraint_sink_;
 };
 
 class OdeSolver : public Component {

@@ -161,6 +161,16 @@ void BarycentricMapping::apply_jt(int f, int role) {
   if (const std::vector<double>* out = out_deriv_read(f, role)) table_.scatter_add(*out, in_deriv_write(f, role));
 }
 
+// A constraint entry on output point i spreads over its element's vertices with their weights.
+void BarycentricMapping::jt_entry(unsigned out_dof, const double* v, ConstraintRowSink& sink) const {
+  if (out_dof >= table_.points()) return;
+  for (std::uint32_t k = table_.begin(out_dof); k < table_.end(out_dof); ++k) {
+    const double w = table_.weight(k);
+    const double t[3] = {v[0] * w, v[1] * w, v[2] * w};
+    sink.add(0, table_.vertex(k), t);
+  }
+}
+
 bool BarycentricMapping::jacobian(std::vector<JacobianEntry>& out) {
   table_.jacobian(out);
   return true;

@@ -37,6 +37,8 @@ class BarycentricMapping final : public MappingBase {
   void apply(int x) override;
   void apply_j(int v, int role) override;
   void apply_jt(int f, int role) override;
+  bool has_jt_entry() const override { return true; }
+  void jt_entry(unsigned out_dof, const double* v, ConstraintRowSink& sink) const override;
   bool jacobian(std::vector<JacobianEntry>& out) override;
 
   // Which mapper was chosen ("RegularGrid", "Mesh", "TetrahedronSet", ...), for tests and messages.

@@ -30,6 +30,11 @@ class BaryTable {
   void scatter_add(const std::vector<double>& out, std::vector<double>& in) const;
   // J as entries on input 0: by output point, then term, then coordinate.
   void jacobian(std::vector<JacobianEntry>& out) const;
+  // Terms [begin, end) of output point i: vertex(k), weight(k).
+  std::uint32_t begin(std::size_t i) const { return start_[i]; }
+  std::uint32_t end(std::size_t i) const { return start_[i + 1]; }
+  unsigned vertex(std::uint32_t k) const { return idx_[k]; }
+  double weight(std::uint32_t k) const { return w_[k]; }
 
  private:
   // Output point i owns terms [start_[i], start_[i + 1]).

@@ -16,6 +16,8 @@ class IdentityMapping final : public MappingBase {
   void apply(int x) override;
   void apply_j(int v, int role) override;
   void apply_jt(int f, int role) override;
+  bool has_jt_entry() const override { return dwi_ == dwo_; }
+  void jt_entry(unsigned out_dof, const double* v, ConstraintRowSink& sink) const override { sink.add(0, out_dof, v); }
   bool jacobian(std::vector<JacobianEntry>& out) override;
 
  protected:

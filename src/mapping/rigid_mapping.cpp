@@ -212,6 +212,15 @@ void RigidMapping::apply_djt(int df, int dx, double k) {
   }
 }
 
+bool RigidMapping::has_jt_entry() const { return rigid3() && out_ && out_->state_type() == StateType::vec3; }
+
+void RigidMapping::jt_entry(unsigned out_dof, const double* v, ConstraintRowSink& sink) const {
+  if (out_dof >= rigid_.size()) return;
+  const double* p = &rotated_[out_dof * 3];
+  const double t[6] = {v[0], v[1], v[2], p[1] * v[2] - p[2] * v[1], p[2] * v[0] - p[0] * v[2], p[0] * v[1] - p[1] * v[0]};
+  sink.add(0, rigid_[out_dof], t);
+}
+
 bool RigidMapping::jacobian(std::vector<JacobianEntry>& out) {
   const int dw_in = state_type_info(in_type()).deriv_width;
   for (std::size_t i = 0; i < rigid_.size(); ++i) {

@@ -36,6 +36,9 @@ class RigidMapping final : public MappingBase {
   void apply(int x) override;
   void apply_j(int v, int role) override;
   void apply_jt(int f, int role) override;
+  // Rigid3d → Vec3d: an entry v on point i gives (v, p_i × v) on its frame.
+  bool has_jt_entry() const override;
+  void jt_entry(unsigned out_dof, const double* v, ConstraintRowSink& sink) const override;
   void apply_djt(int df, int dx, double k) override;
   bool jacobian(std::vector<JacobianEntry>& out) override;
   // The Exact geometric stiffness is not symmetric: not available as assembled entries.

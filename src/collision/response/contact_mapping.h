@@ -37,6 +37,15 @@ class ContactMapping final : public Mapping {
   void apply_j(int v, int role) override;
   void apply_jt(int f, int role) override;
   bool jacobian(std::vector<JacobianEntry>& out) override;
+  bool has_jt_entry() const override { return true; }
+  void jt_entry(unsigned out_dof, const double* v, ConstraintRowSink& sink) const override {
+    if (out_dof >= points_.size()) return;
+    const Point& p = points_[out_dof];
+    for (int k = 0; k < p.n; ++k) {
+      const double t[3] = {v[0] * p.w[k], v[1] * p.w[k], v[2] * p.w[k]};
+      sink.add(0, p.v[k], t);
+    }
+  }
 
  private:
   MechanicalState* in_;
