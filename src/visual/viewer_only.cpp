@@ -32,6 +32,7 @@ void register_viewer_only(Registry& r) {
       {"PositionalLight", "viewer light"},
       {"SpotLight", "viewer light"},
       {"GlobalSystemMatrixImage", "image of a linear system's matrix (SofaMatrix plugin)"},
+      {"TrailRenderer", "trail of past positions drawn by the viewer"},
   };
   for (const auto& e : list) {
     ComponentInfo info;
