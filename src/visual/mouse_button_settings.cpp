@@ -47,6 +47,13 @@ class AttachBodyButtonSetting final : public MouseButtonSetting {
   }
 };
 
+// Left button pins the picked particle with a spring.
+class FixPickedParticleButtonSetting final : public MouseButtonSetting {
+ public:
+  Field<double> stiffness{this, "stiffness", 10000.0, "stiffness of the spring that fixes a particle", "Setting",
+                          "force/length"};
+};
+
 }  // namespace
 
 void register_mouse_button_settings(Registry& r) {
@@ -64,6 +71,14 @@ void register_mouse_button_settings(Registry& r) {
     info.category = "Setting";
     info.description = "mouse attaches with a spring (viewer only; no effect in batch runs)";
     info.create = creator<AttachBodyButtonSetting>();
+    r.add(std::move(info));
+  }
+  {
+    ComponentInfo info;
+    info.name = "FixPickedParticleButtonSetting";
+    info.category = "Setting";
+    info.description = "mouse pins the picked particle with a spring (viewer only; no effect in batch runs)";
+    info.create = creator<FixPickedParticleButtonSetting>();
     r.add(std::move(info));
   }
 }
