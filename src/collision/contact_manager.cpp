@@ -98,12 +98,15 @@ void CollisionResponse::create_contacts(std::vector<PairOutputs>& outputs, const
     it->seen = true;
     if (it->contact) it->contact->set_detection_outputs(p.outputs);
   }
-  // Pairs that stopped colliding lose their contact (unless it is kept alive).
+  // Pairs that stopped colliding lose their contact, unless it is kept alive:
+  // then it is told there are no outputs this step (SOFA passes it none).
+  no_outputs_.clear();
   for (auto it = entries_.begin(); it != entries_.end();) {
     if (!it->seen && !(it->contact && it->contact->keep_alive())) {
       if (it->contact) it->contact->cleanup();
       it = entries_.erase(it);
     } else {
+      if (!it->seen) it->contact->set_detection_outputs(no_outputs_);
       ++it;
     }
   }

@@ -51,6 +51,7 @@ class CollisionResponse : public Component {
   std::vector<Entry> entries_;
   FirstSeenIds ids_;
   std::vector<Contact*> contacts_;
+  std::vector<DetectionOutput> no_outputs_;  // what a kept-alive contact gets once its pair stopped colliding
   int creation_errors_ = 0;
 };
 

@@ -59,7 +59,8 @@ void Component::parse(AttributeMap& attrs, Diagnostics& diag) {
                  t == "double" || t == "float" || t == "vector<double>" || t == "state vector" ||
                  (t.rfind("Vec", 0) == 0 && t.back() == 'd') || t.rfind("vector<Vec", 0) == 0) {
         // Real numbers are read like std::istream (a valid prefix is kept): say so.
-        if (const std::string_view bad = parse::first_partial_number(e.value); !bad.empty())
+        const bool list = t != "double" && t != "float" && t.rfind("Vec", 0) != 0;
+        if (const std::string_view bad = parse::first_partial_number(e.value, list); !bad.empty())
           diag.warning(where, describe() + ": field '" + key + "': " + quote_value(bad) +
                                   " is not a number (only its numeric prefix is used)");
       }

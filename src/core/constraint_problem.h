@@ -25,6 +25,11 @@ struct ConstraintParams {
   double dt = 0;
 };
 
+// Factorisation of a bilateral_n block (constraint/solver/resolution.h),
+// owned by the constraint that declares the block.
+struct BlockFactor;
+class LagrangianConstraint;
+
 // A block of rows solved together (SOFA's ConstraintResolution), as data: the
 // solver switches on `kind` (no virtual call per block and iteration).
 struct ConstraintBlock {
@@ -33,6 +38,8 @@ struct ConstraintBlock {
     bilateral3,           // 3 rows: f -= load · W_b⁻¹ d (warm start from warm[0..2])
     unilateral,           // 1 row: f -= d / W_jj, f = max(f, 0)
     unilateral_friction,  // 3 rows (n, t, s): Coulomb cone with coefficient mu
+    bilateral_n,          // `rows` rows: f -= W_b⁻¹ d through an LDLᵀ of W_b kept in *factor
+    stopper,              // 1 row: the free value d − W_jj f kept within [lo, hi]; f starts at 0
   };
   Kind kind = Kind::bilateral;
   int first = 0;   // first row
@@ -45,6 +52,10 @@ struct ConstraintBlock {
   // Set by the solver when a diagonal entry of the block in W is not positive
   // (no body can move along those rows): the block keeps zero forces.
   bool disabled = false;
+  BlockFactor* factor = nullptr;  // bilateral_n (required)
+  double lo = 0, hi = 0;     // stopper: bounds of the free value
+  // Told the block's final forces at store (SOFA's storeLambda; null: nobody).
+  LagrangianConstraint* notify = nullptr;
   // Filled by the solver at init.
   double inv[9] = {};        // bilateral3: W_b⁻¹ (row-major)
   double w[6] = {};          // unilateral_friction: W00 W01 W02 W11 W12 W22
@@ -77,6 +88,14 @@ struct ConstraintProblem {
 // three calls come in this order, with the same numbering, every step.
 class LagrangianConstraint : public Component {
  public:
+  // Data every SOFA constraint set has: the solver group (unused by the
+  // generic solvers), the first row of the last build (output) and the time
+  // after which it stops (recorded; SOFA's Lagrangian path never reads it).
+  Field<int> group{this, "group", 0, "ID of the group of constraints a solver handles", "Constraint"};
+  Field<unsigned> constraint_index{this, "constraintIndex", 0u, "first row of this constraint (output)", "Constraint"};
+  Field<double> end_time{this, "endTime", -1.0, "time after which the constraint stops (negative: never)",
+                         "Constraint", "time"};
+
   // Appends its rows to its states' Jacobians (constraint_jacobian()),
   // numbered from `row`, which it advances.
   virtual void build_constraint_matrix(const ConstraintParams& p, int& row) = 0;
@@ -100,6 +119,9 @@ class LagrangianConstraint : public Component {
     (void)blocks;
     (void)ids;
   }
+  // The final forces of a block whose `notify` is this constraint (rows
+  // first..first+rows-1), once per solve.
+  virtual void store_lambda(int first, const double* f, int rows) {}
 };
 
 // A constraint correction (SOFA's BaseConstraintCorrection): the compliance

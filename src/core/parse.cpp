@@ -88,12 +88,33 @@ bool read_double(std::string_view token, double& out) {
   return ec == std::errc();
 }
 
-std::string_view first_partial_number(std::string_view text) {
+std::string_view first_partial_number(std::string_view text, bool joined_ok) {
   for (std::string_view t : tokens(text)) {
-    const std::size_t n = number_prefix(t, true);
-    if (n > 0 && n < t.size()) return t;
+    std::size_t n = number_prefix(t, true);
+    if (n == 0 || n == t.size()) continue;
+    if (joined_ok) {
+      std::string_view rest = t.substr(n);
+      while (!rest.empty() && (n = number_prefix(rest, true)) > 0) rest.remove_prefix(n);
+      if (rest.empty()) continue;
+    }
+    return t;
   }
   return {};
+}
+
+std::size_t count_list_numbers(std::string_view text) {
+  std::size_t count = 0;
+  for (std::string_view t : tokens(text)) {
+    ++count;
+    std::size_t n = number_prefix(t, true);
+    if (n == 0) continue;
+    t.remove_prefix(n);
+    while (!t.empty() && (n = number_prefix(t, true)) > 0) {
+      ++count;
+      t.remove_prefix(n);
+    }
+  }
+  return count;
 }
 
 bool read_int(std::string_view token, long long& out) {
@@ -226,8 +247,27 @@ bool read(std::string_view text, std::vector<std::string>& v) {
 }
 
 bool read_flat(std::string_view text, int width, std::vector<double>& v) {
-  return read_grouped<double>(text, static_cast<std::size_t>(width), v,
-                              [](std::string_view t, double& x) { return read_double(t, x); });
+  // std::istream reads a list number after number: one ends where its syntax
+  // ends and the rest of the token starts the next one, so "0-0.7" is two
+  // numbers (0, −0.7), as SOFA reads it. Trailing non-numbers are dropped.
+  v.clear();
+  const std::size_t w = width > 0 ? static_cast<std::size_t>(width) : 1;
+  bool ok = true;
+  for (std::string_view tok : tokens(text)) {
+    double x = 0;
+    if (!read_double(tok, x)) {
+      ok = false;
+      break;
+    }
+    while (true) {
+      v.push_back(x);
+      const std::size_t n = number_prefix(tok, true);
+      tok.remove_prefix(n);
+      if (tok.empty() || number_prefix(tok, true) == 0 || !read_double(tok, x)) break;
+    }
+  }
+  v.resize(v.size() - v.size() % w);  // an incomplete trailing element is dropped
+  return ok;
 }
 
 template <int N>

@@ -22,7 +22,13 @@ bool read_double(std::string_view token, double& out);
 bool read_int(std::string_view token, long long& out);
 // The first token of `text` that is a number followed by other characters
 // ("1e3x", "0,5"): read_double accepts its prefix, the caller may warn. Empty if none.
-std::string_view first_partial_number(std::string_view text);
+// With `joined_ok` (lists of reals), a token made only of numbers written
+// without spaces ("0-0.7") is not reported: lists read every one of them.
+std::string_view first_partial_number(std::string_view text, bool joined_ok = false);
+
+// How many values a list of reals holds once numbers written without
+// spaces are split ("1 0-0.7" → 3); a token that is not a number counts one.
+std::size_t count_list_numbers(std::string_view text);
 
 // Splits on ASCII whitespace.
 std::vector<std::string_view> tokens(std::string_view text);

@@ -30,7 +30,9 @@ std::string value_count_problem(const BaseField& f, std::string_view text) {
     width = f.row_width();
   }
   if (width <= 1) return {};
-  const std::size_t n = parse::tokens(text).size();
+  // Lists count numbers written without spaces ("0-0.7") one by one, as they are read.
+  const bool reals = t == "state vector" || (t.rfind("vector<Vec", 0) == 0 && t.ends_with("d>"));
+  const std::size_t n = reals ? parse::count_list_numbers(text) : parse::tokens(text).size();
   if (fixed) {
     if (static_cast<int>(n) == width || n == 0) return {};
     return "expected " + std::to_string(width) + " values (" + t + "), got " + std::to_string(n) +

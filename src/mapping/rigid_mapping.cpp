@@ -4,6 +4,7 @@
 
 #include "core/registry.h"
 #include "core/value_text.h"
+#include "math/quat.h"
 
 namespace sinew {
 
@@ -22,7 +23,10 @@ inline void quat_rotate(double qx, double qy, double qz, double qw, const double
 }  // namespace
 
 bool RigidMapping::init_mapping() {
-  dim_ = state_type_info(out_type()).coord_width;  // Vec3d: 3, Vec2d: 2
+  rigid_out_ = out_type() == StateType::rigid3;
+  dim_ = state_type_info(out_type()).coord_width;  // Vec3d: 3, Vec2d: 2, Rigid3d: 7
+  dw_ = state_type_info(out_type()).deriv_width;
+  pd_ = state_type_info(out_type()).spatial_dim;
   gs_ = geometric_stiffness_id(geometric_stiffness.get(), 0);
   if (gs_ < 0) {
     msg_error("geometricStiffness must be None, Exact or Stabilized (0, 1 or 2), not " +
@@ -73,7 +77,13 @@ bool RigidMapping::init_mapping() {
         return false;
       }
       const double* c = &x_in[r * cw_in];
-      if (rigid3()) {
+      if (rigid_out_) {
+        // Frame in the rigid's frame: centre by the inverse rotation, orientation q_r⁻¹·q.
+        const Quat qi = quat_inverse(Quat::from(c + 3));
+        const Vec3 lc = quat_rotate(qi, Vec3(p[0] - c[0], p[1] - c[1], p[2] - c[2]));
+        for (int k = 0; k < 3; ++k) l[k] = lc[k];
+        quat_mul(qi, Quat::from(p + 3)).store(l + 3);
+      } else if (rigid3()) {
         const double d[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
         quat_rotate(-c[3], -c[4], -c[5], c[6], d, l);  // inverse rotation
       } else {
@@ -97,7 +107,7 @@ bool RigidMapping::init_mapping() {
     }
     rigid_[i] = static_cast<unsigned>(r);
   }
-  rotated_.assign(n_pts * dim_, 0.0);
+  rotated_.assign(n_pts * pd_, 0.0);
   resize_output(n_pts);
   return true;
 }
@@ -111,7 +121,19 @@ void RigidMapping::apply(int x) {
   const std::size_t n = rigid_.size();
   std::vector<double>& out = *outp;
   out.resize(n * dim_);
-  if (rigid3()) {
+  if (rigid_out_) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* c = &in[rigid_[i] * 7];
+      const double* l = &(*pts)[i * 7];
+      double* rp = &rotated_[i * 3];
+      quat_rotate(c[3], c[4], c[5], c[6], l, rp);
+      double* o = &out[i * 7];
+      o[0] = c[0] + rp[0];
+      o[1] = c[1] + rp[1];
+      o[2] = c[2] + rp[2];
+      quat_mul(Quat::from(c + 3), Quat::from(l + 3)).store(o + 3);
+    }
+  } else if (rigid3()) {
     for (std::size_t i = 0; i < n; ++i) {
       const double* c = &in[rigid_[i] * 7];
       double* rp = &rotated_[i * 3];
@@ -140,15 +162,17 @@ void RigidMapping::apply_j(int v, int role) {
   const std::vector<double>& in = in_deriv_write(v, role);
   const std::size_t n = rigid_.size();
   std::vector<double>& out = *outp;
-  out.resize(n * dim_);
+  out.resize(n * dw_);
   if (rigid3()) {
     for (std::size_t i = 0; i < n; ++i) {
       const double* d = &in[rigid_[i] * 6];
       const double* p = &rotated_[i * 3];
-      // v + ω × p
-      out[i * 3 + 0] = d[0] + (d[4] * p[2] - d[5] * p[1]);
-      out[i * 3 + 1] = d[1] + (d[5] * p[0] - d[3] * p[2]);
-      out[i * 3 + 2] = d[2] + (d[3] * p[1] - d[4] * p[0]);
+      double* o = &out[i * dw_];
+      // v + ω × p (and ω itself for frames)
+      o[0] = d[0] + (d[4] * p[2] - d[5] * p[1]);
+      o[1] = d[1] + (d[5] * p[0] - d[3] * p[2]);
+      o[2] = d[2] + (d[3] * p[1] - d[4] * p[0]);
+      if (rigid_out_) o[3] = d[3], o[4] = d[4], o[5] = d[5];
     }
   } else {
     for (std::size_t i = 0; i < n; ++i) {
@@ -165,8 +189,21 @@ void RigidMapping::apply_jt(int f, int role) {
   if (!outp) return;
   const std::vector<double>& out = *outp;
   std::vector<double>& in = in_deriv_write(f, role);
-  const std::size_t n = std::min(rigid_.size(), out.size() / dim_);
-  if (rigid3()) {
+  const std::size_t n = std::min(rigid_.size(), out.size() / dw_);
+  if (rigid_out_) {
+    for (std::size_t i = 0; i < n; ++i) {
+      double* d = &in[rigid_[i] * 6];
+      const double* fi = &out[i * 6];
+      const double* p = &rotated_[i * 3];
+      d[0] += fi[0];
+      d[1] += fi[1];
+      d[2] += fi[2];
+      // τ += τ_i + p × f
+      d[3] += fi[3] + (p[1] * fi[2] - p[2] * fi[1]);
+      d[4] += fi[4] + (p[2] * fi[0] - p[0] * fi[2]);
+      d[5] += fi[5] + (p[0] * fi[1] - p[1] * fi[0]);
+    }
+  } else if (rigid3()) {
     for (std::size_t i = 0; i < n; ++i) {
       double* d = &in[rigid_[i] * 6];
       const double* fi = &out[i * 3];
@@ -196,9 +233,9 @@ void RigidMapping::apply_djt(int df, int dx, double k) {
   const std::vector<double>& child_force = out_->read(kForce);
   std::vector<double>& f = in_deriv_write(df, kDforce);
   const std::vector<double>& d = in_deriv_write(dx, kDx);
-  const std::size_t n = std::min(rigid_.size(), child_force.size() / 3);
+  const std::size_t n = std::min(rigid_.size(), child_force.size() / dw_);
   for (std::size_t i = 0; i < n; ++i) {
-    const double* fi = &child_force[i * 3];
+    const double* fi = &child_force[i * dw_];  // the linear part for frames
     const double* w = &d[rigid_[i] * 6 + 3];
     const double* p = &rotated_[i * 3];
     // torque −= k · f × (δω × p)
@@ -225,7 +262,7 @@ bool RigidMapping::jacobian(std::vector<JacobianEntry>& out) {
   const int dw_in = state_type_info(in_type()).deriv_width;
   for (std::size_t i = 0; i < rigid_.size(); ++i) {
     const std::uint32_t col = rigid_[i] * dw_in;
-    const std::uint32_t row = static_cast<std::uint32_t>(i * dim_);
+    const std::uint32_t row = static_cast<std::uint32_t>(i * dw_);
     if (rigid3()) {
       const double* p = &rotated_[i * 3];
       // Off-diagonal entries are emitted even when zero: the pattern must not
@@ -236,6 +273,8 @@ bool RigidMapping::jacobian(std::vector<JacobianEntry>& out) {
         for (std::uint32_t b = 0; b < 3; ++b)
           if (a != b) out.push_back({0, row + a, col + 3 + b, m[a][b]});
       }
+      if (rigid_out_)
+        for (std::uint32_t a = 0; a < 3; ++a) out.push_back({0, row + 3 + a, col + 3 + a, 1.0});
     } else {
       const double* p = &rotated_[i * 2];
       out.push_back({0, row, col, 1.0});
@@ -252,7 +291,7 @@ void register_rigid_mapping(Registry& r) {
   info.name = "RigidMapping";
   info.category = "Mapping/NonLinear";
   info.description = "points attached to rigid frames";
-  info.templates = {"Rigid3d,Vec3d", "Rigid2d,Vec2d"};
+  info.templates = {"Rigid3d,Vec3d", "Rigid3d,Rigid3d", "Rigid2d,Vec2d"};
   info.default_template = "Rigid3d,Vec3d";
   info.requirement = Requirement::mapping;
   info.create = [](const std::string& t) -> std::unique_ptr<Component> {

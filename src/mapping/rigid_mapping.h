@@ -1,5 +1,6 @@
 // RigidMapping: points attached to rigid frames (spec/mechanics.md §6.3).
-// Rigid3d → Vec3d and Rigid2d → Vec2d.
+// Rigid3d → Vec3d, Rigid3d → Rigid3d (frames attached to frames) and
+// Rigid2d → Vec2d.
 //
 // Local coordinates (`initialPoints`) are taken at init from the output's
 // current positions when not given: as they are, or converted to the frame of
@@ -9,6 +10,8 @@
 // apply: rp_i = R(q_r)·local_i, out_i = c_r + rp_i; J: v_i = v_r + ω_r × rp_i;
 // Jᵀ: F_r += f_i, τ_r += rp_i × f_i. Geometric stiffness (Exact, Rigid3d):
 // τ_r −= k · f_i × (δω_r × rp_i).
+// Rigid3d outputs also carry an orientation: out_i = (c_r + rp_i, q_r·q_i),
+// ω_i = ω_r, and their torques add to the rigid's (τ_r += τ_i + rp_i × f_i).
 #pragma once
 
 #include "mapping/mapping_base.h"
@@ -50,9 +53,12 @@ class RigidMapping final : public MappingBase {
  private:
   bool rigid3() const { return in_type() == StateType::rigid3; }
   std::vector<unsigned> rigid_;    // rigid index per point
-  std::vector<double> local_;      // local coordinates, dim per point
-  std::vector<double> rotated_;    // R·local at the last apply, dim per point
-  int dim_ = 3;
+  std::vector<double> local_;      // local coordinates, dim_ per point
+  std::vector<double> rotated_;    // R·(local centre) at the last apply, spatial dimension per point
+  int dim_ = 3;                    // output coordinate width (Rigid3d: 7)
+  int pd_ = 3;                     // spatial dimension of the output points
+  int dw_ = 3;                     // output derivative width (Rigid3d: 6)
+  bool rigid_out_ = false;
   int gs_ = 0;
 };
 

@@ -34,6 +34,11 @@ void register_viewer_only(Registry& r) {
       {"ViewerSetting", "viewer window settings (resolution, fullscreen, picking method)"},
       {"RecordedCamera", "camera that follows a recorded or rotating path"},
       {"GlobalSystemMatrixImage", "image of a linear system's matrix (SofaMatrix plugin)"},
+      {"TrailRenderer", "trail of past positions drawn by the viewer"},
+      {"RecordedCamera", "viewer camera following a recorded or rotating path"},
+      {"ViewerSetting", "resolution, camera mode and picking of the viewer"},
+      {"StatsSetting", "statistics the GUI application prints or exports"},
+      {"SofaDefaultPathSetting", "folders where the GUI application saves records and plots"},
   };
   for (const auto& e : list) {
     ComponentInfo info;

@@ -60,6 +60,20 @@ bool resolution_init(ConstraintBlock& b, const ConstraintProblem& p, double* f) 
       b.w[4] = p.w(j + 1, j + 2);
       b.w[5] = p.w(j + 2, j + 2);
       return true;
+    case ConstraintBlock::Kind::bilateral_n: {
+      BlockFactor& F = *b.factor;
+      F.w.resize(b.rows, b.rows);
+      for (int r = 0; r < b.rows; ++r)
+        for (int c = 0; c < b.rows; ++c) F.w(r, c) = p.w(j + r, j + c);
+      F.ldlt.compute(F.w);
+      F.step.resize(b.rows);
+      return F.ldlt.info() == Eigen::Success;
+    }
+    case ConstraintBlock::Kind::stopper:
+      b.w[0] = p.w(j, j);
+      b.w[1] = 1.0 / b.w[0];
+      f[j] = 0.0;
+      return true;
   }
   return true;
 }
@@ -100,6 +114,23 @@ void resolution_solve(const ConstraintBlock& b, const ConstraintProblem& p, doub
       }
       return;
     }
+    case ConstraintBlock::Kind::bilateral_n: {
+      BlockFactor& F = *b.factor;
+      F.step = F.ldlt.solve(Eigen::Map<const Eigen::VectorXd>(d + j, b.rows));
+      for (int r = 0; r < b.rows; ++r) f[j + r] -= F.step[r];
+      return;
+    }
+    case ConstraintBlock::Kind::stopper: {
+      // The value the row would have without its own force, pushed back onto the bounds.
+      const double free = d[j] - b.w[0] * f[j];
+      if (free > b.hi)
+        f[j] = (b.hi - free) * b.w[1];
+      else if (free < b.lo)
+        f[j] = (b.lo - free) * b.w[1];
+      else
+        f[j] = 0;
+      return;
+    }
   }
 }
 
@@ -108,6 +139,7 @@ void resolution_store(ConstraintBlock& b, const double* f) {
   if (b.warm)
     for (int r = 0; r < b.rows; ++r) b.warm[r] = f[b.first + r];
   if (b.active) *b.active = f[b.first] != 0.0;
+  if (b.notify) b.notify->store_lambda(b.first, f + b.first, b.rows);
 }
 
 }  // namespace sinew

@@ -7,9 +7,21 @@
 // current violation d; store: keeps the forces for the next step's warm start.
 #pragma once
 
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
 #include "core/constraint_problem.h"
 
 namespace sinew {
+
+// The diagonal block of a bilateral_n block and its LDLᵀ (SOFA's
+// BilateralConstraintResolutionNDof). Owned by the constraint so that its
+// storage is reused from step to step.
+struct BlockFactor {
+  Eigen::MatrixXd w;
+  Eigen::LDLT<Eigen::MatrixXd> ldlt;
+  Eigen::VectorXd step;  // scratch of the solve
+};
 
 // Prepares the block; false when a 3×3 bilateral block of W is singular
 // (the block then keeps zero forces).
