@@ -32,6 +32,9 @@ void register_viewer_only(Registry& r) {
       {"PositionalLight", "viewer light"},
       {"SpotLight", "viewer light"},
       {"GlobalSystemMatrixImage", "image of a linear system's matrix (SofaMatrix plugin)"},
+      {"ViewerSetting", "resolution and fullscreen mode of the viewer"},
+      // spec/interaction.md §5.7: the GUI's mouse attach made as a Lagrangian constraint.
+      {"ConstraintAttachButtonSetting", "mouse attach through a Lagrangian constraint (GUI)"},
   };
   for (const auto& e : list) {
     ComponentInfo info;
