@@ -35,8 +35,6 @@ void register_viewer_only(Registry& r) {
       {"RecordedCamera", "camera that follows a recorded or rotating path"},
       {"GlobalSystemMatrixImage", "image of a linear system's matrix (SofaMatrix plugin)"},
       {"TrailRenderer", "trail of past positions drawn by the viewer"},
-      {"RecordedCamera", "viewer camera following a recorded or rotating path"},
-      {"ViewerSetting", "resolution, camera mode and picking of the viewer"},
       {"StatsSetting", "statistics the GUI application prints or exports"},
       {"SofaDefaultPathSetting", "folders where the GUI application saves records and plots"},
   };

@@ -55,8 +55,6 @@ class LinearSolverConstraintCorrection final : public ConstraintCorrection {
       set_state(ComponentState::invalid);
       return;
     }
-    if (wire_optimization.value())
-      msg_warning("wire_optimization only reorders rows for the unbuilt solvers; it has no effect with built ones");
   }
 
   void add_compliance(const ConstraintParams& p, ConstraintProblem& problem) override {
@@ -242,7 +240,8 @@ class LinearSolverConstraintCorrection final : public ConstraintCorrection {
   void wire_order(std::vector<int>& sequence) {
     const ConstraintMatrix& J = mstate->constraint_jacobian();
     const std::size_t n = mstate->size();
-    per_dof_.assign(n + 2, {});
+    per_dof_.resize(n + 2);
+    for (std::vector<int>& rows : per_dof_) rows.clear();
     for (const ConstraintMatrix::Row& r : J.rows()) {
       std::size_t min_dof = n + 1;
       for (int e = r.begin; e < r.end; ++e)

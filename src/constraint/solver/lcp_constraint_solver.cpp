@@ -127,7 +127,7 @@ void LCPConstraintSolver::compute_initial_guess() {
     const int nbl = std::min(info.lines, lines->lines);
     for (int c = 0; c < info.groups; ++c) {
       const std::int64_t id = ids_[info.offset + c];
-      auto it = std::lower_bound(prev_entries_.begin(), prev_entries_.end(), PrevEntry{info.parent, id, 0},
+      auto it = std::lower_bound(prev_entries_.begin(), prev_entries_.end(), PrevEntry{info.parent, id, 0, 0},
                                  [](const PrevEntry& a, const PrevEntry& b) {
                                    return entry_less(a.parent, a.id, b.parent, b.id);
                                  });
@@ -152,10 +152,12 @@ void LCPConstraintSolver::keep_contact_forces() {
     if (!info.parent || !info.has_id) continue;
     prev_lines_.push_back({info.parent, info.lines});
     for (int c = 0; c < info.groups; ++c)
-      prev_entries_.push_back({info.parent, ids_[info.offset + c], info.first_row + c * info.lines});
+      prev_entries_.push_back({info.parent, ids_[info.offset + c], info.first_row + c * info.lines,
+                               static_cast<int>(prev_entries_.size())});
   }
-  std::stable_sort(prev_entries_.begin(), prev_entries_.end(), [](const PrevEntry& a, const PrevEntry& b) {
-    return entry_less(a.parent, a.id, b.parent, b.id);
+  std::sort(prev_entries_.begin(), prev_entries_.end(), [](const PrevEntry& a, const PrevEntry& b) {
+    if (a.parent != b.parent || a.id != b.id) return entry_less(a.parent, a.id, b.parent, b.id);
+    return a.order < b.order;
   });
   // Keep the last of equal keys.
   std::size_t out = 0;

@@ -86,6 +86,7 @@ class LCPConstraintSolver : public ConstraintSolver {
     const LagrangianConstraint* parent;
     std::int64_t id;
     int row;
+    int order;  // position in the step's list (a later duplicate id wins)
   };
   struct PrevLines {
     const LagrangianConstraint* parent;
