@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#define SINEW_ALLOC_COUNTER_DECLARE_ONLY  // the counter is defined in constraint_allocation_test.cpp
 #include "alloc_counter.h"
 #include "constraint/solver/resolution.h"
 #include "core/constraint_problem.h"

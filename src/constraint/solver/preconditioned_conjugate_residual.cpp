@@ -10,7 +10,7 @@
 #include <cmath>
 #include <vector>
 
-#include "constraint/solver/block_gauss_seidel_constraint_solver.h"
+#include "constraint/solver/built_constraint_solver.h"
 #include "constraint/solver/resolution.h"
 #include "core/registry.h"
 
@@ -18,7 +18,7 @@ namespace sinew {
 
 namespace {
 
-class PreconditionedConjugateResidual final : public BlockGaussSeidelConstraintSolver {
+class PreconditionedConjugateResidual final : public BuiltConstraintSolver {
  protected:
   void solve_system() override {
     ConstraintProblem& P = problem_;

@@ -27,6 +27,11 @@ class SparseLDLSolver final : public MatrixLinearSolver {
   Link<OrderingMethod> ordering_method{this, "orderingMethod", "fill-reducing ordering (default: AMD)"};
 
   void init() override;
+  // J·A⁻¹·Jᵀ = Yᵀ·D⁻¹·Y with Y = L⁻¹·P·Jᵀ: one forward solve per row of J,
+  // restricted to the rows its few non-zeros reach in the elimination tree
+  // (sparse right-hand side), then sparse dot products.
+  void add_jminvjt(Eigen::MatrixXd& result, const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& J,
+                   double fact) override;
   // Symbolic factorizations done so far (tests).
   long symbolic_count() const { return symbolic_count_; }
   bool factorized() const { return factorized_; }
@@ -42,6 +47,9 @@ class SparseLDLSolver final : public MatrixLinearSolver {
   std::vector<int> perm_, invperm_, lp_, parent_, lnz_, flag_, li_, pattern_;
   std::vector<double> lx_, d_, inv_d_, y_, t_;
   bool factorized_ = false, have_symbolic_ = false, warned_indefinite_ = false;
+  // add_jminvjt scratch: Y by column (row of J), its pattern in increasing order.
+  std::vector<int> y_start_, y_idx_, reach_mark_, reach_;
+  std::vector<double> y_val_, dense_;
   long symbolic_count_ = 0;
 };
 
