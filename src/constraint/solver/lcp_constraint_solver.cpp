@@ -100,7 +100,7 @@ void LCPConstraintSolver::solve_constraint(const ConstraintParams& p, int /*x_ou
     std::fill(problem_.f.begin(), problem_.f.end(), 0.0);
   } else if (n > 0 && !result_.converged && (!friction || n % 3 == 0) && !warned_divergence_) {
     warned_divergence_ = true;
-    msg_warning("no convergence after " + std::to_string(result_.iterations) + " iterations: error " +
+    msg_warning("no convergence after " + std::to_string(result_.iterations) + " iterations: residual " +
                 parse::format_double(result_.error) + " (tolerance " + parse::format_double(tolerance.value()) +
                 ", " + std::to_string(n) + " rows); the contacts may contradict each other (warned once)");
   }
