@@ -65,11 +65,16 @@ void ConstraintMatrix::compress() {
     if (rows_.empty() || rows_.back().id != entries_[i].row) rows_.push_back({entries_[i].row, e, e + 1});
     else rows_.back().end = e + 1;
   }
+  // Unbuilt solvers look rows up by id at every iteration: a direct table.
+  row_of_id_.assign(rows_.empty() ? 0 : static_cast<std::size_t>(rows_.back().id) + 1, -1);
+  for (std::size_t r = 0; r < rows_.size(); ++r)
+    if (rows_[r].id >= 0) row_of_id_[static_cast<std::size_t>(rows_[r].id)] = static_cast<int>(r);
 }
 
 const ConstraintMatrix::Row* ConstraintMatrix::find_row(int id) const {
-  auto it = std::lower_bound(rows_.begin(), rows_.end(), id, [](const Row& r, int v) { return r.id < v; });
-  return it != rows_.end() && it->id == id ? &*it : nullptr;
+  if (id < 0 || static_cast<std::size_t>(id) >= row_of_id_.size() || rows_.empty()) return nullptr;
+  const int r = row_of_id_[static_cast<std::size_t>(id)];
+  return r < 0 ? nullptr : &rows_[static_cast<std::size_t>(r)];
 }
 
 void ConstraintMatrix::zero_dof(int dof, int first_component, int count) {

@@ -59,6 +59,7 @@ class ConstraintMatrix {
   std::vector<Entry> entries_;
   std::vector<double> values_;
   std::vector<Row> rows_;
+  std::vector<int> row_of_id_;  // compress(): index in rows_ of each row id (−1: none), for find_row
   // compress() scratch
   std::vector<int> order_;
   std::vector<Entry> entries_tmp_;
