@@ -62,27 +62,7 @@ void GenericConstraintSolver::gauss_seidel_sweep(bool measure_error, double tol,
     }
     resolution_solve(b, P, d, f);
     if (!measure_error) continue;
-    double block_error = 0.0;
-    if (nb > 1) {
-      for (int l = 0; l < nb; ++l) {
-        double line = 0.0;
-        for (int m = 0; m < nb; ++m) {
-          const double e = P.w(j + l, j + m) * (f[j + m] - f_old_[m]);
-          line += e * e;
-        }
-        line = std::sqrt(line);
-        if (line > tol) verified = false;
-        block_error += line;
-      }
-    } else {
-      block_error = std::fabs(P.w(j, j) * (f[j] - f_old_[0]));
-      if (block_error > tol) verified = false;
-    }
-    if (b.tolerance != 0.0) {
-      if (block_error > b.tolerance) verified = false;
-      block_error *= tol / b.tolerance;
-    }
-    error += block_error;
+    error += resolution_error(b, P, f, f_old_.data(), tol, verified);
   }
 }
 

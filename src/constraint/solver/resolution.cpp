@@ -134,6 +134,32 @@ void resolution_solve(const ConstraintBlock& b, const ConstraintProblem& p, doub
   }
 }
 
+double resolution_error(const ConstraintBlock& b, const ConstraintProblem& p, const double* f, const double* f_old,
+                        double tol, bool& verified) {
+  const int j = b.first, nb = b.rows;
+  double block_error = 0.0;
+  if (nb > 1) {
+    for (int l = 0; l < nb; ++l) {
+      double line = 0.0;
+      for (int m = 0; m < nb; ++m) {
+        const double e = p.w(j + l, j + m) * (f[j + m] - f_old[m]);
+        line += e * e;
+      }
+      line = std::sqrt(line);
+      if (line > tol) verified = false;
+      block_error += line;
+    }
+  } else {
+    block_error = std::fabs(p.w(j, j) * (f[j] - f_old[0]));
+    if (block_error > tol) verified = false;
+  }
+  if (b.tolerance != 0.0) {
+    if (block_error > b.tolerance) verified = false;
+    block_error *= tol / b.tolerance;
+  }
+  return block_error;
+}
+
 void resolution_store(ConstraintBlock& b, const double* f) {
   if (b.disabled) return;
   if (b.warm)

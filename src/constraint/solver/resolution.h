@@ -30,5 +30,10 @@ bool resolution_init(ConstraintBlock& b, const ConstraintProblem& p, double* f);
 // (the friction law updates its tangential entries in place, as SOFA does).
 void resolution_solve(const ConstraintBlock& b, const ConstraintProblem& p, double* d, double* f);
 void resolution_store(ConstraintBlock& b, const double* f);
+// Error of one block after a projection (SOFA's Gauss-Seidel measure): |W_jj·Δf| for
+// one row, Σ_l ‖W_l,block·Δf‖ for more, rescaled by the block's own tolerance;
+// clears `verified` when a line exceeds tol. f_old: the block's forces before.
+double resolution_error(const ConstraintBlock& b, const ConstraintProblem& p, const double* f, const double* f_old,
+                        double tol, bool& verified);
 
 }  // namespace sinew

@@ -94,27 +94,7 @@ void UnbuiltGaussSeidelConstraintSolver::solve_system() {
       for (int o = owners_begin_[bi]; o < owners_begin_[bi + 1]; ++o)
         owners_[o]->add_constraint_displacement(P.d, j, j + nb);
       resolution_solve(b, P, P.d.data(), f);
-      double block_error = 0.0;
-      if (nb > 1) {
-        for (int l = 0; l < nb; ++l) {
-          double line = 0.0;
-          for (int m = 0; m < nb; ++m) {
-            const double e = P.w(j + l, j + m) * (f[j + m] - f_old_[m]);
-            line += e * e;
-          }
-          line = std::sqrt(line);
-          if (line > tol) verified = false;
-          block_error += line;
-        }
-      } else {
-        block_error = std::fabs(P.w(j, j) * (f[j] - f_old_[0]));
-        if (block_error > tol) verified = false;
-      }
-      if (b.tolerance != 0.0) {
-        if (block_error > b.tolerance) verified = false;
-        block_error *= tol / b.tolerance;
-      }
-      error += block_error;
+      error += resolution_error(b, P, f, f_old_.data(), tol, verified);
       // The corrections learn the change of force (when the block pushes or pushed).
       bool update = false;
       for (int l = 0; l < nb; ++l) update = update || f[j + l] != 0.0 || f_old_[l] != 0.0;
