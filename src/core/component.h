@@ -15,6 +15,7 @@
 namespace sinew {
 
 class Node;
+class MeshTopologyBase;
 struct Event;
 
 enum class ComponentState { valid, invalid };
@@ -71,6 +72,10 @@ class Component : public Base {
   virtual void reset() {}
   virtual void store_reset_state() {}
   virtual void handle_event(Event&) {}
+  // A topology this component may depend on is changing: called during the top-down
+  // visit of a propagation (core/topology_change.h); `source.topology_changes()` lists
+  // the events. Per-element data follows through TopologyHandlers instead.
+  virtual void handle_topology_change(MeshTopologyBase& source) {}
   // Whether handle_event should be called (true for components that react to events).
   virtual bool wants_events() const { return listening.value(); }
 

@@ -140,3 +140,25 @@ void Mapping::parse(AttributeMap& attrs, Diagnostics& diag) {
 }
 
 }  // namespace sinew
+
+namespace sinew {
+
+// ---------------------------------------------------------------- topology handlers
+
+TopologyHandler::~TopologyHandler() { attach(nullptr); }
+
+void TopologyHandler::attach(MeshTopologyBase* t) {
+  if (topology_ == t) return;
+  if (topology_) {
+    auto& v = topology_->handlers_;
+    v.erase(std::remove(v.begin(), v.end(), this), v.end());
+  }
+  topology_ = t;
+  if (t) t->handlers_.push_back(this);
+}
+
+MeshTopologyBase::~MeshTopologyBase() {
+  for (TopologyHandler* h : handlers_) h->topology_ = nullptr;
+}
+
+}  // namespace sinew

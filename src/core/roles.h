@@ -16,6 +16,7 @@
 #include "core/component.h"
 #include "core/constraint_matrix.h"
 #include "core/matrix_sink.h"
+#include "core/topology_change.h"
 #include "math/types.h"
 
 namespace sinew {
@@ -61,6 +62,9 @@ class MechanicalState : public Component {
   const StateTypeInfo& info() const { return state_type_info(state_type()); }
   virtual std::size_t size() const = 0;
   virtual void resize(std::size_t n) = 0;
+  // Point removal of the state's topology (SOFA's handleStateChange on POINTSREMOVED): for
+  // each index (decreasing), every vector's last DoF moves into the slot; then size −= n.
+  virtual void remove_points(const std::vector<unsigned>& decreasing) = 0;
   // Vector `id` (coordinate or derivative layout), allocated and zero-filled
   // to size() on first use. Standard ids are the state's fields.
   // read(): the values; the vector's version is left alone, so a version
@@ -230,6 +234,9 @@ class Mapping : public Component {
   virtual std::vector<MechanicalState*> inputs() const = 0;
   virtual MechanicalState* output() const = 0;
   virtual VisualState* visual_output() const { return nullptr; }
+  // Whether the output's points are the input's (SOFA's sameTopology): a point removal
+  // of the input's topology then also removes the output's DoFs.
+  virtual bool same_topology() const { return false; }
   // Mechanical mappings carry forces and dx (framework.md trap T1: mappings to
   // visual models are flagged non-mechanical at init). A mechanical mapping
   // with mapForces=false prunes the force/dx visitors below it.
@@ -327,6 +334,14 @@ class MeshTopologyBase : public Component {
   enum class Elements { edges, triangles, quads, tetrahedra, hexahedra };
   virtual std::uint64_t elements_version(Elements) const { return 0; }
 
+  // Topological changes (core/topology_change.h). Handlers are called in
+  // registration order for every event being propagated; the list is only
+  // filled during a propagation (empty otherwise).
+  ~MeshTopologyBase() override;
+  const std::vector<TopologyHandler*>& topology_handlers() const { return handlers_; }
+  const std::vector<TopologyChange>& topology_changes() const { return changes_; }
+  std::vector<TopologyChange>& edit_topology_changes() { return changes_; }
+
   // Neighbourhood queries (SOFA's XAroundY / XInY), built on first use and
   // cached until the element lists change; one entry per vertex/edge/...
   // "Around" lists hold element indices in increasing order, except
@@ -360,6 +375,9 @@ class MeshTopologyBase : public Component {
   virtual unsigned quad_index(unsigned, unsigned, unsigned, unsigned) const { return kInvalidIndex; }
 
  protected:
+  friend class TopologyHandler;
+  std::vector<TopologyHandler*> handlers_;
+  std::vector<TopologyChange> changes_;
   static const std::vector<IndexList>& empty_lists() {
     static const std::vector<IndexList> e;
     return e;

@@ -19,6 +19,7 @@ class IdentityMapping final : public MappingBase {
   bool has_jt_entry() const override { return dwi_ == dwo_; }
   void jt_entry(unsigned out_dof, const double* v, ConstraintRowSink& sink) const override { sink.add(0, out_dof, v); }
   bool jacobian(std::vector<JacobianEntry>& out) override;
+  bool same_topology() const override { return true; }
 
  protected:
   bool init_mapping() override;

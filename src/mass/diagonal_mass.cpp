@@ -62,6 +62,8 @@ void DiagonalMass::init() {
   const MassElement k = meshgeo::checked_mass_element(*this, *topology);
   if (k == MassElement::none) return;
   kind_ = static_cast<int>(k);
+  follow_.owner = this;
+  follow_.attach(topology.get());
   if (!meshgeo::mass_elements_in_states(*this, *topology, k, s.size(), geometry_state->size())) return;
 
   // A short vertexMass list is padded with its last value.
@@ -115,6 +117,44 @@ void DiagonalMass::init() {
   } else {
     init_from_total();
   }
+}
+
+void DiagonalMass::on_topology_change(const MeshTopologyBase& t, const TopologyChange& c) {
+  using T = TopologyChangeType;
+  if (c.type == T::points_removed) {
+    remove_swap_last(vertex_mass.edit(), c.indices);
+    return;
+  }
+  const MassElement k = static_cast<MassElement>(kind_);
+  const bool mine = (c.type == T::edges_removed && k == MassElement::edge) ||
+                    (c.type == T::triangles_removed && k == MassElement::triangle) ||
+                    (c.type == T::tetrahedra_removed && k == MassElement::tetra);
+  if (!mine) return;
+  // Called before the container changes: the removed elements can still be read.
+  const MechanicalState& g = *geometry_state;
+  const std::vector<double>& X = g.read(kRestPosition);
+  const int w = g.info().coord_width;
+  const double rho = mass_density.value();
+  std::vector<double>& m = vertex_mass.edit();
+  double total = total_mass.value();
+  auto take = [&](const auto& e, double share) {
+    for (unsigned v : e)
+      if (v < m.size()) m[v] -= share;
+    total -= static_cast<double>(e.size()) * share;
+  };
+  for (unsigned i : c.indices) {
+    if (k == MassElement::tetra && i < t.tetrahedra().size()) {
+      const Tetra& e = t.tetrahedra()[i];
+      take(e, (rho * meshgeo::tetra_volume(X, e[0], e[1], e[2], e[3])) / 4.0);
+    } else if (k == MassElement::triangle && i < t.triangles().size()) {
+      const Triangle& e = t.triangles()[i];
+      take(e, (rho * meshgeo::triangle_area(X, w, e[0], e[1], e[2])) / 3.0);
+    } else if (k == MassElement::edge && i < t.edges().size()) {
+      const Edge& e = t.edges()[i];
+      take(e, (rho * meshgeo::edge_length(X, w, e[0], e[1])) / 2.0);
+    }
+  }
+  total_mass.set(total);
 }
 
 void DiagonalMass::add_force(const MechParams& p) {

@@ -40,6 +40,14 @@ class DiagonalMass final : public Mass {
  private:
   // Σ of the per-vertex shares with density `rho`, written into vertexMass.
   double compute_vertex_mass(double rho);
+  // Topological changes (SOFA's vertexMass handler): a removed element takes its share
+  // (massDensity · rest measure / vertex count) from its vertices and from totalMass; a
+  // removed point's mass is replaced by the last point's (swap with last).
+  void on_topology_change(const MeshTopologyBase& t, const TopologyChange& c);
+  struct Follow final : TopologyHandler {
+    DiagonalMass* owner = nullptr;
+    void apply(const MeshTopologyBase& t, const TopologyChange& c) override { owner->on_topology_change(t, c); }
+  } follow_;
   int kind_ = 0;  // meshgeo::MassElement
 };
 

@@ -92,6 +92,22 @@ void MechanicalObject::resize(std::size_t n) {
   size_field.set(static_cast<int>(n));
 }
 
+void MechanicalObject::remove_points(const std::vector<unsigned>& decreasing) {
+  // SOFA's handleStateChange(POINTSREMOVED) → replaceValue(last, i) on every vector, then resize.
+  const auto& inf = info();
+  for (int id : {kPosition, kVelocity, kForce, kExternalForce, kRestPosition, kDx, kFreePosition, kFreeVelocity,
+                 kResetPosition, kResetVelocity}) {
+    Field<FlatVec>* f = standard(id);
+    f->get();
+    if (f->value().data.empty()) continue;
+    if (f->parent()) f->set_parent(nullptr);  // the values now differ from the linked source
+    remove_swap_last(f->edit().data, decreasing, is_coord_vec(id) ? inf.coord_width : inf.deriv_width);
+  }
+  for (auto& [id, v] : dynamic_) remove_swap_last(v, decreasing, inf.deriv_width);
+  size_ = decreasing.size() < size_ ? size_ - decreasing.size() : 0;
+  size_field.set(static_cast<int>(size_));
+}
+
 std::vector<double>& MechanicalObject::storage(int id) {
   if (Field<FlatVec>* f = standard(id)) {
     f->get();  // follows a data link (position="@loader.position") like every read

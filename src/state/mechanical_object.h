@@ -47,6 +47,7 @@ class MechanicalObject final : public MechanicalState {
   StateType state_type() const override { return type_; }
   std::size_t size() const override { return size_; }
   void resize(std::size_t n) override;
+  void remove_points(const std::vector<unsigned>& decreasing) override;
   const std::vector<double>& read(int id) const override;
   bool has_vec(int id) const override;
   std::vector<double>& write(int id) override;

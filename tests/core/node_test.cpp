@@ -21,6 +21,7 @@ class TestState final : public MechanicalState {
   StateType state_type() const override { return StateType::vec3; }
   std::size_t size() const override { return 0; }
   void resize(std::size_t) override {}
+  void remove_points(const std::vector<unsigned>&) override {}
   bool has_vec(int) const override { return false; }
   const std::vector<double>& read(int) const override { return data_; }
   std::vector<double>& write(int) override { return data_; }

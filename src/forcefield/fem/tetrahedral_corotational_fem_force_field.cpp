@@ -23,12 +23,25 @@ void TetrahedralCorotationalFEMForceField::init() {
     set_state(ComponentState::invalid);
     return;
   }
+  if (topology) tetra_version_ = topology->elements_version(MeshTopologyBase::Elements::tetrahedra);
   if (!fem_.forces_supported())
     msg_error("computeGlobalMatrix is not supported with method " + method.get() +
               ": this force field adds no force (as SOFA)");
 }
 
+void TetrahedralCorotationalFEMForceField::follow_topology() {
+  if (!topology || topology->elements_version(MeshTopologyBase::Elements::tetrahedra) == tetra_version_) return;
+  if (topology->tetrahedra().empty()) {
+    // Every element was removed: no force, no error.
+    fem_ = fem::TetraFEM{};
+    tetra_version_ = topology->elements_version(MeshTopologyBase::Elements::tetrahedra);
+    return;
+  }
+  init();
+}
+
 void TetrahedralCorotationalFEMForceField::add_force(const MechParams& p) {
+  follow_topology();
   MechanicalState& s = *mstate;
   add_tetra_fem_force(fem_, s, p);
   // SOFA computes it after each addForce, from the state's current positions.
@@ -41,6 +54,7 @@ void TetrahedralCorotationalFEMForceField::add_dforce(const MechParams& p, doubl
 }
 
 bool TetrahedralCorotationalFEMForceField::build_stiffness(MatrixSink& K) {
+  follow_topology();
   add_tetra_fem_stiffness(fem_, mstate.get(), K);
   return true;
 }

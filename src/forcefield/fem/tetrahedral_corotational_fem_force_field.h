@@ -50,7 +50,12 @@ class TetrahedralCorotationalFEMForceField final : public ForceField {
   const fem::TetraFEM& kernel() const { return fem_; }
 
  private:
+  // Follows topological changes by rebuilding the element data from the rest positions (which
+  // the state keeps in step with the points) when the tetrahedron list moved: the same values a
+  // per-element handler would keep, at the cost of one re-initialisation per changed step.
+  void follow_topology();
   fem::TetraFEM fem_;
+  std::uint64_t tetra_version_ = 0;
 };
 
 }  // namespace sinew

@@ -1,5 +1,7 @@
 #include "topology/dynamic/point_set_topology_container.h"
 
+#include <algorithm>
+
 #include "core/registry.h"
 
 namespace sinew {
@@ -47,6 +49,7 @@ void PointSetTopologyContainer::set_nb_points(std::size_t n) { nb_points_f.set(s
 void PointSetTopologyContainer::clear_topology() {
   MeshContainer::clear_topology();
   nb_points_f.set(0);
+  mesh_.reset();
 }
 
 void PointSetTopologyContainer::init() {
@@ -68,6 +71,101 @@ void PointSetTopologyContainer::init() {
   if (!main_list_empty(*this)) create_lower_lists();
   // Element indices beyond the point count make the neighbourhood buffers inconsistent (SOFA warns).
   if (nb_points_f.value() > 0) check_indices(nb_points_f.value());
+}
+
+// ---------------------------------------------------------------- removal view
+
+bool PointSetTopologyContainer::live() const {
+  if (!mesh_) return false;
+  edges();
+  triangles();
+  tetrahedra();
+  const std::uint64_t v[4] = {edges_f.version(), triangles_f.version(), tetrahedra_f.version(), nb_points_f.version()};
+  return std::equal(v, v + 4, mesh_versions_);
+}
+
+topo::DynamicMesh& PointSetTopologyContainer::begin_edit() {
+  if (!live()) {
+    auto m = std::make_unique<topo::DynamicMesh>();
+    m->nb_points = static_cast<unsigned>(nb_points());
+    // Copies of the cached arrays (built now if needed), for the kinds the container holds.
+    if (!edges().empty()) m->edges_around_vertex = MeshContainer::edges_around_vertex();
+    if (!triangles().empty()) {
+      m->triangles_around_vertex = MeshContainer::triangles_around_vertex();
+      if (!edges().empty()) {
+        m->edges_in_triangle = MeshContainer::edges_in_triangle();
+        m->triangles_around_edge = MeshContainer::triangles_around_edge();
+      }
+    }
+    if (!tetrahedra().empty()) {
+      m->tetrahedra_around_vertex = MeshContainer::tetrahedra_around_vertex();
+      if (!edges().empty()) {
+        m->edges_in_tetrahedron = MeshContainer::edges_in_tetrahedron();
+        m->tetrahedra_around_edge = MeshContainer::tetrahedra_around_edge();
+      }
+      if (!triangles().empty()) {
+        m->triangles_in_tetrahedron = MeshContainer::triangles_in_tetrahedron();
+        m->tetrahedra_around_triangle = MeshContainer::tetrahedra_around_triangle();
+      }
+    }
+    // Vertex shells span every point, isolated ones included.
+    for (auto* shells : {&m->edges_around_vertex, &m->triangles_around_vertex, &m->tetrahedra_around_vertex})
+      if (!shells->empty() && shells->size() < m->nb_points) shells->resize(m->nb_points);
+    mesh_ = std::move(m);
+    // The lists now differ from any linked source (a loader's output).
+    for (BaseField* f : std::initializer_list<BaseField*>{&edges_f, &triangles_f, &tetrahedra_f})
+      if (f->parent()) f->set_parent(nullptr);
+  }
+  // Written in place; end_edit moves the versions of what changed.
+  mesh_->edges = &edges_f.raw();
+  mesh_->triangles = &triangles_f.raw();
+  mesh_->tetrahedra = &tetrahedra_f.raw();
+  return *mesh_;
+}
+
+void PointSetTopologyContainer::end_edit(bool edges_changed, bool triangles_changed, bool tetrahedra_changed) {
+  if (!mesh_) return;
+  if (edges_changed) edges_f.touch();
+  if (triangles_changed) triangles_f.touch();
+  if (tetrahedra_changed) tetrahedra_f.touch();
+  if (nb_points_f.value() != mesh_->nb_points) nb_points_f.set(mesh_->nb_points);
+  mesh_versions_[0] = edges_f.version();
+  mesh_versions_[1] = triangles_f.version();
+  mesh_versions_[2] = tetrahedra_f.version();
+  mesh_versions_[3] = nb_points_f.version();
+}
+
+#define SINEW_LIVE_QUERY(type, name)                                   \
+  const type& PointSetTopologyContainer::name() const {                \
+    return live() ? mesh_->name : MeshContainer::name();               \
+  }
+SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, edges_around_vertex)
+SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, triangles_around_vertex)
+SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, triangles_around_edge)
+SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, tetrahedra_around_vertex)
+SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, tetrahedra_around_edge)
+SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, tetrahedra_around_triangle)
+using EdgesInTriangle = std::vector<std::array<unsigned, 3>>;
+using EdgesInTetrahedron = std::vector<std::array<unsigned, 6>>;
+using TrianglesInTetrahedron = std::vector<std::array<unsigned, 4>>;
+SINEW_LIVE_QUERY(EdgesInTriangle, edges_in_triangle)
+SINEW_LIVE_QUERY(EdgesInTetrahedron, edges_in_tetrahedron)
+SINEW_LIVE_QUERY(TrianglesInTetrahedron, triangles_in_tetrahedron)
+#undef SINEW_LIVE_QUERY
+
+unsigned PointSetTopologyContainer::triangle_index(unsigned a, unsigned b, unsigned c) const {
+  if (!live()) return MeshContainer::triangle_index(a, b, c);
+  // Live shells are not sorted: scan the first vertex's triangles.
+  const auto& tav = mesh_->triangles_around_vertex;
+  if (a >= tav.size()) return kInvalidIndex;
+  const auto& tris = triangles_f.value();
+  for (unsigned t : tav[a]) {
+    const Triangle& tr = tris[t];
+    const bool hb = tr[0] == b || tr[1] == b || tr[2] == b;
+    const bool hc = tr[0] == c || tr[1] == c || tr[2] == c;
+    if (hb && hc) return t;
+  }
+  return kInvalidIndex;
 }
 
 void register_point_set_topology_container(Registry& r) {

@@ -1,8 +1,12 @@
 #include "topology/dynamic/point_set_topology_modifier.h"
 
+#include <algorithm>
+#include <functional>
+
 #include "core/node.h"
 #include "core/registry.h"
 #include "topology/dynamic/point_set_topology_container.h"
+#include "topology/mapping/topological_mapping.h"
 
 namespace sinew {
 
@@ -22,6 +26,98 @@ void PointSetTopologyModifier::init() {
 }
 
 bool PointSetTopologyModifier::accepts(const Component& c) const { return dynamic_cast<const PointSetTopologyContainer*>(&c) != nullptr; }
+
+PointSetTopologyContainer* PointSetTopologyModifier::dynamic_container() const {
+  return static_cast<PointSetTopologyContainer*>(container_);
+}
+
+std::vector<unsigned> PointSetTopologyModifier::checked_ids(std::vector<unsigned> ids, std::size_t count,
+                                                            const char* what) {
+  std::vector<unsigned> out;
+  out.reserve(ids.size());
+  for (unsigned i : ids) {
+    if (i >= count) msg_warning(std::string(what) + " " + std::to_string(i) + " is out of bounds (" +
+                                std::to_string(count) + ") and is not removed");
+    else out.push_back(i);
+  }
+  std::sort(out.begin(), out.end(), std::greater<unsigned>());
+  const auto dup = std::unique(out.begin(), out.end());
+  if (dup != out.end()) {
+    msg_warning(std::string("a ") + what + " index is listed more than once; it is removed once");
+    out.erase(dup, out.end());
+  }
+  return out;
+}
+
+void PointSetTopologyModifier::warn(TopologyChangeType type, const std::vector<unsigned>& decreasing) {
+  container_->edit_topology_changes().push_back(TopologyChange{type, decreasing});
+}
+
+namespace {
+// SOFA's TopologyChangeVisitor, top-down from the modifier's node.
+void visit_topology_change(Node& n, MeshTopologyBase& source) {
+  for (const auto& o : n.objects())
+    if (auto* tm = dynamic_cast<TopologicalMapping*>(o.get()); tm && tm->input.get() == &source)
+      tm->update_top_down();
+  for (const auto& o : n.objects()) o->handle_topology_change(source);
+  for (const auto& c : n.children()) visit_topology_change(*c, source);
+}
+
+// SOFA's StateChangeVisitor: the states of the subtree whose topology is `source` lose the
+// points; a node under a mapping that does not keep the points (not sameTopology) is pruned.
+void visit_state_change(Node& n, bool root, MeshTopologyBase& source, const std::vector<unsigned>& decreasing) {
+  if (!root && n.mechanical_mapping && !n.mechanical_mapping->same_topology()) return;
+  if (n.mechanical_state && n.get_mesh_topology_link() == &source) n.mechanical_state->remove_points(decreasing);
+  for (const auto& c : n.children()) visit_state_change(*c, false, source, decreasing);
+}
+}  // namespace
+
+void PointSetTopologyModifier::propagate_topological_changes() {
+  auto& changes = container_->edit_topology_changes();
+  if (changes.empty()) return;
+  changes.push_back(TopologyChange{TopologyChangeType::ending, {}});
+  // A handler may detach itself (or another) while it runs: iterate over a copy.
+  const std::vector<TopologyHandler*> handlers = container_->topology_handlers();
+  for (TopologyHandler* h : handlers)
+    if (h->attached() == container_)
+      for (const TopologyChange& c : changes) h->apply(*container_, c);
+  if (node()) visit_topology_change(*node(), *container_);
+  container_->edit_topology_changes().clear();
+}
+
+void PointSetTopologyModifier::remove_points_process(const std::vector<unsigned>& decreasing, bool remove_dof) {
+  PointSetTopologyContainer& c = *dynamic_container();
+  topo::DynamicMesh& m = c.begin_edit();
+  topo::remove_points_process(m, decreasing);
+  c.end_edit(!m.edges->empty(), !m.triangles->empty(), !m.tetrahedra->empty());
+  if (remove_dof && node()) visit_state_change(*node(), true, c, decreasing);
+}
+
+void PointSetTopologyModifier::remove_points(std::vector<unsigned> ids, bool remove_dof) {
+  if (!container_) return;
+  const std::vector<unsigned> d = checked_ids(std::move(ids), container_->nb_points(), "point");
+  if (d.empty()) return;
+  warn(TopologyChangeType::points_removed, d);
+  propagate_topological_changes();
+  remove_points_process(d, remove_dof);
+}
+
+void PointSetTopologyModifier::cascade_isolated_points(std::vector<unsigned> points) {
+  if (points.empty()) return;
+  std::sort(points.begin(), points.end(), std::greater<unsigned>());
+  warn(TopologyChangeType::points_removed, points);
+  propagate_topological_changes();
+  remove_points_process(points, propagate_to_dof.value());
+}
+
+bool PointSetTopologyModifier::remove_items(const std::vector<unsigned>& ids, std::string* why) {
+  if (!container_) {
+    if (why) *why = "the modifier has no container";
+    return false;
+  }
+  remove_points(ids, propagate_to_dof.value());
+  return true;
+}
 
 void register_point_set_topology_modifier(Registry& r) {
   ComponentInfo info;

@@ -1,13 +1,26 @@
-// PointSetTopologyModifier: Topology modifier dedicated to a point topology.
-// No topological changes yet: it finds its container (same node) at init
-// and accepts its attributes.
+// PointSetTopologyModifier: Topology modifier dedicated to a point topology,
+// and the base of the dynamic modifiers: it finds its container at init and
+// carries topological changes (spec/interaction.md §7.2, core/topology_change.h).
+//
+// A removal is warn → propagate → process: the events are queued on the
+// container (indices sorted in decreasing order), propagated (the container's
+// handlers, then a top-down visit from this modifier's node: topological
+// mappings whose input is the container, then every object's
+// handle_topology_change, then the children), and only then applied to the
+// arrays (topology/dynamic/element_removal.h). Elements left isolated are
+// removed the same way, in SOFA's cascade order; with `propagateToDOF` the
+// states of the subtree that use the container lose the removed points too.
 #pragma once
+
+#include <string>
+#include <vector>
 
 #include "core/roles.h"
 
 namespace sinew {
 
 class MeshContainer;
+class PointSetTopologyContainer;
 
 class PointSetTopologyModifier : public TopologyObject {
  public:
@@ -18,10 +31,30 @@ class PointSetTopologyModifier : public TopologyObject {
   // The container this modifier edits (first of the node, else of its ancestors).
   MeshContainer* container() const { return container_; }
 
+  // SOFA's removeItems for this modifier's element kind (ids in any order). Indices out of
+  // range are skipped with a warning naming them; false with `why` when this modifier cannot
+  // remove its elements (quads and hexahedra are not supported yet) or has no container.
+  virtual bool remove_items(const std::vector<unsigned>& ids, std::string* why);
+  // Removes points (expected isolated: elements using them are not removed); with `remove_dof`
+  // the states using the container follow.
+  void remove_points(std::vector<unsigned> ids, bool remove_dof);
+  // Sends the queued events (plus the ending event) to handlers and the subtree, then clears them.
+  void propagate_topological_changes();
+
  protected:
   // Whether `c` is a container this modifier can edit.
   virtual bool accepts(const Component& c) const;
   virtual const char* container_kind() const { return "PointSetTopologyContainer"; }
+
+  PointSetTopologyContainer* dynamic_container() const;
+  // Keeps ids < count (warning for the others, naming this modifier), distinct, sorted decreasing.
+  std::vector<unsigned> checked_ids(std::vector<unsigned> ids, std::size_t count, const char* what);
+  // Queues one event on the container.
+  void warn(TopologyChangeType type, const std::vector<unsigned>& decreasing);
+  // The process step of point removal (arrays, then the states when `remove_dof`).
+  void remove_points_process(const std::vector<unsigned>& decreasing, bool remove_dof);
+  // Warn, propagate and process the isolated points a removal found (any order, distinct).
+  void cascade_isolated_points(std::vector<unsigned> points);
 
  private:
   MeshContainer* container_ = nullptr;

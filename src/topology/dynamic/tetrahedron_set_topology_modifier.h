@@ -1,6 +1,7 @@
 // TetrahedronSetTopologyModifier: Topology modifier dedicated to a tetrahedral topology.
-// No topological changes yet: it finds its container (same node) at init
-// and accepts its attributes.
+// Removes tetrahedra with SOFA's cascade: faces and edges left without a tetrahedron
+// (one warn/propagate for both, then processed), then isolated points (when
+// `removeIsolated`); see point_set_topology_modifier.h.
 #pragma once
 
 #include "topology/dynamic/triangle_set_topology_modifier.h"
@@ -12,6 +13,11 @@ class MeshContainer;
 class TetrahedronSetTopologyModifier : public TriangleSetTopologyModifier {
  public:
   Field<bool> remove_isolated{this, "removeIsolated", true, "remove points left without elements", "Topology"};
+
+ public:
+  // SOFA's removeTetrahedra(ids, removeIsolatedItems).
+  void remove_tetrahedra(std::vector<unsigned> ids, bool remove_isolated_items = true);
+  bool remove_items(const std::vector<unsigned>& ids, std::string* why) override;
 
  protected:
   bool accepts(const Component& c) const override;

@@ -1,12 +1,45 @@
 #include "topology/dynamic/triangle_set_topology_modifier.h"
 
+#include <algorithm>
+#include <functional>
+
 #include "core/node.h"
 #include "core/registry.h"
+#include "topology/dynamic/point_set_topology_container.h"
 #include "topology/dynamic/triangle_set_topology_container.h"
 
 namespace sinew {
 
 bool TriangleSetTopologyModifier::accepts(const Component& c) const { return dynamic_cast<const TriangleSetTopologyContainer*>(&c) != nullptr; }
+
+void TriangleSetTopologyModifier::remove_triangles(std::vector<unsigned> ids, bool remove_isolated_edges,
+                                                   bool remove_isolated_points) {
+  if (!container()) return;
+  const std::vector<unsigned> d = checked_ids(std::move(ids), container()->triangles().size(), "triangle");
+  if (d.empty()) return;
+  warn(TopologyChangeType::triangles_removed, d);
+  propagate_topological_changes();
+  PointSetTopologyContainer& c = *dynamic_container();
+  topo::Isolated iso = topo::remove_triangles_process(c.begin_edit(), d, remove_isolated_edges, remove_isolated_points);
+  c.end_edit(false, true, false);
+  if (!iso.edges.empty()) {
+    std::sort(iso.edges.begin(), iso.edges.end(), std::greater<unsigned>());
+    warn(TopologyChangeType::edges_removed, iso.edges);
+    propagate_topological_changes();
+    topo::remove_edges_process(c.begin_edit(), iso.edges, false);
+    c.end_edit(true, false, false);
+  }
+  cascade_isolated_points(std::move(iso.points));
+}
+
+bool TriangleSetTopologyModifier::remove_items(const std::vector<unsigned>& ids, std::string* why) {
+  if (!container()) {
+    if (why) *why = "the modifier has no container";
+    return false;
+  }
+  remove_triangles(ids, true, true);
+  return true;
+}
 
 void register_triangle_set_topology_modifier(Registry& r) {
   ComponentInfo info;

@@ -1,6 +1,5 @@
 // TriangleSetTopologyModifier: Topology modifier dedicated to a triangular topology.
-// No topological changes yet: it finds its container (same node) at init
-// and accepts its attributes.
+// Removes triangles (with their isolated edges and points); see point_set_topology_modifier.h.
 #pragma once
 
 #include "topology/dynamic/edge_set_topology_modifier.h"
@@ -12,6 +11,13 @@ class MeshContainer;
 class TriangleSetTopologyModifier : public EdgeSetTopologyModifier {
  public:
   Field<std::vector<unsigned>> list_out{this, "list_Out", {}, "degenerate triangles found (output)", "Topology"};
+
+ public:
+  // SOFA's removeTriangles: warn, propagate, process; then the edges left without a triangle
+  // (warn, propagate, process) and the points left without a triangle, when asked.
+  void remove_triangles(std::vector<unsigned> ids, bool remove_isolated_edges, bool remove_isolated_points);
+  // removeItems: removeTriangles(ids, true, true).
+  bool remove_items(const std::vector<unsigned>& ids, std::string* why) override;
 
  protected:
   bool accepts(const Component& c) const override;

@@ -76,4 +76,10 @@ bool TopologicalMapping::input_grid_cells(int& nx, int& ny) const {
   return true;
 }
 
+void TopologicalMapping::update_top_down() {
+  if (warned_static_) return;
+  warned_static_ = true;
+  msg_warning("does not follow topological changes of its input yet: its output keeps its elements");
+}
+
 }  // namespace sinew

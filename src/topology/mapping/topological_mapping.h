@@ -20,7 +20,13 @@ class TopologicalMapping : public Component {
   Link<MeshTopologyBase> input{this, "input", "source topology"};
   Link<MeshContainer> output{this, "output", "target topology"};
 
+  // The input is changing (spec/interaction.md §7.2: called first in the propagation visit,
+  // with input->topology_changes() listing the events). Default: the output does not follow;
+  // one warning says so (mappings that follow override this).
+  virtual void update_top_down();
+
  protected:
+  bool warned_static_ = false;
   // Common checks: both links resolved; with `check_types`, the input and
   // output types must be `in` and `out` (SOFA's checkTopologyInputTypes).
   bool check_links(bool check_types, ElementType in, ElementType out);

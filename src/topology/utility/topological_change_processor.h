@@ -1,0 +1,65 @@
+// TopologicalChangeProcessor (spec/interaction.md §7.4): replays a list of
+// topological changes read from a file (plain or gzip) at the times it gives.
+//
+// At every AnimateBeginEvent, with t = time + shift, lines are read while the
+// current block is due (time ≤ t up to machine epsilon); a `T=` line that is
+// due discards what was collected, so only the last due block runs. Then each
+// `REMOVE= n` line with its index line calls removeItems on the first topology
+// modifier found from the topology's node upwards.
+// Not supported yet, refused at init with an error naming file:line: `ADD=`
+// and `INCISE=` lines, and `useDataInputs`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/roles.h"
+
+namespace sinew {
+
+class PointSetTopologyModifier;
+
+class TopologicalChangeProcessor : public Component {
+ public:
+  TopologicalChangeProcessor();
+
+  Field<std::string> filename{this, "filename", "", "input file name for topological changes", "Changes"};
+  Field<std::vector<double>> list_changes{this, "listChanges", {}, "0 for adding, 1 for removing, 2 for cutting and associated indices (unused, as in SOFA)", "Changes"};
+  Field<double> interval{this, "interval", 0.0, "time duration between 2 actions (useDataInputs)", "Changes", "time"};
+  Field<double> shift{this, "shift", 0.0, "shift between times in the file and times when they are read", "Changes", "time"};
+  Field<bool> loop{this, "loop", false, "re-read the file when reaching its end", "Changes"};
+  Field<bool> use_data_inputs{this, "useDataInputs", false, "use the Data lists instead of the file (not supported yet)", "Changes"};
+  Field<double> time_to_remove{this, "timeToRemove", 0.0, "useDataInputs: time of the removals", "Changes", "time"};
+  Field<std::vector<unsigned>> points_to_remove{this, "pointsToRemove", {}, "point ids to remove (useDataInputs)", "Changes"};
+  Field<std::vector<unsigned>> edges_to_remove{this, "edgesToRemove", {}, "edge ids to remove (useDataInputs)", "Changes"};
+  Field<std::vector<unsigned>> triangles_to_remove{this, "trianglesToRemove", {}, "triangle ids to remove (useDataInputs)", "Changes"};
+  Field<std::vector<unsigned>> quads_to_remove{this, "quadsToRemove", {}, "quad ids to remove (useDataInputs)", "Changes"};
+  Field<std::vector<unsigned>> tetrahedra_to_remove{this, "tetrahedraToRemove", {}, "tetrahedron ids to remove (useDataInputs)", "Changes"};
+  Field<std::vector<unsigned>> hexahedra_to_remove{this, "hexahedraToRemove", {}, "hexahedron ids to remove (useDataInputs)", "Changes"};
+  Field<bool> save_indices_at_init{this, "saveIndicesAtInit", false, "save the incision indices at init (INCISE)", "Changes"};
+  Field<double> epsilon_snap_path{this, "epsilonSnapPath", 0.1, "epsilon snap path (INCISE)", "Changes"};
+  Field<double> epsilon_snap_border{this, "epsilonSnapBorder", 0.25, "epsilon snap border (INCISE)", "Changes"};
+  Field<bool> draw{this, "draw", false, "draw information (viewer)", "Visualization"};
+  Link<MeshTopologyBase> topology{this, "topology", "link to the topology container (default: the node's)"};
+
+  void init() override;
+  void reinit() override { init(); }
+  void handle_event(Event& e) override;
+  bool wants_events() const override { return true; }
+
+  // One step's work (public for tests): reads the blocks due at `t` and applies them.
+  void process(double t);
+
+ private:
+  // SOFA's readNext: the lines of the last due block (T= lines included).
+  std::vector<std::size_t> read_due(double t);
+  std::string where(std::size_t line) const;
+
+  std::vector<std::string> lines_;  // as getline returns them; the last one reaches end of file
+  std::size_t next_ = 0;            // next line to read
+  std::string cmd_;                 // first token of the last non-blank line (kept on blank lines, as a stream read)
+  double next_time_ = 0, loop_time_ = 0;
+  PointSetTopologyModifier* modifier_ = nullptr;
+};
+
+}  // namespace sinew
