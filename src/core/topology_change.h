@@ -26,12 +26,21 @@ enum class TopologyChangeType {
   quads_removed,
   tetrahedra_removed,
   hexahedra_removed,
+  // Additions (propagated after the container changed; indices = the new elements, increasing).
+  points_added,
+  edges_added,
+  triangles_added,
+  tetrahedra_added,
   ending,  // closes each propagated list (SOFA's ENDING_EVENT)
 };
 
 struct TopologyChange {
   TopologyChangeType type = TopologyChangeType::ending;
   std::vector<unsigned> indices;  // removals: decreasing order, each < the count before the change
+  // Additions that carry them (SOFA's ancestors/coefficients): per new element, the elements it
+  // derives from and their weights; empty when none were given.
+  std::vector<std::vector<unsigned>> ancestors;
+  std::vector<std::vector<double>> coefficients;
 };
 
 // A component's per-element data following a container (SOFA's topology-data

@@ -14,7 +14,9 @@
 #include "test_scene.h"
 #include "topology/dynamic/tetrahedron_set_topology_container.h"
 #include "topology/dynamic/tetrahedron_set_topology_modifier.h"
+#include "topology/dynamic/triangle_set_topology_container.h"
 #include "topology/dynamic/triangle_set_topology_modifier.h"
+#include "topology/mapping/tetra2_triangle_topological_mapping.h"
 #include "topology/utility/topological_change_processor.h"
 
 using namespace sinew;
@@ -253,4 +255,58 @@ TEST(TopologicalChangeProcessor, AppliesDueRemoveBlocksAndRefusesAdd) {
   init_root(*s.root);
   EXPECT_TRUE(sinew::test::any_contains(sinew::test::messages(s.root->diagnostics(), Severity::error),
                                         "a.txt:2: ADD= changes are not supported yet"));
+}
+
+// Tetra2TriangleTopologicalMapping following removeTetrahedra({0}) on the three tetrahedra
+// (spec/interaction.md §7.3; input faces t0..t9 as above). Boundary at init: t1 t2 t3 t5 t6 t7
+// t8 t9 → locals 0..7. Hand-worked:
+//  TETRAHEDRAREMOVED {0}: t0 is shared with T1 = (1,2,3,4), where it is face 3 ((0,2,1) →
+//   (1,3,2)); local 8 = (1,3,2), loc2glob[8] = 0.
+//  TRIANGLESREMOVED {3,2,1} → locals {2,1,0}; the maps mirror both swap-pops:
+//   loc2glob = [2,3,0,5,6,1]; the output removes its triangles 2,1,0 by swap-with-last:
+//   (2,5,4) (2,3,5) (1,3,2) (1,4,3) (1,2,4) (3,4,5), and its edges (0,1) (0,2) (0,3).
+//  POINTSREMOVED {0}: point 5 becomes 0 in the output too.
+TEST(TopologyRemoval, Tetra2TriangleMappingFollowsTetrahedronRemoval) {
+  auto s = load(R"(<Node>
+  <MechanicalObject name="dofs" position="0 0 0  1 1 1  2 4 8  3 9 27  4 16 64  5 25 125"/>
+  <TetrahedronSetTopologyContainer name="topo" tetrahedra="0 1 2 3  1 2 3 4  2 3 4 5"/>
+  <TetrahedronSetTopologyModifier name="mod"/>
+  <Node name="skin">
+    <TriangleSetTopologyContainer name="tris"/>
+    <TriangleSetTopologyModifier name="tmod"/>
+    <Tetra2TriangleTopologicalMapping name="map" input="@../topo" output="@tris"/>
+  </Node>
+</Node>)");
+  auto& mod = *get<TetrahedronSetTopologyModifier>(*s.root, "mod");
+  ASSERT_EQ(s.root->children().size(), 1u);
+  Node& skin = *s.root->children()[0];
+  ASSERT_NE(get<TriangleSetTopologyContainer>(skin, "tris"), nullptr);
+  auto& tris = *get<TriangleSetTopologyContainer>(skin, "tris");
+  auto& map = *get<Tetra2TriangleTopologicalMapping>(skin, "map");
+  ASSERT_EQ(tris.triangles(), list<Triangle>({{0, 3, 2}, {0, 1, 3}, {0, 2, 1}, {1, 4, 3}, {1, 2, 4}, {3, 4, 5},
+                                              {2, 5, 4}, {2, 3, 5}}));
+  ASSERT_EQ(map.loc2glob(), list<unsigned>({1, 2, 3, 5, 6, 7, 8, 9}));
+
+  mod.remove_tetrahedra({0});
+
+  EXPECT_EQ(tris.triangles(),
+            list<Triangle>({{2, 0, 4}, {2, 3, 0}, {1, 3, 2}, {1, 4, 3}, {1, 2, 4}, {3, 4, 0}}));
+  EXPECT_EQ(map.loc2glob(), list<unsigned>({2, 3, 0, 5, 6, 1}));
+  for (unsigned loc = 0; loc < map.loc2glob().size(); ++loc) EXPECT_EQ(map.glob2loc(map.loc2glob()[loc]), loc);
+  EXPECT_EQ(tris.nb_points(), 5u);
+  EXPECT_EQ(tris.edges().size(), 9u);  // 12 edges of the 8 faces, (0,1) (0,2) (0,3) gone
+  for (const Edge& e : tris.edges()) EXPECT_TRUE(e[0] != 5 && e[1] != 5);
+  EXPECT_EQ(topo::check_dynamic_mesh(tris.begin_edit()), "");
+
+  // Removing the middle tetrahedron uncovers faces on both sides; the output keeps one face per
+  // input boundary face.
+  mod.remove_tetrahedra({1});
+  auto& in = *get<TetrahedronSetTopologyContainer>(*s.root, "topo");
+  EXPECT_EQ(tris.triangles().size(), in.triangles().size());
+  for (unsigned loc = 0; loc < map.loc2glob().size(); ++loc) {
+    Triangle a = tris.triangles()[loc], b = in.triangles()[map.loc2glob()[loc]];
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    EXPECT_EQ(a, b) << "local " << loc;
+  }
 }

@@ -50,7 +50,11 @@ std::vector<unsigned> PointSetTopologyModifier::checked_ids(std::vector<unsigned
 }
 
 void PointSetTopologyModifier::warn(TopologyChangeType type, const std::vector<unsigned>& decreasing) {
-  container_->edit_topology_changes().push_back(TopologyChange{type, decreasing});
+  container_->edit_topology_changes().push_back(TopologyChange{type, decreasing, {}, {}});
+}
+
+void PointSetTopologyModifier::warn(TopologyChange change) {
+  container_->edit_topology_changes().push_back(std::move(change));
 }
 
 namespace {
@@ -75,12 +79,29 @@ void visit_state_change(Node& n, bool root, MeshTopologyBase& source, const std:
 void PointSetTopologyModifier::propagate_topological_changes() {
   auto& changes = container_->edit_topology_changes();
   if (changes.empty()) return;
-  changes.push_back(TopologyChange{TopologyChangeType::ending, {}});
+  changes.push_back(TopologyChange{TopologyChangeType::ending, {}, {}, {}});
   // A handler may detach itself (or another) while it runs: iterate over a copy.
   const std::vector<TopologyHandler*> handlers = container_->topology_handlers();
   for (TopologyHandler* h : handlers)
     if (h->attached() == container_)
       for (const TopologyChange& c : changes) h->apply(*container_, c);
+  if (node()) visit_topology_change(*node(), *container_);
+  container_->edit_topology_changes().clear();
+}
+
+void PointSetTopologyModifier::notify_ending_event() {
+  if (!container_) return;
+  // The list is empty here (a propagation clears it); propagate sends {ending} alone.
+  auto& changes = container_->edit_topology_changes();
+  if (!changes.empty()) {
+    propagate_topological_changes();
+    return;
+  }
+  const std::vector<TopologyHandler*> handlers = container_->topology_handlers();
+  const TopologyChange end{TopologyChangeType::ending, {}, {}, {}};
+  changes.push_back(end);
+  for (TopologyHandler* h : handlers)
+    if (h->attached() == container_) h->apply(*container_, end);
   if (node()) visit_topology_change(*node(), *container_);
   container_->edit_topology_changes().clear();
 }

@@ -40,6 +40,9 @@ class PointSetTopologyModifier : public TopologyObject {
   void remove_points(std::vector<unsigned> ids, bool remove_dof);
   // Sends the queued events (plus the ending event) to handlers and the subtree, then clears them.
   void propagate_topological_changes();
+  // SOFA's notifyEndingEvent: propagates a lone ending event (a topological mapping relays the
+  // end of its input's list this way).
+  void notify_ending_event();
 
  protected:
   // Whether `c` is a container this modifier can edit.
@@ -51,6 +54,7 @@ class PointSetTopologyModifier : public TopologyObject {
   std::vector<unsigned> checked_ids(std::vector<unsigned> ids, std::size_t count, const char* what);
   // Queues one event on the container.
   void warn(TopologyChangeType type, const std::vector<unsigned>& decreasing);
+  void warn(TopologyChange change);
   // The process step of point removal (arrays, then the states when `remove_dof`).
   void remove_points_process(const std::vector<unsigned>& decreasing, bool remove_dof);
   // Warn, propagate and process the isolated points a removal found (any order, distinct).

@@ -5,6 +5,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "topology/dynamic/element_addition.h"
 #include "topology/dynamic/point_set_topology_container.h"
 #include "topology/dynamic/triangle_set_topology_container.h"
 
@@ -30,6 +31,23 @@ void TriangleSetTopologyModifier::remove_triangles(std::vector<unsigned> ids, bo
     c.end_edit(true, false, false);
   }
   cascade_isolated_points(std::move(iso.points));
+}
+
+void TriangleSetTopologyModifier::add_triangles(const std::vector<Triangle>& triangles,
+                                                std::vector<std::vector<unsigned>> ancestors,
+                                                std::vector<std::vector<double>> coefficients) {
+  if (!container() || triangles.empty()) return;
+  PointSetTopologyContainer& c = *dynamic_container();
+  topo::DynamicMesh& m = c.begin_edit();
+  const unsigned first = static_cast<unsigned>(m.triangles->size());
+  const std::size_t edges_before = m.edges->size();
+  for (const Triangle& t : triangles)
+    for (unsigned e : topo::add_triangle_process(m, t)) warn(TopologyChangeType::edges_added, {e});
+  c.end_edit(m.edges->size() != edges_before, true, false);
+  TopologyChange added{TopologyChangeType::triangles_added, {}, std::move(ancestors), std::move(coefficients)};
+  for (unsigned i = 0; i < triangles.size(); ++i) added.indices.push_back(first + i);
+  warn(std::move(added));
+  propagate_topological_changes();
 }
 
 bool TriangleSetTopologyModifier::remove_items(const std::vector<unsigned>& ids, std::string* why) {

@@ -16,6 +16,11 @@ class TriangleSetTopologyModifier : public EdgeSetTopologyModifier {
   // SOFA's removeTriangles: warn, propagate, process; then the edges left without a triangle
   // (warn, propagate, process) and the points left without a triangle, when asked.
   void remove_triangles(std::vector<unsigned> ids, bool remove_isolated_edges, bool remove_isolated_points);
+  // SOFA's addTriangles: process (each triangle appended, its missing edges created, one
+  // edges-added event per created edge), then a triangles-added event, then propagate.
+  // `ancestors`/`coefficients` are empty or one row per triangle.
+  void add_triangles(const std::vector<Triangle>& triangles, std::vector<std::vector<unsigned>> ancestors = {},
+                     std::vector<std::vector<double>> coefficients = {});
   // removeItems: removeTriangles(ids, true, true).
   bool remove_items(const std::vector<unsigned>& ids, std::string* why) override;
 

@@ -1,0 +1,61 @@
+#include "topology/dynamic/element_addition.h"
+
+namespace sinew::topo {
+
+namespace {
+// A point named beyond the count makes it grow (SOFA does the same rather than refusing).
+void grow_points(DynamicMesh& m, unsigned v) {
+  if (v + 1 > m.nb_points) m.nb_points = v + 1;
+}
+void fit(std::vector<IndexList>& shells, std::size_t n) {
+  if (shells.size() < n) shells.resize(n);
+}
+}  // namespace
+
+unsigned find_edge(const DynamicMesh& m, unsigned a, unsigned b) {
+  if (a >= m.edges_around_vertex.size()) return kNoIndex;
+  for (unsigned e : m.edges_around_vertex[a]) {
+    const Edge& E = (*m.edges)[e];
+    if ((E[0] == a && E[1] == b) || (E[0] == b && E[1] == a)) return e;
+  }
+  return kNoIndex;
+}
+
+void add_edge_process(DynamicMesh& m, const Edge& e) {
+  const unsigned id = static_cast<unsigned>(m.edges->size());
+  grow_points(m, e[0]);
+  grow_points(m, e[1]);
+  fit(m.edges_around_vertex, m.nb_points);
+  m.edges_around_vertex[e[0]].push_back(id);
+  m.edges_around_vertex[e[1]].push_back(id);
+  m.edges->push_back(e);
+  // Higher levels keep one (empty for now) shell per edge.
+  if (!m.triangles->empty() || !m.triangles_around_edge.empty()) fit(m.triangles_around_edge, m.edges->size());
+  if (!m.tetrahedra->empty() || !m.tetrahedra_around_edge.empty()) fit(m.tetrahedra_around_edge, m.edges->size());
+}
+
+std::vector<unsigned> add_triangle_process(DynamicMesh& m, const Triangle& t) {
+  std::vector<unsigned> created;
+  const unsigned id = static_cast<unsigned>(m.triangles->size());
+  for (unsigned v : t) grow_points(m, v);
+  fit(m.triangles_around_vertex, m.nb_points);
+  if (!m.edges_around_vertex.empty()) fit(m.edges_around_vertex, m.nb_points);
+  for (unsigned v : t) m.triangles_around_vertex[v].push_back(id);
+  if (m.edges_in_triangle.size() < id + 1u) m.edges_in_triangle.resize(id + 1u);
+  for (unsigned j = 0; j < 3; ++j) {
+    const unsigned a = t[(j + 1) % 3], b = t[(j + 2) % 3];
+    unsigned e = find_edge(m, a, b);
+    if (e == kNoIndex) {
+      add_edge_process(m, Edge{a, b});
+      e = static_cast<unsigned>(m.edges->size() - 1);
+      created.push_back(e);
+    }
+    m.edges_in_triangle[id][j] = e;
+    fit(m.triangles_around_edge, m.edges->size());
+    m.triangles_around_edge[e].push_back(id);
+  }
+  m.triangles->push_back(t);
+  return created;
+}
+
+}  // namespace sinew::topo
