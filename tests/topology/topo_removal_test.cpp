@@ -221,7 +221,7 @@ TEST(TopologyRemoval, SoakRemovesASimulatedBodyUntilEmpty) {
 
 // TopologicalChangeProcessor: REMOVE= blocks at their time (only the last due block of a step),
 // from a gzip file as well; ADD= lines are refused at init naming file:line.
-TEST(TopologicalChangeProcessor, AppliesDueRemoveBlocksAndRefusesAdd) {
+TEST(TopologicalChangeProcessor, AppliesDueRemoveBlocksAndRefusesQuadAdd) {
   sinew::test::TempDir dir;
   const std::string plain = dir.write("c.txt", "T= 0.1\n  REMOVE= 1\n0\nT= 0.2\n  REMOVE= 1\n0\nT= 0.3\n  REMOVE= 1\n0\n");
   for (bool gz : {false, true}) {
@@ -246,7 +246,7 @@ TEST(TopologicalChangeProcessor, AppliesDueRemoveBlocksAndRefusesAdd) {
     EXPECT_EQ(topo.tetrahedra().size(), 1u);
   }
   Diagnostics d;
-  const std::string add = dir.write("a.txt", "T= 0.1\nADD= Tetrahedra 1\n0 1 2 5\n");
+  const std::string add = dir.write("a.txt", "T= 0.1\nADD= Quads 1\n0 1 2 5\n");
   auto s = sinew::test::build(std::string(R"(<Node>
       <TetrahedronSetTopologyContainer name="topo" tetrahedra="0 1 2 3"/>
       <TetrahedronSetTopologyModifier name="mod"/>
@@ -254,7 +254,7 @@ TEST(TopologicalChangeProcessor, AppliesDueRemoveBlocksAndRefusesAdd) {
     </Node>)");
   init_root(*s.root);
   EXPECT_TRUE(sinew::test::any_contains(sinew::test::messages(s.root->diagnostics(), Severity::error),
-                                        "a.txt:2: ADD= changes are not supported yet"));
+                                        "a.txt:2: ADD= Quads is not supported yet"));
 }
 
 // Tetra2TriangleTopologicalMapping following removeTetrahedra({0}) on the three tetrahedra

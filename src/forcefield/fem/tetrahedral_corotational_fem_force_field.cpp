@@ -15,6 +15,14 @@ void TetrahedralCorotationalFEMForceField::init() {
   TetraFEMSetup in = read_tetra_fem_fields(*this, false, known);
   if (!known) msg_warning("unknown method '" + method.get() + "' (expected small, large or polar): large is used");
 
+  if (in.topology && in.topology->tetrahedra().empty() && in.topology->hexahedra().empty() && mstate.get() &&
+      mstate->state_type() == StateType::vec3) {
+    // SOFA warns and computes nothing; tetrahedra added later are picked up by follow_topology.
+    msg_warning("no tetrahedra found in the topology " + in.topology->describe());
+    fem_ = fem::TetraFEM{};
+    tetra_version_ = in.topology->elements_version(MeshTopologyBase::Elements::tetrahedra);
+    return;
+  }
   fem_.update_stiffness_matrix = update_stiffness_matrix.get();
   fem_.assembling = assembling.get();
   fem_.symmetric_update = true;

@@ -7,6 +7,7 @@
 #include "core/registry.h"
 #include "topology/dynamic/point_set_topology_container.h"
 #include "topology/dynamic/edge_set_topology_container.h"
+#include "topology/dynamic/element_addition.h"
 
 namespace sinew {
 
@@ -22,6 +23,20 @@ void EdgeSetTopologyModifier::remove_edges(std::vector<unsigned> ids, bool remov
   topo::Isolated iso = topo::remove_edges_process(c.begin_edit(), d, remove_isolated_points);
   c.end_edit(true, false, false);
   cascade_isolated_points(std::move(iso.points));
+}
+
+void EdgeSetTopologyModifier::add_edges(const std::vector<Edge>& edges, std::vector<std::vector<unsigned>> ancestors,
+                                        std::vector<std::vector<double>> coefficients) {
+  if (!container() || edges.empty()) return;
+  PointSetTopologyContainer& c = *dynamic_container();
+  topo::DynamicMesh& m = c.begin_edit();
+  const unsigned first = static_cast<unsigned>(m.edges->size());
+  for (const Edge& e : edges) topo::add_edge_process(m, e);
+  c.end_edit(true, false, false);
+  TopologyChange added{TopologyChangeType::edges_added, {}, std::move(ancestors), std::move(coefficients)};
+  for (unsigned i = 0; i < edges.size(); ++i) added.indices.push_back(first + i);
+  warn(std::move(added));
+  propagate_topological_changes();
 }
 
 bool EdgeSetTopologyModifier::remove_items(const std::vector<unsigned>& ids, std::string* why) {

@@ -21,6 +21,19 @@ unsigned find_edge(const DynamicMesh& m, unsigned a, unsigned b) {
   return kNoIndex;
 }
 
+unsigned find_triangle(const DynamicMesh& m, unsigned a, unsigned b, unsigned c) {
+  if (a >= m.triangles_around_vertex.size()) return kNoIndex;
+  unsigned found = kNoIndex;
+  for (unsigned id : m.triangles_around_vertex[a]) {
+    const Triangle& T = (*m.triangles)[id];
+    auto has = [&](unsigned v) { return T[0] == v || T[1] == v || T[2] == v; };
+    if (!has(b) || !has(c)) continue;
+    if (found != kNoIndex) return kNoIndex;  // more than one: SOFA answers none
+    found = id;
+  }
+  return found;
+}
+
 void add_edge_process(DynamicMesh& m, const Edge& e) {
   const unsigned id = static_cast<unsigned>(m.edges->size());
   grow_points(m, e[0]);
@@ -55,6 +68,44 @@ std::vector<unsigned> add_triangle_process(DynamicMesh& m, const Triangle& t) {
     m.triangles_around_edge[e].push_back(id);
   }
   m.triangles->push_back(t);
+  return created;
+}
+
+std::vector<Created> add_tetrahedron_process(DynamicMesh& m, const Tetra& t) {
+  std::vector<Created> created;
+  const unsigned id = static_cast<unsigned>(m.tetrahedra->size());
+  for (unsigned v : t) grow_points(m, v);
+  fit(m.tetrahedra_around_vertex, m.nb_points);
+  for (unsigned v : t) m.tetrahedra_around_vertex[v].push_back(id);
+
+  if (m.triangles_in_tetrahedron.size() < id + 1u) m.triangles_in_tetrahedron.resize(id + 1u);
+  for (unsigned j = 0; j < 4; ++j) {
+    const Triangle face{t[kTrianglesInTetra[j][0]], t[kTrianglesInTetra[j][1]], t[kTrianglesInTetra[j][2]]};
+    unsigned f = find_triangle(m, face[0], face[1], face[2]);
+    if (f == kNoIndex) {
+      for (unsigned e : add_triangle_process(m, face)) created.push_back({Created::Kind::edge, e});
+      f = static_cast<unsigned>(m.triangles->size() - 1);
+      created.push_back({Created::Kind::triangle, f});
+    }
+    m.triangles_in_tetrahedron[id][j] = f;
+    fit(m.tetrahedra_around_triangle, m.triangles->size());
+    m.tetrahedra_around_triangle[f].push_back(id);
+  }
+
+  if (m.edges_in_tetrahedron.size() < id + 1u) m.edges_in_tetrahedron.resize(id + 1u);
+  for (unsigned j = 0; j < 6; ++j) {
+    const unsigned a = t[kEdgesInTetra[j][0]], b = t[kEdgesInTetra[j][1]];
+    unsigned e = find_edge(m, a, b);
+    if (e == kNoIndex) {  // only when the faces did not bring it (never with the faces above)
+      add_edge_process(m, Edge{a, b});
+      e = static_cast<unsigned>(m.edges->size() - 1);
+      created.push_back({Created::Kind::edge, e});
+    }
+    m.edges_in_tetrahedron[id][j] = e;
+    fit(m.tetrahedra_around_edge, m.edges->size());
+    m.tetrahedra_around_edge[e].push_back(id);
+  }
+  m.tetrahedra->push_back(t);
   return created;
 }
 

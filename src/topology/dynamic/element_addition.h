@@ -2,13 +2,16 @@
 // (spec/interaction.md §7.2 "Triangle addition"): the new element is appended
 // and the neighbourhood arrays of a live DynamicMesh (element_removal.h) grow
 // with it, in SOFA's order: the new index is pushed at the end of each shell,
-// and a missing edge of a new triangle is created with the triangle's vertex
-// order at that corner. Events are the modifier's job.
+// a missing edge of a new triangle is created with the triangle's vertex order
+// at that corner, and a missing face of a new tetrahedron with the vertex order
+// of its local face. Events are the modifier's job (the processes return what
+// they created, in order).
 #pragma once
 
 #include <vector>
 
 #include "topology/dynamic/element_removal.h"
+#include "topology/mesh_topology.h"
 
 namespace sinew::topo {
 
@@ -21,9 +24,26 @@ unsigned find_edge(const DynamicMesh& m, unsigned a, unsigned b);
 // Appends edge e (growing the point count when it names a point beyond it).
 void add_edge_process(DynamicMesh& m, const Edge& e);
 
+// The index of the triangle with vertices a, b, c (any order), when exactly one exists; kNoIndex
+// otherwise (SOFA intersects the three vertex shells and refuses ambiguity).
+unsigned find_triangle(const DynamicMesh& m, unsigned a, unsigned b, unsigned c);
+
 // Appends triangle t: its index joins the shells of its vertices; for each corner j the edge
 // (t[j+1], t[j+2]) is looked up and created when absent. Returns the indices of the edges it
 // created, in creation order.
 std::vector<unsigned> add_triangle_process(DynamicMesh& m, const Triangle& t);
+
+// An element a tetrahedron addition created on its way, in creation order.
+struct Created {
+  enum class Kind { edge, triangle } kind;
+  unsigned index;
+};
+
+// Appends tetrahedron t: its index joins the shells of its vertices; for each face j (vertices
+// kTrianglesInTetra[j] of t, in that order) the triangle is looked up and created when absent
+// (with add_triangle_process, so its missing edges come first); then for each local edge j
+// (kEdgesInTetra[j]) the edge is looked up and created as (t[a], t[b]) when absent. The new
+// index joins the face and edge shells. Returns what it created, in order.
+std::vector<Created> add_tetrahedron_process(DynamicMesh& m, const Tetra& t);
 
 }  // namespace sinew::topo

@@ -5,6 +5,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "topology/dynamic/element_addition.h"
 #include "topology/dynamic/point_set_topology_container.h"
 #include "topology/dynamic/tetrahedron_set_topology_container.h"
 
@@ -38,6 +39,27 @@ void TetrahedronSetTopologyModifier::remove_tetrahedra(std::vector<unsigned> ids
     }
   }
   cascade_isolated_points(std::move(iso.points));
+}
+
+void TetrahedronSetTopologyModifier::add_tetrahedra(const std::vector<Tetra>& tetrahedra,
+                                                    std::vector<std::vector<unsigned>> ancestors,
+                                                    std::vector<std::vector<double>> coefficients) {
+  if (!container() || tetrahedra.empty()) return;
+  PointSetTopologyContainer& c = *dynamic_container();
+  topo::DynamicMesh& m = c.begin_edit();
+  const unsigned first = static_cast<unsigned>(m.tetrahedra->size());
+  bool edges_changed = false, triangles_changed = false;
+  for (const Tetra& t : tetrahedra)
+    for (const topo::Created& k : topo::add_tetrahedron_process(m, t)) {
+      const bool edge = k.kind == topo::Created::Kind::edge;
+      (edge ? edges_changed : triangles_changed) = true;
+      warn(edge ? TopologyChangeType::edges_added : TopologyChangeType::triangles_added, {k.index});
+    }
+  c.end_edit(edges_changed, triangles_changed, true);
+  TopologyChange added{TopologyChangeType::tetrahedra_added, {}, std::move(ancestors), std::move(coefficients)};
+  for (unsigned i = 0; i < tetrahedra.size(); ++i) added.indices.push_back(first + i);
+  warn(std::move(added));
+  propagate_topological_changes();
 }
 
 bool TetrahedronSetTopologyModifier::remove_items(const std::vector<unsigned>& ids, std::string* why) {

@@ -59,8 +59,17 @@ void Tetra2TriangleTopologicalMapping::update_top_down() {
         if (!no_new_triangles.value()) on_tetrahedra_removed(c.indices);
         break;
       case TopologyChangeType::points_removed: out.remove_points(c.indices, false); break;
-      // Point and edge additions are not produced by the tetrahedron modifier yet (no addition
-      // path there); other kinds do not concern the boundary triangles.
+      case TopologyChangeType::edges_added: {  // copied as they are (propagated after the input changed)
+        std::vector<Edge> edges;
+        for (unsigned e : c.indices) edges.push_back(input->edges()[e]);
+        out.add_edges(edges, c.ancestors, c.coefficients);
+        break;
+      }
+      case TopologyChangeType::points_added:
+        msg_error("point additions are not followed yet: the output keeps its points");
+        break;
+      // Triangle additions come with the tetrahedra that bring them (handled there); other kinds
+      // do not concern the boundary triangles.
       default: break;
     }
   }

@@ -8,6 +8,7 @@
 #include "core/registry.h"
 #include "io/text_file.h"
 #include "topology/dynamic/point_set_topology_modifier.h"
+#include "topology/dynamic/tetrahedron_set_topology_modifier.h"
 
 namespace sinew {
 
@@ -63,15 +64,22 @@ void TopologicalChangeProcessor::init() {
     lines_.push_back(text->substr(start, nl - start));
     start = nl + 1;
   }
-  // Commands this slice cannot apply are refused now, naming the line (never skipped silently).
+  // Commands this slice cannot apply, and malformed ADD= lines, are refused now, naming the line
+  // (never skipped silently).
   bool ok = true;
   for (std::size_t i = 0; i < lines_.size(); ++i) {
     std::istringstream s(lines_[i]);
     std::string tok;
     s >> tok;
-    if (tok == "ADD=" || tok == "INCISE=") {
+    if (tok == "INCISE=") {
       msg_error(where(i) + tok + " changes are not supported yet");
       ok = false;
+    } else if (tok == "ADD=") {
+      std::string why;
+      if (!parse_add(i, nullptr, &why)) {
+        msg_error(where(i) + why);
+        ok = false;
+      }
     }
   }
   if (ok && !modifier_) {
@@ -79,6 +87,109 @@ void TopologicalChangeProcessor::init() {
     ok = false;
   }
   if (!ok) set_state(ComponentState::invalid);
+}
+
+namespace {
+// The element kinds an ADD= line may name, with their vertex count; 0 for the kinds SOFA knows
+// that are not supported here.
+int add_kind_arity(const std::string& kind) {
+  if (kind == "Edge" || kind == "Edges") return 2;
+  if (kind == "Triangle" || kind == "Triangles") return 3;
+  if (kind == "Tetrahedron" || kind == "Tetrahedra") return 4;
+  if (kind == "Quad" || kind == "Quads" || kind == "Hexahedron" || kind == "Hexahedra" ||
+      kind == "PointInTriangle" || kind == "PointsInTriangle")
+    return 0;
+  return -1;
+}
+}  // namespace
+
+bool TopologicalChangeProcessor::parse_add(std::size_t line, AddCommand* out, std::string* why) const {
+  std::istringstream s(lines_[line]);
+  std::string tok, kind;
+  s >> tok >> kind;
+  const int arity = add_kind_arity(kind);
+  if (arity < 0) {
+    *why = "ADD= of unknown kind '" + kind + "'";
+    return false;
+  }
+  if (arity == 0) {
+    *why = "ADD= " + kind + " is not supported yet";
+    return false;
+  }
+  long long n = -1;
+  if (!(s >> n) || n < 0) {
+    *why = "ADD= " + kind + " needs a count of elements";
+    return false;
+  }
+  AddCommand cmd;
+  cmd.arity = static_cast<unsigned>(arity);
+  std::string word;
+  if (s >> word) {
+    if (arity != 3 || (word != "Ancestor" && word != "Ancestors")) {
+      *why = "unexpected '" + word + "' after the count (only triangles take Ancestors)";
+      return false;
+    }
+    for (long long k = 0; k < n; ++k) {
+      long long a = -1;
+      if (!(s >> a) || a < 0) {
+        *why = "ADD= " + kind + " " + std::to_string(n) + " Ancestors: expected " + std::to_string(n) +
+               " non-negative ancestor indices";
+        return false;
+      }
+      cmd.ancestors.push_back({static_cast<unsigned>(a)});
+    }
+  }
+  if (line + 1 >= lines_.size()) {
+    *why = "ADD= " + kind + " has no vertex line";
+    return false;
+  }
+  std::istringstream v(lines_[line + 1]);
+  const long long need = n * arity;
+  for (long long k = 0; k < need; ++k) {
+    long long x = -1;
+    if (!(v >> x) || x < 0) {
+      *why = "ADD= " + kind + " " + std::to_string(n) + ": line " + std::to_string(line + 2) + " needs " +
+             std::to_string(need) + " non-negative vertex indices";
+      return false;
+    }
+    cmd.vertices.push_back(static_cast<unsigned>(x));
+  }
+  PointSetTopologyModifier* mod = nullptr;
+  MeshTopologyBase* t = topology.get();
+  if (!t && node()) t = node()->get_mesh_topology_link();
+  Node* from = t ? t->node() : nullptr;
+  if (from) {
+    if (arity == 2) mod = from->find_up<EdgeSetTopologyModifier>();
+    if (arity == 3) mod = from->find_up<TriangleSetTopologyModifier>();
+    if (arity == 4) mod = from->find_up<TetrahedronSetTopologyModifier>();
+  }
+  if (!mod) {
+    static const char* names[] = {"", "", "EdgeSetTopologyModifier", "TriangleSetTopologyModifier",
+                                  "TetrahedronSetTopologyModifier"};
+    *why = "ADD= " + kind + " needs a " + names[arity] + " in the topology's node or its ancestors";
+    return false;
+  }
+  cmd.modifier = mod;
+  if (out) *out = std::move(cmd);
+  return true;
+}
+
+void TopologicalChangeProcessor::apply_add(const AddCommand& a) {
+  const std::size_t n = a.vertices.size() / a.arity;
+  if (a.arity == 2) {
+    std::vector<Edge> items(n);
+    for (std::size_t i = 0; i < n; ++i) items[i] = {a.vertices[2 * i], a.vertices[2 * i + 1]};
+    static_cast<EdgeSetTopologyModifier*>(a.modifier)->add_edges(items);
+  } else if (a.arity == 3) {
+    std::vector<Triangle> items(n);
+    for (std::size_t i = 0; i < n; ++i) items[i] = {a.vertices[3 * i], a.vertices[3 * i + 1], a.vertices[3 * i + 2]};
+    static_cast<TriangleSetTopologyModifier*>(a.modifier)->add_triangles(items, a.ancestors);
+  } else if (a.arity == 4) {
+    std::vector<Tetra> items(n);
+    for (std::size_t i = 0; i < n; ++i)
+      items[i] = {a.vertices[4 * i], a.vertices[4 * i + 1], a.vertices[4 * i + 2], a.vertices[4 * i + 3]};
+    static_cast<TetrahedronSetTopologyModifier*>(a.modifier)->add_tetrahedra(items);
+  }
 }
 
 void TopologicalChangeProcessor::handle_event(Event& e) {
@@ -119,7 +230,23 @@ void TopologicalChangeProcessor::process(double t) {
     std::istringstream s(lines_[i]);
     std::string tok;
     s >> tok;
-    if (tok != "REMOVE=") continue;  // T= and index lines (ADD=/INCISE= were refused at init)
+    if (tok == "ADD=") {
+      // Checked at init; the vertex line is the next collected one, as in SOFA.
+      AddCommand a;
+      std::string why;
+      if (k + 1 >= valid.size() || valid[k + 1] != i + 1) {
+        msg_error(where(i) + "ADD= has no vertex line in its block; nothing added");
+        continue;
+      }
+      ++k;
+      if (!parse_add(i, &a, &why)) {
+        msg_error(where(i) + why);
+        continue;
+      }
+      apply_add(a);
+      continue;
+    }
+    if (tok != "REMOVE=") continue;  // T= and index lines (INCISE= was refused at init)
     long long n = -1;
     if (!(s >> n) || n < 0) {
       msg_error(where(i) + "REMOVE= needs a count of elements; line ignored");
@@ -155,7 +282,7 @@ void register_topological_change_processor(Registry& r) {
   ComponentInfo info;
   info.name = "TopologicalChangeProcessor";
   info.category = "Topology";
-  info.description = "replays topological changes (removals) read from a file at the times it gives";
+  info.description = "replays topological changes (removals, additions) read from a file at the times it gives";
   info.create = creator<TopologicalChangeProcessor>();
   r.add(std::move(info));
 }

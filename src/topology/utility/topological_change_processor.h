@@ -5,9 +5,14 @@
 // current block is due (time ≤ t up to machine epsilon); a `T=` line that is
 // due discards what was collected, so only the last due block runs. Then each
 // `REMOVE= n` line with its index line calls removeItems on the first topology
-// modifier found from the topology's node upwards.
-// Not supported yet, refused at init with an error naming file:line: `ADD=`
-// and `INCISE=` lines, and `useDataInputs`.
+// modifier found from the topology's node upwards; an `ADD= Kind n [Ancestor(s)
+// a1 … an]` line with its vertex line adds n elements through the first modifier
+// of that kind found the same way: Edge(s) → addEdges, Triangle(s) →
+// addTriangles (one ancestor per triangle when given), Tetrahedron/Tetrahedra →
+// addTetrahedra.
+// Refused at init with an error naming file:line: ADD= lines of other kinds
+// (Quad, Hexahedron, PointInTriangle) or malformed (count, vertex line, missing
+// modifier), `INCISE=` lines, and `useDataInputs`.
 #pragma once
 
 #include <string>
@@ -54,6 +59,16 @@ class TopologicalChangeProcessor : public Component {
   // SOFA's readNext: the lines of the last due block (T= lines included).
   std::vector<std::size_t> read_due(double t);
   std::string where(std::size_t line) const;
+  // One ADD= line (at `line`) with its vertex line (the next one).
+  struct AddCommand {
+    unsigned arity = 0;              // vertices per element: 2, 3 or 4
+    std::vector<unsigned> vertices;  // n * arity
+    std::vector<std::vector<unsigned>> ancestors;  // empty, or one row per element
+    PointSetTopologyModifier* modifier = nullptr;  // of the kind's modifier class
+  };
+  // Parses and checks it; false with `why` (without the file:line prefix) when refused.
+  bool parse_add(std::size_t line, AddCommand* out, std::string* why) const;
+  void apply_add(const AddCommand& a);
 
   std::vector<std::string> lines_;  // as getline returns them; the last one reaches end of file
   std::size_t next_ = 0;            // next line to read
