@@ -203,5 +203,51 @@ TEST(FreeMotionPhysics, PinnedPointInsideAClosedBoxIsReportedAndStaysFinite) {
   EXPECT_TRUE(test::any_contains(warnings, "have no compliance")) << ::testing::PrintToString(warnings);
 }
 
+// A Rigid3d sphere (frame turned 90° about x, so the contact point must be
+// mapped through the frame) sliding along a floor with Coulomb friction.
+// SOFA puts a rigid sphere's contact point on its surface (c − n·r) and its
+// rigid contact mapper adds the radius to the contact distance as well, so the
+// sphere is held at 2r + contactDistance: starting at r + 0.01 it is pushed up
+// by r in one step, and the large normal impulse lets friction stop the contact
+// point's slip at once: then v = 5/7 v0 and ω = −v / r (solid sphere,
+// I = 2/5 m r²), which checks the lever arm of the mapped contact point.
+TEST(FreeMotionPhysics, RigidSphereContactActsAtItsSurfaceThroughItsFrame) {
+  const double r = 0.2, d = 0.01, v0 = 1.0, dt = 0.002;
+  const std::string xml = R"(<Node name="root" dt="0.002" gravity="0 -9.81 0">
+    <FreeMotionAnimationLoop/>
+    <BlockGaussSeidelConstraintSolver tolerance="1e-12" maxIterations="1000"/>
+    <CollisionPipeline/><BruteForceBroadPhase/><BVHNarrowPhase/>
+    <MinProximityIntersection alarmDistance="0.05" contactDistance="0.01"/>
+    <CollisionResponse response="FrictionContactConstraint" responseParams="mu=0.5"/>
+    <Node name="floor">
+      <MechanicalObject position="-10 0 -10  10 0 -10  -10 0 10  10 0 10"/>
+      <MeshTopology triangles="0 2 3  0 3 1"/>
+      <TriangleCollisionModel simulated="0" moving="0"/>
+    </Node>
+    <Node name="ball">
+      <EulerImplicitSolver/>
+      <CGLinearSolver iterations="25" tolerance="1e-12" threshold="1e-12"/>
+      <MechanicalObject name="x" template="Rigid3d" position="0.3 0.21 0.4  0.70710678118654752 0 0 0.70710678118654752"
+                        velocity="1 0 0 0 0 0"/>
+      <UniformMass vertexMass="1 1  0.016 0 0  0 0.016 0  0 0 0.016"/>
+      <SphereCollisionModel radius="0.2"/>
+      <UncoupledConstraintCorrection/>
+    </Node>
+  </Node>)";
+  scene::LoadedScene s = test::load(xml);
+  ASSERT_TRUE(s.root);
+  auto* x = test::get<MechanicalObject>(*s.root->find_child_named("ball"), "x");
+  ASSERT_NE(x, nullptr);
+  animate(*s.root);
+  const std::vector<double>& v = x->read(kVelocity);
+  const std::vector<double>& p = x->read(kPosition);
+  EXPECT_NEAR(p[1], 2 * r + d, 1e-9);
+  EXPECT_NEAR(v[1], r / dt, 1e-6);
+  EXPECT_NEAR(v[0], 5.0 / 7.0 * v0, 1e-9);
+  EXPECT_NEAR(v[5], -v[0] / r, 1e-9);
+  for (int k : {2, 3, 4}) EXPECT_NEAR(v[k], 0.0, 1e-9) << k;
+  EXPECT_NEAR(p[2], 0.4, 1e-12);
+}
+
 }  // namespace
 }  // namespace sinew
