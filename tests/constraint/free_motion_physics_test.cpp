@@ -173,9 +173,9 @@ TEST(FreeMotionPhysics, ContradictoryBilateralConstraintsReportNonConvergenceAnd
 // iteration (iteration matrix eigenvalue −2) until the forces overflow. The
 // solver says why and what to do, applies nothing, and the state stays
 // finite. With useSpectralCorrection the violation is scaled by
-// ρ = 0.9·2/|λ|² (SOFA squares the eigenvalue): compliance 100 makes W's
-// per-axis blocks 1·[1 1 1]² (λ = 3, ρ = 0.2, iteration eigenvalue 0.4) and the
-// same problem converges.
+// ρ = 0.9·2/|λ|² (SOFA squares the eigenvalue): with compliance 100 (W =
+// compliance·dt per entry) each axis' 3×3 block of W is all ones (λ = 3,
+// ρ = 0.2, iteration eigenvalue 1 − 3ρ = 0.4) and the same problem converges.
 std::string three_anchor_scene(const std::string& solver) {
   return R"(<Node name="root" dt="0.01" gravity="0 -9.81 0">
     <FreeMotionAnimationLoop/>)" + solver + R"(
