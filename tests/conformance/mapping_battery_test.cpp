@@ -72,6 +72,14 @@ const std::string kTwoInputs =
          "<DistanceMultiMapping name='map' template='Vec3d,Vec1d' topology='@edges' input='@../a @../b' output='@out'"
          " indexPairs='0 1  1 0  1 1' restLengths='1 0.5' geometricStiffness='Exact'/></Node>");
 
+// Points in the second of two frames (index 1), the frames in another branch.
+const std::string kOnFrame =
+    node("<MechanicalObject name='frames' " + kFrames + "/>"
+         "<Node name='local'><MechanicalObject name='pts' " + kPoints + "/></Node>"
+         "<Node name='child'><MechanicalObject name='out'/>"
+         "<DeformableOnRigidFrameMapping name='map' input1='@../local/pts' input2='@../frames' output='@out'"
+         " index='1'/></Node>");
+
 // ---------------------------------------------------------------- cases: one line per mapping (template)
 const std::vector<MappingCase> kCases = {
     {"IdentityMapping", mapped(kPoints, "", "IdentityMapping"), kJacobian},
@@ -125,6 +133,7 @@ const std::vector<MappingCase> kCases = {
     {"SquareDistanceMapping", mapped(kPoints, kVec1, "SquareDistanceMapping", kExact + "topology='@../topo'", kEdges),
      kJacobian | kGeometric | kAssembledGeometric},
     {"DistanceMultiMapping", kTwoInputs, kJacobian | kGeometric | kAssembledGeometric},
+    {"DeformableOnRigidFrameMapping", kOnFrame, kJacobian},
 };
 
 // Registered mappings without a case, and why. None (visual models such as OglModel are mapping
