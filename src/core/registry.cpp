@@ -113,7 +113,8 @@ std::string requirement_problem(const ComponentInfo& info, const std::string& tm
       s = node.get_mechanical_state();
     }
     if (!s) return "no mechanical state in the context";
-    if (tmpl != s->info().name) return std::string("the mechanical state is ") + s->info().name;
+    // Two-parameter templates (DiagonalMass<DataTypes, GeometricalTypes>): the first names the state.
+    if (tmpl.substr(0, tmpl.find(',')) != s->info().name) return std::string("the mechanical state is ") + s->info().name;
     return {};
   }
   if (info.requirement == Requirement::mapping) {

@@ -184,7 +184,12 @@ void register_diagonal_mass(Registry& r) {
   info.name = "DiagonalMass";
   info.category = "Mass";
   info.description = "lumped mass per vertex from the element lengths, areas or volumes of the topology";
-  info.templates = {"Vec1d", "Vec2d", "Vec3d"};
+  // SOFA registers DiagonalMass<DataTypes, GeometricalTypes> (the geometry type defaults to the
+  // state's): "Vec3d,Vec3d", "Vec2d,Vec2d", "Vec2d,Vec3d", "Vec1d,Vec1d", "Vec1d,Vec2d",
+  // "Vec1d,Vec3d" (Rigid variants are not supported here). The one-parameter names are the same
+  // classes; the geometry comes from `geometryState` or the topology's state either way.
+  info.templates = {"Vec1d", "Vec2d", "Vec3d", "Vec1d,Vec1d", "Vec1d,Vec2d", "Vec1d,Vec3d",
+                    "Vec2d,Vec2d", "Vec2d,Vec3d", "Vec3d,Vec3d"};
   info.default_template = "Vec3d";
   info.requirement = Requirement::state;
   info.create = creator<DiagonalMass>();

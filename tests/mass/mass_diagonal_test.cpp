@@ -174,3 +174,20 @@ TEST(DiagonalMass, ElementIndexOutOfRangeIsAnError) {
   init_root(*s.root);
   EXPECT_TRUE(any_contains(messages(s.root->diagnostics(), Severity::error), "uses point 5"));
 }
+
+// SOFA registers DiagonalMass<DataTypes, GeometricalTypes>: "Vec3,Vec3" (aliases resolved) is the
+// Vec3d mass, created without a template error; a two-parameter name whose state part does not
+// match the state still falls back with an error.
+TEST(DiagonalMass, AcceptsTwoParameterTemplateNames) {
+  for (const char* t : {"Vec3,Vec3", "Vec3d,Vec3d", "Vec3d"}) {
+    Diagnostics diag;
+    auto s = sinew::test::build(tetra_beam(std::string(R"(<DiagonalMass name="mass" massDensity="2" template=")") + t +
+                                           R"("/>)"));
+    ASSERT_TRUE(s.root);
+    EXPECT_TRUE(messages(s.root->diagnostics(), Severity::error).empty()) << t;
+    EXPECT_NE(get<DiagonalMass>(*s.root, "mass"), nullptr) << t;
+  }
+  auto s = sinew::test::build(tetra_beam(R"(<DiagonalMass name="mass" template="Vec2d,Vec3d"/>)"));
+  ASSERT_TRUE(s.root);
+  EXPECT_TRUE(any_contains(messages(s.root->diagnostics(), Severity::error), "not compatible"));
+}
