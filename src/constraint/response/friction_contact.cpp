@@ -109,11 +109,7 @@ class FrictionContact final : public Contact {
       c.add_contact(mu_, o.normal, mapped_[k].distance, static_cast<int>(mapped_[k].i1),
                     static_cast<int>(mapped_[k].i2), cantor(o.id, serial_), o.id);
     }
-    if (constraint_ && constraint_->node() == &where) return;  // attached there since an earlier step
-    std::unique_ptr<Component> owned;
-    if (constraint_) owned = constraint_->node()->remove_object(constraint_);
-    else owned = std::move(detached_);
-    constraint_ = static_cast<UnilateralLagrangianConstraint*>(where.add_object(std::move(owned)));
+    constraint_ = attach_response(where, constraint_, detached_);
   }
 
   Component* response() const override { return constraint_; }

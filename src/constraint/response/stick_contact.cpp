@@ -54,11 +54,7 @@ class StickContact final : public Contact {
     if (!outputs_) return;
     if (!kept_.empty() || !keep_alive_) rebuild();
     if (!constraint_ && !detached_) return;
-    if (constraint_ && constraint_->node() == &where) return;  // attached there since an earlier step
-    std::unique_ptr<Component> owned;
-    if (constraint_) owned = constraint_->node()->remove_object(constraint_);
-    else owned = std::move(detached_);
-    constraint_ = static_cast<BilateralLagrangianConstraint*>(where.add_object(std::move(owned)));
+    constraint_ = attach_response(where, constraint_, detached_);
   }
 
   Component* response() const override { return constraint_; }
