@@ -30,6 +30,20 @@ inline void edge_basis(const Tetra& t, const double* X, double M[3][3]) {
     for (int i = 0; i < 3; ++i) M[i][j] = X[t[j + 1] * 3 + i] - X[t[0] * 3 + i];
 }
 
+// The four barycentric weights (1 − fx − fy − fz, fx, fy, fz) of coordinates b = (fx, fy, fz).
+inline void bary_weights(const double* b, double w[4]) {
+  w[0] = 1 - b[0] - b[1] - b[2];
+  w[1] = b[0];
+  w[2] = b[1];
+  w[3] = b[2];
+}
+
+// o = Σ_k w_k·A[t_k] over the tetrahedron's vertices (A: a Vec3 array), summed in vertex order.
+inline void blend(const Tetra& t, const double w[4], const double* A, double* o) {
+  for (int k = 0; k < 3; ++k)
+    o[k] = A[t[0] * 3 + k] * w[0] + A[t[1] * 3 + k] * w[1] + A[t[2] * 3 + k] * w[2] + A[t[3] * 3 + k] * w[3];
+}
+
 }  // namespace
 
 bool BarycentricMappingRigid::init_mapping() {
@@ -141,10 +155,10 @@ void BarycentricMappingRigid::apply(int x) {
   for (std::size_t i = 0; i < map_.size(); ++i) {
     const Embedding& e = map_[i];
     const Tetra& t = tetra_of(i);
-    const double fx = e.bary[0], fy = e.bary[1], fz = e.bary[2];
+    double w[4];
+    bary_weights(e.bary, w);
     double* o = &out[i * 7];
-    for (int k = 0; k < 3; ++k)
-      o[k] = X[t[0] * 3 + k] * (1 - fx - fy - fz) + X[t[1] * 3 + k] * fx + X[t[2] * 3 + k] * fy + X[t[3] * 3 + k] * fz;
+    blend(t, w, X, o);
     // Axes carried by the deformed edge basis, then their closest rotation.
     double E[3][3];
     edge_basis(t, X, E);
@@ -169,17 +183,17 @@ void BarycentricMappingRigid::apply_j(int v, int role) {
   for (std::size_t i = 0; i < map_.size(); ++i) {
     const Embedding& e = map_[i];
     const Tetra& t = tetra_of(i);
-    const double fx = e.bary[0], fy = e.bary[1], fz = e.bary[2];
+    double w[4];
+    bary_weights(e.bary, w);
     double* o = &out[i * 6];
-    for (int k = 0; k < 3; ++k)
-      o[k] = V[t[0] * 3 + k] * (1 - fx - fy - fz) + V[t[1] * 3 + k] * fx + V[t[2] * 3 + k] * fy + V[t[3] * 3 + k] * fz;
-    double w[3] = {0, 0, 0};
+    blend(t, w, V, o);
+    double omega[3] = {0, 0, 0};
     for (int k = 0; k < 4; ++k) {
       double c[3];
       cross3(X + t[k] * 3, V + t[k] * 3, c);
-      w[0] += c[0], w[1] += c[1], w[2] += c[2];
+      omega[0] += c[0], omega[1] += c[1], omega[2] += c[2];
     }
-    o[3] = w[0], o[4] = w[1], o[5] = w[2];
+    o[3] = omega[0], o[4] = omega[1], o[5] = omega[2];
   }
 }
 
@@ -194,9 +208,9 @@ void BarycentricMappingRigid::apply_jt(int f, int role) {
   for (std::size_t i = 0; i < n; ++i) {
     const Embedding& e = map_[i];
     const Tetra& t = tetra_of(i);
-    const double fx = e.bary[0], fy = e.bary[1], fz = e.bary[2];
     const double* fi = &out[i * 6];
-    const double w[4] = {1 - fx - fy - fz, fx, fy, fz};
+    double w[4];
+    bary_weights(e.bary, w);
     for (int k = 0; k < 4; ++k)
       for (int c = 0; c < 3; ++c) F[t[k] * 3 + c] += fi[c] * w[k];
     // The torque as forces: −x_k × τ on each vertex (the transpose of ω = Σ x_k × v_k).
@@ -213,8 +227,8 @@ void BarycentricMappingRigid::jt_entry(unsigned out_dof, const double* v, Constr
   if (out_dof >= map_.size()) return;
   const Embedding& e = map_[out_dof];
   const Tetra& t = tetra_of(out_dof);
-  const double fx = e.bary[0], fy = e.bary[1], fz = e.bary[2];
-  const double w[4] = {1 - fx - fy - fz, fx, fy, fz};
+  double w[4];
+  bary_weights(e.bary, w);
   for (int k = 0; k < 4; ++k) {
     const double d[3] = {v[0] * w[k], v[1] * w[k], v[2] * w[k]};
     sink.add(0, t[k], d);
@@ -226,8 +240,8 @@ bool BarycentricMappingRigid::jacobian(std::vector<JacobianEntry>& out) {
   for (std::size_t i = 0; i < map_.size(); ++i) {
     const Embedding& e = map_[i];
     const Tetra& t = tetra_of(i);
-    const double fx = e.bary[0], fy = e.bary[1], fz = e.bary[2];
-    const double w[4] = {1 - fx - fy - fz, fx, fy, fz};
+    double w[4];
+    bary_weights(e.bary, w);
     const std::uint32_t row = static_cast<std::uint32_t>(i * 6);
     for (std::uint32_t d = 0; d < 3; ++d)
       for (int k = 0; k < 4; ++k) out.push_back({0, row + d, t[k] * 3 + d, w[k]});
