@@ -29,8 +29,11 @@ void CollisionModelBase::init() {
     set_state(ComponentState::invalid);
     return;
   }
-  if (mstate_->state_type() != StateType::vec3) {
-    msg_error(std::string("needs a Vec3d MechanicalState; ") + mstate_->describe() + " is " + mstate_->info().name);
+  const StateType t = mstate_->state_type();
+  if (t != StateType::vec3 && !(t == StateType::rigid3 && accepts_rigid3())) {
+    msg_error(std::string(accepts_rigid3() ? "needs a Vec3d or Rigid3d MechanicalState; "
+                                           : "needs a Vec3d MechanicalState; ") +
+              mstate_->describe() + " is " + mstate_->info().name);
     set_state(ComponentState::invalid);
     return;
   }
@@ -42,14 +45,25 @@ void CollisionModelBase::init() {
   if (!init_model()) set_state(ComponentState::invalid);
 }
 
+std::span<const Vec3> CollisionModelBase::points_of(int vec, int role) const {
+  const std::vector<double>& a = mstate_->read(vec);
+  if (mstate_->state_type() == StateType::vec3) return as_vec3(a);
+  // Rigid3d: coordinates are (centre, quaternion), derivatives (linear, angular).
+  const std::size_t stride = role == kPosition ? 7 : 6;
+  std::vector<Vec3>& out = gathered_[vec == kPosition ? 0 : role == kPosition ? 1 : 2];
+  out.resize(a.size() / stride);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = Vec3(a[i * stride], a[i * stride + 1], a[i * stride + 2]);
+  return out;
+}
+
 void CollisionModelBase::compute_continuous_bounding_tree(double dt, Motion motion, int depth) {
   const auto x = positions();
   x_end_.resize(x.size());
   if (motion == Motion::free_motion) {
-    const auto xf = as_vec3(mstate_->read(kFreePosition));
+    const auto xf = points_of(kFreePosition, kPosition);
     for (std::size_t i = 0; i < x.size(); ++i) x_end_[i] = i < xf.size() ? xf[i] : x[i];
   } else if (motion == Motion::inertia) {
-    const auto v = as_vec3(mstate_->read(kVelocity));
+    const auto v = points_of(kVelocity, kVelocity);
     for (std::size_t i = 0; i < x.size(); ++i) x_end_[i] = x[i] + v[i] * dt;
   } else {
     std::copy(x.begin(), x.end(), x_end_.begin());

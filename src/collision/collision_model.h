@@ -99,14 +99,20 @@ class CollisionModelBase : public CollisionModel {
       box.max = box.max.cwiseMax(x_end_[v] + Vec3::Constant(pad));
     }
   }
-  // Positions of the state (Vec3 layout), read at every detection.
-  std::span<const Vec3> positions() const { return as_vec3(mstate_->read(kPosition)); }
+  // Whether the model also works on a Rigid3d state (its elements are then the frames' centres).
+  virtual bool accepts_rigid3() const { return false; }
+  // Positions of the state's points, read at every detection: the state itself
+  // for Vec3d, the frames' centres (copied) for Rigid3d.
+  std::span<const Vec3> positions() const { return points_of(kPosition, kPosition); }
+  // Points of vector `vec` (role kPosition: coordinates; kVelocity: linear velocities).
+  std::span<const Vec3> points_of(int vec, int role) const;
 
   CubeTree tree_;
   MechanicalState* mstate_ = nullptr;
   std::vector<Vec3> x_end_;
 
  private:
+  mutable std::vector<Vec3> gathered_[3];  // Rigid3d: centres, free centres, linear velocities (points_of)
   Kind kind_;
   mutable bool warned_ = false;
 };

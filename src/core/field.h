@@ -68,8 +68,14 @@ class BaseField {
   void set_change_hook(ChangeHook h) { change_hook_ = h; }
 
   // File-name fields are resolved against the scene folder and data paths by the loader.
+  // A required file that is not found is a load error; an optional one keeps its text
+  // (the component decides at init, e.g. recomputing what the file would have held).
   bool is_file() const { return is_file_; }
-  void set_file(bool b) { is_file_ = b; }
+  bool file_required() const { return file_required_; }
+  void set_file(bool b, bool required = true) {
+    is_file_ = b;
+    file_required_ = required;
+  }
 
   // False for fields that must not be copied by `src="@loader"` (name, tags, transforms...).
   bool autolink() const { return autolink_; }
@@ -111,6 +117,7 @@ class BaseField {
   bool set_ = false;
   bool autolink_ = true;
   bool is_file_ = false;
+  bool file_required_ = true;
   mutable std::uint64_t version_ = 1;
   BaseField* parent_ = nullptr;
   mutable std::uint64_t parent_version_seen_ = 0;

@@ -73,6 +73,7 @@ class MatrixSink {
   }
   // A 3×3 block whose top-left entry is at scalar indices (r, c).
   void add_block(const MechanicalState* rs, std::size_t r, const MechanicalState* cs, std::size_t c, const Mat3& b) {
+    if (replay_keys_ && replay_block(rs, r, cs, c, b)) return;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) add(rs, r + i, cs, c + j, b(i, j));
   }
@@ -94,11 +95,15 @@ class MatrixSink {
   }
   // Replaying: target-0 entries must come as keys[i] = (row << 32) | col,
   // i < count, and go to values[slots[i]] (skipped when slots[i] < 0).
-  void begin_replay(Layout* layout, const std::uint64_t* keys, const std::int64_t* slots, std::size_t count,
-                    double* values) {
+  // block_slots[i] ≥ 0 when keys[i..i+9) are a whole 3×3 block in row-major
+  // order stored contiguously from values[block_slots[i]] (one key check
+  // then covers the block; see add_block).
+  void begin_replay(Layout* layout, const std::uint64_t* keys, const std::int64_t* slots,
+                    const std::int64_t* block_slots, std::size_t count, double* values) {
     begin(layout);
     replay_keys_ = keys;
     replay_slots_ = slots;
+    replay_block_slots_ = block_slots;
     replay_count_ = count;
     replay_values_ = values;
     cursor_ = 0;
@@ -123,6 +128,22 @@ class MatrixSink {
       cursor_ = replay_count_;  // nothing further matches: the assembler records again
     }
   }
+  // The whole-block path of add_block while replaying: false when the block
+  // is not next in the recording as a contiguous block (the entry-wise path
+  // then checks it, and fails the replay if it differs).
+  bool replay_block(const MechanicalState* rs, std::size_t r, const MechanicalState* cs, std::size_t c,
+                    const Mat3& b) {
+    if (rs != rs_ || cs != cs_) rebind(rs, cs);
+    if (binding_.target != 0 || cursor_ + 9 > replay_count_) return false;
+    const std::uint64_t key = (static_cast<std::uint64_t>(binding_.row_offset + r) << 32) | (binding_.col_offset + c);
+    const std::int64_t s = replay_block_slots_[cursor_];
+    if (s < 0 || replay_keys_[cursor_] != key) return false;
+    double* v = replay_values_ + s;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) v[i * 3 + j] += b(i, j) * factor_;
+    cursor_ += 9;
+    return true;
+  }
   void rebind(const MechanicalState* rs, const MechanicalState* cs) {
     rs_ = rs;
     cs_ = cs;
@@ -138,6 +159,7 @@ class MatrixSink {
   std::vector<Triplet> triplets_;
   const std::uint64_t* replay_keys_ = nullptr;  // non-null while replaying
   const std::int64_t* replay_slots_ = nullptr;
+  const std::int64_t* replay_block_slots_ = nullptr;
   double* replay_values_ = nullptr;
   std::size_t replay_count_ = 0, cursor_ = 0;
   bool replay_ok_ = false;

@@ -148,6 +148,10 @@ class Node final : public Base {
   std::vector<StepObserver*>& step_observers() { return root()->step_observers_; }
   // Set once init() ran on this node's components (init_root, or init_added later).
   bool initialised = false;
+  // Root only: the data folders resources were searched in when the scene was
+  // loaded, in search order (SOFA's DataRepository; the first is where SOFA
+  // writes caches such as PrecomputedConstraintCorrection's compliance).
+  std::vector<std::string> data_dirs;
  private:
   Node* parent_ = nullptr;
   std::vector<std::unique_ptr<Node>> children_;

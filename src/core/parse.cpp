@@ -270,6 +270,37 @@ bool read_flat(std::string_view text, int width, std::vector<double>& v) {
   return ok;
 }
 
+bool read_rigid3_mass(std::string_view text, std::vector<double>& v) {
+  v.clear();
+  std::size_t i = 0;
+  const std::size_t n = text.size();
+  // One `istream >> double`: 1 read, 0 at the end of the text, −1 on a non-number.
+  auto number = [&]() -> int {
+    while (i < n && is_space(text[i])) ++i;
+    if (i == n) return 0;
+    const std::size_t len = number_prefix(text.substr(i), true);
+    if (len == 0) return -1;
+    double x = 0;
+    read_double(text.substr(i, len), x);
+    v.push_back(x);
+    i += len;
+    return 1;
+  };
+  for (int k = 0; k < 2; ++k)
+    if (const int r = number(); r <= 0) return r == 0;
+  // The matrix: blanks and at most one '[' before the first row; blanks or commas between rows.
+  while (i < n && (text[i] == ' ' || text[i] == '\n' || text[i] == '[')) {
+    if (text[i++] == '[') break;
+  }
+  for (int row = 0; row < 3; ++row) {
+    if (row > 0)
+      while (i < n && (text[i] == ' ' || text[i] == ',')) ++i;
+    for (int c = 0; c < 3; ++c)
+      if (const int r = number(); r <= 0) return r == 0;
+  }
+  return true;  // a closing ']' and anything after it are not read
+}
+
 template <int N>
 bool read(std::string_view text, VecN<N>& v) {
   auto t = tokens(text);

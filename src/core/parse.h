@@ -54,6 +54,14 @@ bool read(std::string_view text, std::vector<VecN<N>>& v);
 template <std::size_t N>
 bool read(std::string_view text, std::vector<std::array<unsigned, N>>& v);
 
+// A Rigid3d mass as SOFA's RigidMass<3> stream reader takes it: mass, volume,
+// then the 3×3 inertia matrix by rows, optionally wrapped in one "[" "]" pair
+// with rows separated by spaces or commas ("1 1 [1 0 0,0 1 0,0 0 1]"). Up to
+// 11 values go into `v`; the text may stop early (then fewer values), and
+// whatever follows the matrix is ignored. False when something other than a
+// number stands where a number is expected (`v` keeps the values read before).
+bool read_rigid3_mass(std::string_view text, std::vector<double>& v);
+
 // Reads a flat list of doubles in groups of `width`; the trailing incomplete
 // group is dropped. Used for state vectors whose element width is dynamic.
 bool read_flat(std::string_view text, int width, std::vector<double>& v);

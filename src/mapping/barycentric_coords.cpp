@@ -8,6 +8,22 @@
 
 namespace sinew {
 
+bool bary_invert3(const double f[3][3], double d[3][3]) {
+  const double det = f[0][0] * f[1][1] * f[2][2] + f[1][0] * f[2][1] * f[0][2] + f[2][0] * f[0][1] * f[1][2] -
+                     f[0][0] * f[2][1] * f[1][2] - f[1][0] * f[0][1] * f[2][2] - f[2][0] * f[1][1] * f[0][2];
+  if (std::abs(det) < std::numeric_limits<double>::epsilon()) return false;
+  d[0][0] = (f[1][1] * f[2][2] - f[2][1] * f[1][2]) / det;
+  d[1][0] = (f[1][2] * f[2][0] - f[2][2] * f[1][0]) / det;
+  d[2][0] = (f[1][0] * f[2][1] - f[2][0] * f[1][1]) / det;
+  d[0][1] = (f[2][1] * f[0][2] - f[0][1] * f[2][2]) / det;
+  d[1][1] = (f[2][2] * f[0][0] - f[0][2] * f[2][0]) / det;
+  d[2][1] = (f[2][0] * f[0][1] - f[0][0] * f[2][1]) / det;
+  d[0][2] = (f[0][1] * f[1][2] - f[1][1] * f[0][2]) / det;
+  d[1][2] = (f[0][2] * f[1][0] - f[1][2] * f[0][0]) / det;
+  d[2][2] = (f[0][0] * f[1][1] - f[1][0] * f[0][1]) / det;
+  return true;
+}
+
 namespace {
 
 // Points farther out of their element than this (in element coordinates, a quarter of the
@@ -55,23 +71,6 @@ void add_corners(BaryTable& table, const std::array<unsigned, N>& v, const doubl
 }
 
 // ---------------------------------------------------------------- small vector kernels
-
-// SOFA's 3×3 inverse (cofactors over the determinant, same operation order).
-bool invert3(const double f[3][3], double d[3][3]) {
-  const double det = f[0][0] * f[1][1] * f[2][2] + f[1][0] * f[2][1] * f[0][2] + f[2][0] * f[0][1] * f[1][2] -
-                     f[0][0] * f[2][1] * f[1][2] - f[1][0] * f[0][1] * f[2][2] - f[2][0] * f[1][1] * f[0][2];
-  if (std::abs(det) < std::numeric_limits<double>::epsilon()) return false;
-  d[0][0] = (f[1][1] * f[2][2] - f[2][1] * f[1][2]) / det;
-  d[1][0] = (f[1][2] * f[2][0] - f[2][2] * f[1][0]) / det;
-  d[2][0] = (f[1][0] * f[2][1] - f[2][0] * f[1][1]) / det;
-  d[0][1] = (f[2][1] * f[0][2] - f[0][1] * f[2][2]) / det;
-  d[1][1] = (f[2][2] * f[0][0] - f[0][2] * f[2][0]) / det;
-  d[2][1] = (f[2][0] * f[0][1] - f[0][0] * f[2][1]) / det;
-  d[0][2] = (f[0][1] * f[1][2] - f[1][1] * f[0][2]) / det;
-  d[1][2] = (f[0][2] * f[1][0] - f[1][2] * f[0][0]) / det;
-  d[2][2] = (f[0][0] * f[1][1] - f[1][0] * f[0][1]) / det;
-  return true;
-}
 
 inline void sub3(const double* a, const double* b, double* r) {
   r[0] = a[0] - b[0];
@@ -189,7 +188,7 @@ void build_frames(const std::vector<typename Type::Element>& E, const std::vecto
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) m[i][j] = axis[j][i];
     Frame& f = frames[first + e];
-    if (!invert3(m, f.b)) degenerate.push_back(first + e);
+    if (!bary_invert3(m, f.b)) degenerate.push_back(first + e);
     for (int k = 0; k < 3; ++k) {
       double s = X[E[e][0] * 3 + k];
       for (std::size_t j = 1; j < N; ++j) s += X[E[e][j] * 3 + k];

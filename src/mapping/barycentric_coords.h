@@ -27,6 +27,10 @@ struct BaryReport {
   std::size_t unlocated = kNone;        // first point no element could take (the table then stops before it)
 };
 
+// SOFA's 3×3 inverse (Mat::invert: cofactors over the determinant, same operation
+// order); false, `d` untouched, when |det| < machine epsilon.
+bool bary_invert3(const double f[3][3], double d[3][3]);
+
 // Trilinear weights in the grid's cell (needs at least 2 points along each axis).
 BaryReport bary_regular_grid(const RegularGridTopology& grid, const std::vector<double>& out, BaryTable& table);
 // Trilinear weights in the sparse grid's cell, else in its nearest boundary cell.

@@ -2,6 +2,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "mapping/barycentric_mapping_rigid.h"
 #include "topology/grid/regular_grid_topology.h"
 #include "topology/grid/sparse_grid_topology.h"
 
@@ -181,12 +182,14 @@ void register_barycentric_mapping(Registry& r) {
   info.name = "BarycentricMapping";
   info.category = "Mapping/Linear";
   info.description = "points embedded in the elements of the input topology (barycentric weights)";
-  info.templates = {"Vec3d,Vec3d"};
+  // Vec3d,Rigid3d embeds frames in tetrahedra: another mapper, another class (barycentric_mapping_rigid.h).
+  info.templates = {"Vec3d,Vec3d", "Vec3d,Rigid3d"};
   info.default_template = "Vec3d,Vec3d";
   info.requirement = Requirement::mapping;
   info.create = [](const std::string& t) -> std::unique_ptr<Component> {
     StateType in, out;
     if (!parse_mapping_template(t, in, out)) return nullptr;
+    if (in == StateType::vec3 && out == StateType::rigid3) return std::make_unique<BarycentricMappingRigid>();
     return std::make_unique<BarycentricMapping>(in, out);
   };
   r.add(std::move(info));

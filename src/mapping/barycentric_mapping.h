@@ -1,5 +1,6 @@
 // BarycentricMapping: each output point is a fixed weighted sum of the
-// vertices of one input element (spec/mechanics.md §6.2). Vec3d → Vec3d.
+// vertices of one input element (spec/mechanics.md §6.2). Vec3d → Vec3d
+// (Vec3d → Rigid3d frames: barycentric_mapping_rigid.h, same XML class).
 //
 // The input topology (`input_topology`, default: the first mesh topology of
 // the input state's node or its ancestors) decides the mapper:

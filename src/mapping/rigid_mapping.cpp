@@ -112,6 +112,29 @@ bool RigidMapping::init_mapping() {
   return true;
 }
 
+void RigidMapping::bind_contact_states(MechanicalState& in, MechanicalState& out) {
+  in_ = {&in};
+  out_ = &out;
+  input.set_path("@" + in.name.value());
+  input.set_targets({&in});
+  output_link.set_path("@" + out.name.value());
+  output_link.set_targets({&out});
+  clear_points();
+}
+
+void RigidMapping::clear_points() {
+  rigid_.clear();
+  local_.clear();
+  rotated_.clear();
+}
+
+unsigned RigidMapping::add_point(const Vec3& local, unsigned rigid) {
+  rigid_.push_back(rigid);
+  local_.insert(local_.end(), {local[0], local[1], local[2]});
+  rotated_.insert(rotated_.end(), {0.0, 0.0, 0.0});
+  return static_cast<unsigned>(rigid_.size() - 1);
+}
+
 void RigidMapping::apply(int x) {
   std::vector<double>* outp = out_coord(x);
   if (!outp) return;

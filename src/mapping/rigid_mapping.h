@@ -36,6 +36,14 @@ class RigidMapping final : public MappingBase {
   Field<std::string> geometric_stiffness{this, "geometricStiffness", "None",
                                          "geometric stiffness: None, Exact or Stabilized (0, 1, 2)", "Mapping"};
 
+  // Contact points on rigid collision models (SOFA's RigidContactMapper): the
+  // collision response binds the mapping to the model's Rigid3d state and a
+  // Vec3d state of its own, then empties it and adds points (given in the frame
+  // of their rigid) between steps. Precondition: Rigid3d → Vec3d.
+  void bind_contact_states(MechanicalState& in, MechanicalState& out);
+  void clear_points();
+  unsigned add_point(const Vec3& local, unsigned rigid);
+
   void apply(int x) override;
   void apply_j(int v, int role) override;
   void apply_jt(int f, int role) override;

@@ -5,8 +5,22 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "core/value_text.h"
 
 namespace sinew {
+
+void UniformMass::parse(AttributeMap& attrs, Diagnostics& diag) {
+  const std::string* text = attrs.peek("vertexMass");
+  if (template_name() == "Rigid3d" && text && !text->empty() && (*text)[0] != '@') {
+    std::vector<double> values;
+    const bool ok = parse::read_rigid3_mass(*text, values);
+    // Values missing at the end keep their defaults (mass 1, identity inertia), as init reads them.
+    vertex_mass.set(values.empty() ? vertex_mass.default_value() : values);
+    if (!ok) diag.warning(where, describe() + ": could not read value for field 'vertexMass': " + quote_value(*text));
+    attrs.take("vertexMass");
+  }
+  Mass::parse(attrs, diag);
+}
 
 void UniformMass::init() {
   ForceField::init();

@@ -1,6 +1,7 @@
 // UniformMass: the same mass on every DoF (spec/mechanics.md §1.1).
 //
-// Vec templates: M = m·I. Rigid3d: vertexMass is "mass volume I00 … I22";
+// Vec templates: M = m·I. Rigid3d: vertexMass is "mass volume I00 … I22",
+// the matrix optionally written "[I00 I01 I02,I10 I11 I12,I20 I21 I22]";
 // the inertia tensor is scaled by the mass and expressed in world axes
 // (never rotated with the body, as SOFA does). Rigid2d: "mass volume inertia",
 // a scalar inertia. Gravity is added in addForce
@@ -29,6 +30,9 @@ class UniformMass final : public Mass {
 
   UniformMass() { filename.set_file(true); }
 
+  // Rigid3d: vertexMass is read with SOFA's Rigid3Mass syntax, "mass volume [I00 I01 I02,I10 …]"
+  // (parse::read_rigid3_mass); the other templates read it as a list of numbers.
+  void parse(AttributeMap& attrs, Diagnostics& diag) override;
   void init() override;
   void add_force(const MechParams& p) override;
   void add_mdx(const MechParams& p, int res, int dx, double factor) override;

@@ -96,6 +96,52 @@ inline Vec3 quat_angular_displacement(const Quat& a, const Quat& b) {
   return quat_to_rotation_vector(quat_diff(a, b));
 }
 
+// Rotation matrix of a unit quaternion (SOFA's Quat::toMatrix, same arithmetic).
+inline Mat3 quat_to_matrix(const Quat& q) {
+  Mat3 m;
+  m << 1 - 2 * (q.y * q.y + q.z * q.z), 2 * (q.x * q.y - q.z * q.w), 2 * (q.z * q.x + q.y * q.w),
+      2 * (q.x * q.y + q.z * q.w), 1 - 2 * (q.z * q.z + q.x * q.x), 2 * (q.y * q.z - q.x * q.w),
+      2 * (q.z * q.x - q.y * q.w), 2 * (q.y * q.z + q.x * q.w), 1 - 2 * (q.y * q.y + q.x * q.x);
+  return m;
+}
+
+// Quaternion of a rotation matrix (SOFA's Quat::fromMatrix): from the trace when
+// it is positive, else from the largest diagonal entry; not renormalised.
+inline Quat quat_from_matrix(const Mat3& m) {
+  Quat q;
+  const double tr = m(0, 0) + m(1, 1) + m(2, 2);
+  if (tr > 0) {
+    double s = std::sqrt(tr + 1);
+    q.w = s * 0.5;
+    s = 0.5 / s;
+    q.x = (m(2, 1) - m(1, 2)) * s;
+    q.y = (m(0, 2) - m(2, 0)) * s;
+    q.z = (m(1, 0) - m(0, 1)) * s;
+  } else if (m(1, 1) > m(0, 0) && m(2, 2) <= m(1, 1)) {
+    double s = std::sqrt((m(1, 1) - (m(2, 2) + m(0, 0))) + 1.0);
+    q.y = s * 0.5;
+    if (s != 0.0) s = 0.5 / s;
+    q.z = (m(1, 2) + m(2, 1)) * s;
+    q.x = (m(0, 1) + m(1, 0)) * s;
+    q.w = (m(0, 2) - m(2, 0)) * s;
+  } else if ((m(1, 1) <= m(0, 0) && m(2, 2) > m(0, 0)) || (m(2, 2) > m(1, 1))) {
+    double s = std::sqrt((m(2, 2) - (m(0, 0) + m(1, 1))) + 1.0);
+    q.z = s * 0.5;
+    if (s != 0.0) s = 0.5 / s;
+    q.x = (m(2, 0) + m(0, 2)) * s;
+    q.y = (m(1, 2) + m(2, 1)) * s;
+    q.w = (m(1, 0) - m(0, 1)) * s;
+  } else {
+    double s = std::sqrt((m(0, 0) - (m(1, 1) + m(2, 2))) + 1.0);
+    q.x = s * 0.5;
+    if (s != 0.0) s = 0.5 / s;
+    q.y = (m(0, 1) + m(1, 0)) * s;
+    q.z = (m(2, 0) + m(0, 2)) * s;
+    q.w = (m(2, 1) - m(1, 2)) * s;
+  }
+  return q;
+}
+
 // Roll, pitch, yaw (SOFA's Quat::toEulerVector).
 inline Vec3 quat_to_euler_vector(const Quat& in) {
   const Quat q = quat_normalized(in);

@@ -98,15 +98,16 @@ class Builder {
     }
     for (const auto& err : created.errors) diag_->error(e.where, "'" + e.tag + "': " + err);
     const ComponentInfo* info = registry().find(renamed_component(e.tag));
-    Component* c = node.add_object(std::move(created.component));
+    // Type, location and name before insertion, so that messages raised by the
+    // insertion itself (a single slot taken over) and while parsing name the
+    // component; unnamed objects are ClassName1, ClassName2, ... per node (trap T17).
+    Component* c = created.component.get();
     c->set_type(info->name, created.used_template);
     c->where = e.where;
-
-    // Name first, so that messages while parsing name the component; unnamed
-    // objects are ClassName1, ClassName2, ... per node (trap T17).
     const std::string* given = attrs.peek("name");
     if (given && !given->empty()) c->name.set(*given);
     else c->name.set(info->name + std::to_string(node.next_default_index(info->name)));
+    if (!node.add_object(std::move(created.component))) return;
     if (const std::string* src = attrs.take("src")) apply_src(*c, node, *src, attrs, e);
     c->parse(attrs, *diag_);
     if (c->name.value().empty()) c->name.set(info->name + std::to_string(node.next_default_index(info->name)));
@@ -165,7 +166,7 @@ class Builder {
     if (value.empty()) return;
     if (auto found = paths_.resolve(value, e.base_dir)) {
       f.read(*found);
-    } else {
+    } else if (f.file_required()) {
       diag_->error(e.where, c.describe() + ": file not found: " + quote_value(value) + " (searched " + e.base_dir +
                                 " and the data paths)");
     }
@@ -247,6 +248,8 @@ LoadedScene build_scene(const Element& root, const ResourcePaths& paths) {
   out.file = root.where.file;
   Builder b(paths, out);
   b.build(root);
+  // Components that write next to the data (SOFA's DataRepository first path) read them at init.
+  if (out.root) out.root->data_dirs = paths.dirs();
   return out;
 }
 

@@ -108,6 +108,8 @@ INSTANTIATE_TEST_SUITE_P(
                     R"(<MechanicalObject position="1 0 0  0 1 0  0 0 1  1 1 1"/><RigidMapping rigidIndexPerPoint="0 0 1 1"/>)"},
         MappingCase{"subset", R"(position="0 0 0  1 2 3  -1 0.5 2  4 4 4")", "",
                     R"(<MechanicalObject/><SubsetMapping indices="3 1 1"/>)"},
+        MappingCase{"tubular", R"(template="Rigid3" position="1 2 3  0.1 0.2 0.3 0.927362  -1 0 0  0 0 0 1")", "",
+                    R"(<MechanicalObject/><TubularMapping nbPointsOnEachCircle="5" radius="0.3"/>)"},
         MappingCase{"barycentric", R"(position="0 0 0  1 0 0  0 1 0  0 0 1")",
                     R"(<MeshTopology tetrahedra="0 1 2 3"/>)",
                     R"(<MechanicalObject position="0.1 0.2 0.3  0.25 0.25 0.25  0.6 0.1 0.1"/><BarycentricMapping/>)"}),

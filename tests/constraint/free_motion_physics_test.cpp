@@ -9,6 +9,7 @@
 
 #include "core/simulation.h"
 #include "state/mechanical_object.h"
+#include "badinput_helpers.h"
 #include "test_scene.h"
 
 namespace sinew {
@@ -167,6 +168,53 @@ TEST(FreeMotionPhysics, ContradictoryBilateralConstraintsReportNonConvergenceAnd
   EXPECT_TRUE(test::any_contains(warnings, "residual "));
 }
 
+// One point tied to three coincident anchors: consistent, but each axis has
+// three identical rows, so plain projected Jacobi doubles its error every
+// iteration (iteration matrix eigenvalue −2) until the forces overflow. The
+// solver says why and what to do, applies nothing, and the state stays
+// finite. With useSpectralCorrection the violation is scaled by
+// ρ = 0.9·2/|λ|² (SOFA squares the eigenvalue): with compliance 100 (W =
+// compliance·dt per entry) each axis' 3×3 block of W is all ones (λ = 3,
+// ρ = 0.2, iteration eigenvalue 1 − 3ρ = 0.4) and the same problem converges.
+std::string three_anchor_scene(const std::string& solver) {
+  return R"(<Node name="root" dt="0.01" gravity="0 -9.81 0">
+    <FreeMotionAnimationLoop/>)" + solver + R"(
+    <Node name="anchors"><MechanicalObject name="a" position="0 0 0  0 0 0  0 0 0"/></Node>
+    <Node name="body">
+      <EulerImplicitSolver/><CGLinearSolver iterations="25" tolerance="1e-12" threshold="1e-12"/>
+      <MechanicalObject name="p" position="0 0 0"/>
+      <UniformMass totalMass="1"/>
+      <UncoupledConstraintCorrection compliance="100"/>
+    </Node>
+    <BilateralLagrangianConstraint object1="@anchors/a" object2="@body/p" first_point="0" second_point="0"/>
+    <BilateralLagrangianConstraint object1="@anchors/a" object2="@body/p" first_point="1" second_point="0"/>
+    <BilateralLagrangianConstraint object1="@anchors/a" object2="@body/p" first_point="2" second_point="0"/>
+  </Node>)";
+}
+
+TEST(FreeMotionPhysics, DivergingJacobiIsReportedWithItsRemedyAndAppliesNothing) {
+  scene::LoadedScene s =
+      test::load(three_anchor_scene(R"(<ImprovedJacobiConstraintSolver tolerance="1e-10" maxIterations="2000"/>)"));
+  ASSERT_TRUE(s.root);
+  animate(*s.root);
+  const auto errors = test::messages(s.root->diagnostics(), Severity::error);
+  EXPECT_TRUE(test::any_contains_all(errors, {"not finite after 2001 iterations", "useSpectralCorrection"}))
+      << ::testing::PrintToString(errors);
+  // Nothing applied: the point moved as in free fall for one step.
+  auto* p = test::get<MechanicalObject>(*s.root->find_child_named("body"), "p");
+  EXPECT_NEAR(p->read(kVelocity)[1], -9.81 * 0.01, 1e-12);
+  for (double v : p->read(kPosition)) EXPECT_TRUE(std::isfinite(v));
+
+  scene::LoadedScene c = test::load(three_anchor_scene(
+      R"(<ImprovedJacobiConstraintSolver tolerance="1e-10" maxIterations="2000" useSpectralCorrection="1"/>)"));
+  ASSERT_TRUE(c.root);
+  for (int i = 0; i < 10; ++i) animate(*c.root);
+  EXPECT_FALSE(c.root->diagnostics().has_errors())
+      << ::testing::PrintToString(test::messages(c.root->diagnostics(), Severity::error));
+  auto* q = test::get<MechanicalObject>(*c.root->find_child_named("body"), "p");
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(q->read(kPosition)[k], 0.0, 1e-9) << k;
+}
+
 // A point pinned (FixedProjectiveConstraint) inside a closed box it is too
 // close to: every contact row is projected away, nothing can satisfy the
 // contacts. The rows are reported and left without force; the state stays finite.
@@ -201,6 +249,52 @@ TEST(FreeMotionPhysics, PinnedPointInsideAClosedBoxIsReportedAndStaysFinite) {
   for (double v : p->read(kVelocity)) EXPECT_EQ(v, 0.0);
   const auto warnings = test::messages(s.root->diagnostics(), Severity::warning);
   EXPECT_TRUE(test::any_contains(warnings, "have no compliance")) << ::testing::PrintToString(warnings);
+}
+
+// A Rigid3d sphere (frame turned 90° about x, so the contact point must be
+// mapped through the frame) sliding along a floor with Coulomb friction.
+// SOFA puts a rigid sphere's contact point on its surface (c − n·r) and its
+// rigid contact mapper adds the radius to the contact distance as well, so the
+// sphere is held at 2r + contactDistance: starting at r + 0.01 it is pushed up
+// by r in one step, and the large normal impulse lets friction stop the contact
+// point's slip at once: then v = 5/7 v0 and ω = −v / r (solid sphere,
+// I = 2/5 m r²), which checks the lever arm of the mapped contact point.
+TEST(FreeMotionPhysics, RigidSphereContactActsAtItsSurfaceThroughItsFrame) {
+  const double r = 0.2, d = 0.01, v0 = 1.0, dt = 0.002;
+  const std::string xml = R"(<Node name="root" dt="0.002" gravity="0 -9.81 0">
+    <FreeMotionAnimationLoop/>
+    <BlockGaussSeidelConstraintSolver tolerance="1e-12" maxIterations="1000"/>
+    <CollisionPipeline/><BruteForceBroadPhase/><BVHNarrowPhase/>
+    <MinProximityIntersection alarmDistance="0.05" contactDistance="0.01"/>
+    <CollisionResponse response="FrictionContactConstraint" responseParams="mu=0.5"/>
+    <Node name="floor">
+      <MechanicalObject position="-10 0 -10  10 0 -10  -10 0 10  10 0 10"/>
+      <MeshTopology triangles="0 2 3  0 3 1"/>
+      <TriangleCollisionModel simulated="0" moving="0"/>
+    </Node>
+    <Node name="ball">
+      <EulerImplicitSolver/>
+      <CGLinearSolver iterations="25" tolerance="1e-12" threshold="1e-12"/>
+      <MechanicalObject name="x" template="Rigid3d" position="0.3 0.21 0.4  0.70710678118654752 0 0 0.70710678118654752"
+                        velocity="1 0 0 0 0 0"/>
+      <UniformMass vertexMass="1 1  0.016 0 0  0 0.016 0  0 0 0.016"/>
+      <SphereCollisionModel radius="0.2"/>
+      <UncoupledConstraintCorrection/>
+    </Node>
+  </Node>)";
+  scene::LoadedScene s = test::load(xml);
+  ASSERT_TRUE(s.root);
+  auto* x = test::get<MechanicalObject>(*s.root->find_child_named("ball"), "x");
+  ASSERT_NE(x, nullptr);
+  animate(*s.root);
+  const std::vector<double>& v = x->read(kVelocity);
+  const std::vector<double>& p = x->read(kPosition);
+  EXPECT_NEAR(p[1], 2 * r + d, 1e-9);
+  EXPECT_NEAR(v[1], r / dt, 1e-6);
+  EXPECT_NEAR(v[0], 5.0 / 7.0 * v0, 1e-9);
+  EXPECT_NEAR(v[5], -v[0] / r, 1e-9);
+  for (int k : {2, 3, 4}) EXPECT_NEAR(v[k], 0.0, 1e-9) << k;
+  EXPECT_NEAR(p[2], 0.4, 1e-12);
 }
 
 }  // namespace

@@ -265,3 +265,28 @@ TEST(FormatDouble, ListsAreSeparatedBySingleSpaces) {
   EXPECT_EQ(parse::to_text(std::vector<Vec3>{Vec3(1, 2, 3), Vec3(4, 5, 6)}), "1 2 3 4 5 6");
   EXPECT_EQ(parse::to_text(true), "1");
 }
+
+// ---------------------------------------------------------------- Rigid3d mass (RigidMass<3> >>)
+
+TEST(ParseRigid3Mass, MatrixDecorationsAreOptional) {
+  std::vector<double> v;
+  const std::vector<double> want = {2, 0.5, 1, 0, 0, 0, 3, 0, 0, 0, 5};
+  EXPECT_TRUE(parse::read_rigid3_mass("2 0.5 [1 0 0,0 3 0,0 0 5]", v));
+  EXPECT_EQ(v, want);
+  EXPECT_TRUE(parse::read_rigid3_mass("2 0.5 [1 0 0 0 3 0 0 0 5]", v));
+  EXPECT_EQ(v, want);
+  EXPECT_TRUE(parse::read_rigid3_mass("2 0.5 1 0 0 0 3 0 0 0 5", v));
+  EXPECT_EQ(v, want);
+  EXPECT_TRUE(parse::read_rigid3_mass("  2 0.5\n[ 1 0 0 , 0 3 0 , 0 0 5 ]  trailing", v));
+  EXPECT_EQ(v, want);
+}
+
+TEST(ParseRigid3Mass, ShortTextGivesFewerValuesAndGarbageFails) {
+  std::vector<double> v;
+  EXPECT_TRUE(parse::read_rigid3_mass("0.01", v));
+  EXPECT_EQ(v, (std::vector<double>{0.01}));
+  EXPECT_FALSE(parse::read_rigid3_mass("1 1 [1 0 x]", v));
+  EXPECT_EQ(v, (std::vector<double>{1, 1, 1, 0}));
+  // A second '[' is not a matrix decoration (SOFA skips one only).
+  EXPECT_FALSE(parse::read_rigid3_mass("1 1 [[1 0 0 0 1 0 0 0 1]]", v));
+}

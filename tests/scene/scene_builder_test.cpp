@@ -320,3 +320,21 @@ TEST(SceneBuilder, IncludedFileIsExpandedInPlace) {
   ASSERT_NE(m, nullptr);
   EXPECT_EQ(m->mass(), 2.0);
 }
+
+// Two animation loops in one node (SOFA's DeformableOnRigidFrameMappingConstraints.scn):
+// the last one is kept, as SOFA's single link does, and the warning names both
+// and points at the second's line (the newcomer is named before insertion).
+TEST(SceneBuilder, SecondAnimationLoopReplacesTheFirstWithBothNamed) {
+  scene::LoadedScene s =
+      build("<Node name='root'>\n<FreeMotionAnimationLoop/>\n<FreeMotionAnimationLoop name='last'/>\n</Node>");
+  ASSERT_TRUE(s.root);
+  const auto warnings = messages(s.root->diagnostics(), Severity::warning);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find(":3: warning: only one animation loop is permitted in node 'root': component "
+                             "'FreeMotionAnimationLoop1' (FreeMotionAnimationLoop) replaced by component 'last' "
+                             "(FreeMotionAnimationLoop)"),
+            std::string::npos)
+      << warnings[0];
+  ASSERT_NE(s.root->animation_loop, nullptr);
+  EXPECT_EQ(static_cast<Component*>(s.root->animation_loop)->name.value(), "last");
+}

@@ -7,6 +7,7 @@
 namespace sinew {
 
 bool SphereCollisionModel::init_model() {
+  rigid_ = mstate_->state_type() == StateType::rigid3;
   x_ = positions();
   update_radii();
   return true;
@@ -47,11 +48,12 @@ void register_sphere_collision_model(Registry& r) {
   ComponentInfo info;
   info.name = "SphereCollisionModel";
   info.category = "Collision/Geometry";
-  info.description = "collision model of spheres centred on the points of a Vec3d state";
-  info.templates = {"Vec3d"};
+  info.description = "collision model of spheres centred on the points of a Vec3d state or the frames of a Rigid3d one";
+  info.templates = {"Vec3d", "Rigid3d"};
   info.default_template = "Vec3d";
+  info.requirement = Requirement::state;  // the template follows the node's state
   info.create = [](const std::string& t) -> std::unique_ptr<Component> {
-    if (t != "Vec3d") return nullptr;
+    if (t != "Vec3d" && t != "Rigid3d") return nullptr;
     return std::make_unique<SphereCollisionModel>();
   };
   r.add(std::move(info));

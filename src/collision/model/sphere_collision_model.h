@@ -1,5 +1,7 @@
-// SphereCollisionModel (Vec3d): one sphere per point of the node's state,
-// radius from listRadius or radius (spec/interaction.md §3.3).
+// SphereCollisionModel: one sphere per point of the node's state, radius
+// from listRadius or radius (spec/interaction.md §3.3). Vec3d: centred on the
+// points, contacts at the centres. Rigid3d: centred on the frames, contacts on
+// the surface (c − n·r), mapped to the frames by a RigidMapping (ContactMapper).
 #pragma once
 
 #include "collision/collision_model.h"
@@ -18,8 +20,10 @@ class SphereCollisionModel final : public CollisionModelBase {
   std::size_t size() const override { return x_.size(); }
   void compute_bounding_tree(int depth) override;
 
-  SphereElem elem(unsigned i) const { return {x_[i], r_[i], false, {i, x_.size(), contact_distance.value(), this}}; }
+  SphereElem elem(unsigned i) const { return {x_[i], r_[i], rigid_, {i, x_.size(), contact_distance.value(), this}}; }
   double radius_of(unsigned i) const { return r_[i]; }
+  bool rigid() const { return rigid_; }
+  bool accepts_rigid3() const override { return true; }
 
  protected:
   bool init_model() override;
@@ -28,6 +32,7 @@ class SphereCollisionModel final : public CollisionModelBase {
   void update_radii();
   std::span<const Vec3> x_;
   std::vector<double> r_;
+  bool rigid_ = false;
 };
 
 }  // namespace sinew

@@ -4,11 +4,13 @@
 // (re)attached to the graph where the response belongs.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "collision/collision_model.h"
 #include "collision/detection_output.h"
+#include "core/node.h"
 
 namespace sinew {
 
@@ -42,5 +44,15 @@ class Contact {
   CollisionModelBase* m2_;
   const Intersection* method_;
 };
+
+// Puts a contact's response component in `where` (Contact::create_response):
+// it stays when already there, moves from the node it was attached to, or
+// comes out of `detached` (built before its first attachment). Returns it.
+template <class T>
+T* attach_response(Node& where, T* attached, std::unique_ptr<T>& detached) {
+  if (attached && attached->node() == &where) return attached;  // attached there since an earlier step
+  std::unique_ptr<Component> owned = attached ? attached->node()->remove_object(attached) : std::move(detached);
+  return static_cast<T*>(where.add_object(std::move(owned)));
+}
 
 }  // namespace sinew

@@ -8,12 +8,25 @@
 #include "collision/model/tetrahedron_collision_model.h"
 #include "collision/model/triangle_collision_model.h"
 #include "core/node.h"
+#include "mapping/rigid_mapping.h"
+#include "math/quat.h"
 #include "state/mechanical_object.h"
 
 namespace sinew {
 
 // The graph owns the child node: destroying the mapper (at graph teardown) leaves it alone.
 ContactMapper::~ContactMapper() = default;
+
+bool ContactMapper::identity() const {
+  switch (model_->kind()) {
+    case CollisionModelBase::Kind::point:
+      return true;
+    case CollisionModelBase::Kind::sphere:
+      return !static_cast<const SphereCollisionModel*>(model_)->rigid();
+    default:
+      return false;
+  }
+}
 
 MechanicalState* ContactMapper::state() {
   if (identity()) return model_->mstate();
@@ -30,11 +43,21 @@ MechanicalState* ContactMapper::state() {
     mapped_->init();
     mapped_->resize(0);
     mapped_->mark_initialised();
-    auto map = std::make_unique<ContactMapping>(*model_->mstate(), *mapped_);
-    map->name.set("contactMapping");
-    map->set_type("BarycentricMapping", "Vec3d,Vec3d");
-    mapping_ = static_cast<ContactMapping*>(child_->add_object(std::move(map)));
-    mapping_->mark_initialised();
+    if (model_->mstate()->state_type() == StateType::rigid3) {
+      auto map = std::make_unique<RigidMapping>(StateType::rigid3, StateType::vec3);
+      map->name.set("contactMapping");
+      map->set_type("RigidMapping", "Rigid3d,Vec3d");
+      rigid_mapping_ = static_cast<RigidMapping*>(child_->add_object(std::move(map)));
+      rigid_mapping_->bind_contact_states(*model_->mstate(), *mapped_);
+      map_ = rigid_mapping_;
+    } else {
+      auto map = std::make_unique<ContactMapping>(*model_->mstate(), *mapped_);
+      map->name.set("contactMapping");
+      map->set_type("BarycentricMapping", "Vec3d,Vec3d");
+      mapping_ = static_cast<ContactMapping*>(child_->add_object(std::move(map)));
+      map_ = mapping_;
+    }
+    map_->mark_initialised();
     child_->initialised = true;
   }
   return mapped_;
@@ -43,7 +66,8 @@ MechanicalState* ContactMapper::state() {
 void ContactMapper::resize(std::size_t n) {
   if (identity()) return;
   state();
-  mapping_->clear();
+  if (mapping_) mapping_->clear();
+  if (rigid_mapping_) rigid_mapping_->clear_points();
   mapped_->resize(n);
 }
 
@@ -52,9 +76,15 @@ unsigned ContactMapper::add_point(const Vec3& P, unsigned elem, double& r) {
   switch (model_->kind()) {
     case CollisionModelBase::Kind::point:
       return elem;
-    case CollisionModelBase::Kind::sphere:
-      r = static_cast<SphereCollisionModel*>(model_)->radius_of(elem);
-      return elem;
+    case CollisionModelBase::Kind::sphere: {
+      const auto& sphere = *static_cast<SphereCollisionModel*>(model_);
+      r = sphere.radius_of(elem);
+      if (!sphere.rigid()) return elem;
+      // The point in the frame of its rigid: q⁻¹·(P − c).
+      const double* c = &model_->mstate()->read(kPosition)[elem * 7];
+      const Vec3 local = quat_inverse_rotate(Quat::from(c + 3), P - Vec3(c[0], c[1], c[2]));
+      return rigid_mapping_->add_point(local, elem);
+    }
     case CollisionModelBase::Kind::line: {
       // Parameter along the edge, not clamped (SOFA's line contact mapper).
       const auto& line = *static_cast<LineCollisionModel*>(model_);
@@ -145,15 +175,15 @@ unsigned ContactMapper::add_point(const Vec3& P, unsigned elem, double& r) {
 }
 
 void ContactMapper::update() {
-  if (identity() || !mapping_) return;
-  mapping_->apply(kPosition);
-  mapping_->apply_j(kVelocity, kVelocity);
+  if (identity() || !map_) return;
+  map_->apply(kPosition);
+  map_->apply_j(kVelocity, kVelocity);
 }
 
 void ContactMapper::update_xfree() {
-  if (identity() || !mapping_) return;
-  mapping_->apply(kFreePosition);
-  mapping_->apply_j(kFreeVelocity, kFreeVelocity);
+  if (identity() || !map_) return;
+  map_->apply(kFreePosition);
+  map_->apply_j(kFreeVelocity, kFreeVelocity);
 }
 
 void ContactMapper::cleanup() {
@@ -161,7 +191,9 @@ void ContactMapper::cleanup() {
   if (Node* parent = child_->parent()) parent->remove_child(child_);
   child_ = nullptr;
   mapped_ = nullptr;
+  map_ = nullptr;
   mapping_ = nullptr;
+  rigid_mapping_ = nullptr;
 }
 
 }  // namespace sinew

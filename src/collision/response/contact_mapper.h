@@ -1,7 +1,10 @@
 // ContactMapper: where the contact points of one side of a contact live
 // (spec/interaction.md §4.3).
-// - Points and spheres: the collision model's own state; a contact point is
-//   the element's point itself (SOFA's identity mapper).
+// - Points and Vec3d spheres: the collision model's own state; a contact
+//   point is the element's point itself (SOFA's identity mapper).
+// - Rigid3d spheres: a child node holding a Vec3d state mapped from the
+//   frames by a RigidMapping, the point stored in its frame (SOFA's
+//   RigidContactMapper).
 // - Lines and triangles: a child node of the model's node holding a Vec3d
 //   state mapped from the model's state by a ContactMapping, created on
 //   first use and removed with the contact (SOFA's barycentric mapper).
@@ -11,6 +14,10 @@
 
 #include "collision/collision_model.h"
 #include "collision/response/contact_mapping.h"
+
+namespace sinew {
+class RigidMapping;
+}
 
 namespace sinew {
 
@@ -35,14 +42,14 @@ class ContactMapper {
   void cleanup();
 
  private:
-  bool identity() const {
-    return model_->kind() == CollisionModelBase::Kind::point || model_->kind() == CollisionModelBase::Kind::sphere;
-  }
+  bool identity() const;
   CollisionModelBase* model_;
   std::string name_;
   Node* child_ = nullptr;
   MechanicalState* mapped_ = nullptr;
-  ContactMapping* mapping_ = nullptr;
+  Mapping* map_ = nullptr;                   // the one below that exists
+  ContactMapping* mapping_ = nullptr;        // lines, triangles, tetrahedra
+  RigidMapping* rigid_mapping_ = nullptr;    // Rigid3d spheres
 };
 
 }  // namespace sinew

@@ -139,13 +139,7 @@ void PenaltyContact::set_detection_outputs(std::vector<DetectionOutput>& outputs
 }
 
 void PenaltyContact::create_response(Node& where) {
-  if (ff_ && ff_->node() == &where) return;  // attached there since an earlier step
-  std::unique_ptr<Component> owned;
-  if (ff_)
-    owned = ff_->node()->remove_object(ff_);
-  else
-    owned = std::move(detached_);
-  ff_ = static_cast<PenaltyContactForceField*>(where.add_object(std::move(owned)));
+  ff_ = attach_response(where, ff_, detached_);
 }
 
 void PenaltyContact::cleanup() {

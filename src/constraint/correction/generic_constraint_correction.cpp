@@ -16,6 +16,7 @@
 
 #include <Eigen/SparseCore>
 
+#include "constraint/correction/correction_solvers.h"
 #include "core/constraint_problem.h"
 #include "core/node.h"
 #include "core/registry.h"
@@ -42,30 +43,9 @@ class GenericConstraintCorrection final : public ConstraintCorrection {
   void init() override {
     // No state of its own: `mstate` only names the node's state when there is one.
     if (!mstate && node()) mstate.set(node()->get_mechanical_state());
-    if (!linear_solver) {
-      msg_info("linearSolver is not set: the first linear solver of this node is used");
-      linear_solver.set(node()->find_local<LinearSolver>());
-    }
-    if (!linear_solver) {
-      msg_error("no linear solver linked (linearSolver) nor in this node");
-      set_state(ComponentState::invalid);
-      return;
-    }
-    solver_ = dynamic_cast<MatrixLinearSolver*>(linear_solver.get());
-    if (!solver_) {
-      msg_error(linear_solver->describe() +
-                " does not assemble its matrix (SOFA refuses GraphScattered solvers here): use a direct solver such "
-                "as SparseLDLSolver or EigenSimplicialLDLT");
-      set_state(ComponentState::invalid);
-      return;
-    }
-    if (!ode_solver) ode_solver.set(node()->find_local<OdeSolver>());
-    if (!ode_solver) ode_solver.set(node()->root()->find_down<OdeSolver>());
-    if (!ode_solver) {
-      msg_error("no ODE solver linked (ODESolver), in this node or anywhere from the root");
-      set_state(ComponentState::invalid);
-      return;
-    }
+    if (!linear_solver) msg_info("linearSolver is not set: the first linear solver of this node is used");
+    solver_ = resolve_correction_solvers(*this, linear_solver, ode_solver);
+    if (!solver_) set_state(ComponentState::invalid);
   }
 
   void add_compliance(const ConstraintParams& p, ConstraintProblem& problem) override {

@@ -12,6 +12,7 @@
 
 #include <Eigen/SparseCore>
 
+#include "constraint/correction/correction_solvers.h"
 #include "core/constraint_problem.h"
 #include "core/node.h"
 #include "core/registry.h"
@@ -34,27 +35,8 @@ class LinearSolverConstraintCorrection final : public ConstraintCorrection {
   void init() override {
     ConstraintCorrection::init();
     if (state() != ComponentState::valid) return;
-    if (!linear_solver) linear_solver.set(node()->find_local<LinearSolver>());
-    if (!linear_solver) {
-      msg_error("no linear solver linked (linearSolver) nor in this node");
-      set_state(ComponentState::invalid);
-      return;
-    }
-    solver_ = dynamic_cast<MatrixLinearSolver*>(linear_solver.get());
-    if (!solver_) {
-      msg_error(linear_solver->describe() +
-                " does not assemble its matrix (SOFA refuses GraphScattered solvers here): link a direct solver "
-                "such as SparseLDLSolver");
-      set_state(ComponentState::invalid);
-      return;
-    }
-    if (!ode_solver) ode_solver.set(node()->find_local<OdeSolver>());
-    if (!ode_solver) ode_solver.set(node()->root()->find_down<OdeSolver>());
-    if (!ode_solver) {
-      msg_error("no ODE solver linked (ODESolver), in this node or anywhere from the root");
-      set_state(ComponentState::invalid);
-      return;
-    }
+    solver_ = resolve_correction_solvers(*this, linear_solver, ode_solver);
+    if (!solver_) set_state(ComponentState::invalid);
   }
 
   void add_compliance(const ConstraintParams& p, ConstraintProblem& problem) override {

@@ -15,6 +15,7 @@
 #include "collision/response/contact.h"
 #include "collision/response/contact_mapper.h"
 #include "constraint/model/unilateral_lagrangian_constraint.h"
+#include "constraint/response/distinct_outputs.h"
 #include "core/node.h"
 #include "core/parse.h"
 #include "core/registry.h"
@@ -64,16 +65,7 @@ class FrictionContact final : public Contact {
       }
       return;
     }
-    const double min_dist2 = static_cast<double>(0.00000001f);  // SOFA's float constant
-    for (std::size_t i = 0; i < outputs.size(); ++i) {
-      const DetectionOutput& o = outputs[i];
-      bool found = false;
-      for (std::size_t k = 0; k < kept_.size() && !found; ++k) {
-        const DetectionOutput& p = outputs[kept_[k]];
-        found = (o.point1 - p.point1).squaredNorm() + (o.point2 - p.point2).squaredNorm() < min_dist2;
-      }
-      if (!found) kept_.push_back(i);
-    }
+    keep_distinct_outputs(outputs, kept_);
     outputs_ = &outputs;
   }
 
@@ -117,11 +109,7 @@ class FrictionContact final : public Contact {
       c.add_contact(mu_, o.normal, mapped_[k].distance, static_cast<int>(mapped_[k].i1),
                     static_cast<int>(mapped_[k].i2), cantor(o.id, serial_), o.id);
     }
-    if (constraint_ && constraint_->node() == &where) return;  // attached there since an earlier step
-    std::unique_ptr<Component> owned;
-    if (constraint_) owned = constraint_->node()->remove_object(constraint_);
-    else owned = std::move(detached_);
-    constraint_ = static_cast<UnilateralLagrangianConstraint*>(where.add_object(std::move(owned)));
+    constraint_ = attach_response(where, constraint_, detached_);
   }
 
   Component* response() const override { return constraint_; }

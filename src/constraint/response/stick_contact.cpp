@@ -16,6 +16,7 @@
 #include "collision/response/contact.h"
 #include "collision/response/contact_mapper.h"
 #include "constraint/model/bilateral_lagrangian_constraint.h"
+#include "constraint/response/distinct_outputs.h"
 #include "core/node.h"
 #include "core/parse.h"
 #include "core/registry.h"
@@ -45,16 +46,7 @@ class StickContact final : public Contact {
 
   void set_detection_outputs(std::vector<DetectionOutput>& outputs) override {
     kept_.clear();
-    const double min_dist2 = static_cast<double>(0.00000001f);  // SOFA's float constant
-    for (std::size_t i = 0; i < outputs.size(); ++i) {
-      const DetectionOutput& o = outputs[i];
-      bool found = false;
-      for (std::size_t k = 0; k < kept_.size() && !found; ++k) {
-        const DetectionOutput& p = outputs[kept_[k]];
-        found = (o.point1 - p.point1).squaredNorm() + (o.point2 - p.point2).squaredNorm() < min_dist2;
-      }
-      if (!found) kept_.push_back(i);
-    }
+    keep_distinct_outputs(outputs, kept_);
     outputs_ = &outputs;
   }
 
@@ -62,11 +54,7 @@ class StickContact final : public Contact {
     if (!outputs_) return;
     if (!kept_.empty() || !keep_alive_) rebuild();
     if (!constraint_ && !detached_) return;
-    if (constraint_ && constraint_->node() == &where) return;  // attached there since an earlier step
-    std::unique_ptr<Component> owned;
-    if (constraint_) owned = constraint_->node()->remove_object(constraint_);
-    else owned = std::move(detached_);
-    constraint_ = static_cast<BilateralLagrangianConstraint*>(where.add_object(std::move(owned)));
+    constraint_ = attach_response(where, constraint_, detached_);
   }
 
   Component* response() const override { return constraint_; }

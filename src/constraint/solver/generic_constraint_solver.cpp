@@ -89,8 +89,8 @@ void GenericConstraintSolver::solve_constraint(const ConstraintParams& p, int x_
   bool finite = true;
   for (double v : problem_.f) finite = finite && std::isfinite(v);
   if (!finite) {
-    msg_error("the constraint forces are not finite (" + std::to_string(problem_.n) +
-              " rows): no correction applied this step; check the compliance of the constraint corrections");
+    msg_error("the constraint forces are not finite after " + std::to_string(iterations_) + " iterations (" +
+              std::to_string(problem_.n) + " rows), the solve diverged: no correction applied; " + divergence_hint());
     std::fill(problem_.f.begin(), problem_.f.end(), 0.0);
   } else if (!converged_ && !warned_divergence_) {
     warned_divergence_ = true;

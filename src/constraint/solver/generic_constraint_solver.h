@@ -6,6 +6,7 @@
 // solvers) → solve (the subclass' iterations) → outputs → corrections.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "constraint/solver/constraint_system.h"
@@ -46,6 +47,8 @@ class GenericConstraintSolver : public ConstraintSolver {
   virtual void build_system(const ConstraintParams& p);
   // Finds problem_.f; sets iterations_ and error_, converged_.
   virtual void solve_system() = 0;
+  // What to tell the user when the forces come out non-finite.
+  virtual std::string divergence_hint() const { return "check the compliance of the constraint corrections"; }
   // The effective tolerance (scaled by the number of rows unless allVerified).
   double effective_tolerance() const;
   // One Gauss-Seidel sweep over the blocks (SOFA's gaussSeidel_increment);

@@ -85,6 +85,16 @@ void ImprovedJacobiConstraintSolver::solve_system() {
   for (ConstraintBlock& b : P.blocks) resolution_store(b, f);
 }
 
+// Plain projected Jacobi (ρ = 1, no extrapolation) overshoots when many rows
+// share a body: each block is solved as if the others held still, so their
+// corrections add up. SOFA's Contact_ImprovedJacobi.scn diverges this way at
+// its first contacts (SOFA's own scene tests skip that scene).
+std::string ImprovedJacobiConstraintSolver::divergence_hint() const {
+  if (use_spectral_correction.value()) return GenericConstraintSolver::divergence_hint();
+  return "projected Jacobi without useSpectralCorrection diverges when many constraints act on one body: set "
+         "useSpectralCorrection=\"1\" or use BlockGaussSeidelConstraintSolver";
+}
+
 void register_improved_jacobi_constraint_solver(Registry& r) {
   ComponentInfo info;
   info.name = "ImprovedJacobiConstraintSolver";

@@ -28,6 +28,7 @@ class ImprovedJacobiConstraintSolver : public BuiltConstraintSolver {
 
  protected:
   void solve_system() override;
+  std::string divergence_hint() const override;
 
  private:
   std::vector<double> last_f_, delta_f_, corrected_d_;

@@ -68,7 +68,7 @@ void SystemAssembler::assemble(MechanicalOps& ops, double m, double b, double k,
   // Steady state: replay the recorded sequence straight into the values.
   if (pattern_valid_) {
     matrix_.set_zero();
-    sink_.begin_replay(this, keys_.data(), slots_.data(), keys_.size(), matrix_.values().data());
+    sink_.begin_replay(this, keys_.data(), slots_.data(), block_slots_.data(), keys_.size(), matrix_.values().data());
     add_contributions(ops, m, b, k, o, owner);
     if (!sink_.replay_ok()) pattern_valid_ = false;
   }
@@ -147,6 +147,21 @@ void SystemAssembler::build_pattern() {
     if (e.target != 0) continue;
     keys_.push_back(key_of(e));
     slots_.push_back(e.row < n_ && e.col < n_ ? matrix_.slot(e.row, e.col) : -1);
+  }
+  // Runs of nine keys forming a 3×3 block stored contiguously (block CSR with
+  // 3×3 blocks, block-aligned): replayed with one key check (MatrixSink::add_block).
+  block_slots_.assign(keys_.size(), -1);
+  for (std::size_t i = 0; i + 9 <= keys_.size(); ++i) {
+    const std::int64_t s0 = slots_[i];
+    if (s0 < 0) continue;
+    const std::uint64_t r0 = keys_[i] >> 32, c0 = keys_[i] & 0xffffffffu;
+    bool block = true;
+    for (int a = 0; a < 3 && block; ++a)
+      for (int b = 0; b < 3 && block; ++b) {
+        const std::size_t k = i + static_cast<std::size_t>(3 * a + b);
+        block = keys_[k] == (((r0 + a) << 32) | (c0 + b)) && slots_[k] == s0 + 3 * a + b;
+      }
+    if (block) block_slots_[i] = s0;
   }
   auto& vals = matrix_.values();
   std::size_t j = 0;

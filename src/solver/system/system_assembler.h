@@ -76,6 +76,7 @@ class SystemAssembler final : public MatrixSink::Layout {
   // Recorded insertion sequence of the global target and its value slots.
   std::vector<std::uint64_t> keys_;
   std::vector<std::int64_t> slots_;
+  std::vector<std::int64_t> block_slots_;  // ≥ 0 where a whole contiguous 3×3 block starts (replay fast path)
   bool pattern_valid_ = false;
   long pattern_builds_ = 0;
   std::vector<std::size_t> dirichlet_;
