@@ -269,9 +269,12 @@ void TopologicalChangeProcessor::process(double t) {
       ids.push_back(static_cast<unsigned>(v));
     }
     if (static_cast<long long>(ids.size()) < n) {
-      msg_error(where(il) + "expected " + std::to_string(n) + " indices, found " + std::to_string(ids.size()) +
-                "; nothing removed");
-      continue;
+      // SOFA sizes the list to the count and reads what the line holds: the entries the line
+      // lacks keep their zero. Several of SOFA's own change files count one index too many, so
+      // element 0 goes too; reproduced (one 0 suffices: duplicates collapse) and said.
+      msg_warning(where(il) + "REMOVE= " + std::to_string(n) + " lists " + std::to_string(ids.size()) +
+                  " indices; as in SOFA the missing entries read as index 0, which is removed too");
+      ids.push_back(0);
     }
     std::string why;
     if (!modifier_->remove_items(ids, &why)) msg_error(where(i) + why);
