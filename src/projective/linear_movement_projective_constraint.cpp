@@ -27,12 +27,19 @@ void LinearMovementProjectiveConstraint::init() {
   default_movement_.assign(static_cast<std::size_t>(w_), 0.0);
   const auto& kt = key_times.get();
   const auto& km = movement_list();
-  if (km.size() % static_cast<std::size_t>(w_) != 0 || km.size() / w_ != kt.size()) {
+  if (km.size() % static_cast<std::size_t>(w_) != 0 || km.size() / w_ < kt.size()) {
     msg_error("movements must hold one " + std::to_string(w_) + "-component movement per key time (" +
               std::to_string(kt.size()) + " key times, " + std::to_string(km.size()) + " values)");
     set_state(ComponentState::invalid);
     return;
   }
+  // SOFA walks key times and movements side by side, so movements beyond the last key time are
+  // never read (SOFA's own examples give 6 numbers per key to Vec3 states: the list is read as
+  // twice as many Vec3 movements, of which the first ones pair with the key times).
+  if (km.size() / w_ > kt.size())
+    msg_warning("movements holds " + std::to_string(km.size() / w_) + " movements of " + std::to_string(w_) +
+                " components for " + std::to_string(kt.size()) + " key times; as in SOFA, the first " +
+                std::to_string(kt.size()) + " are used and the rest ignored");
   for (std::size_t k = 1; k < kt.size(); ++k)
     if (kt[k] < kt[k - 1]) {
       msg_warning("keyTimes are not in ascending order (" + std::to_string(kt[k - 1]) + " then " +
