@@ -107,9 +107,11 @@ class Component : public Base {
 
 // Events broadcast top-down through the graph.
 struct Event {
-  enum class Kind { animate_begin, animate_end, simulation_init_done } kind;
+  // Key events come from a front end (viewer, script) with the key's character.
+  enum class Kind { animate_begin, animate_end, simulation_init_done, key_pressed, key_released } kind;
   double dt = 0;
   bool handled = false;
+  char key = 0;
 };
 
 }  // namespace sinew

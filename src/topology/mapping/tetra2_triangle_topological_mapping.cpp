@@ -181,6 +181,15 @@ void Tetra2TriangleTopologicalMapping::on_tetrahedra_added(const std::vector<uns
   modifier->remove_triangles(locals, true, false);
 }
 
+bool Tetra2TriangleTopologicalMapping::input_elements(unsigned out, std::vector<unsigned>& in) const {
+  if (!input || out >= loc2glob_.size()) return true;
+  const auto& shells = input->tetrahedra_around_triangle();
+  const unsigned glob = loc2glob_[out];
+  // SOFA answers tetrahedron 0 for a face that bounds no single tetrahedron; nothing is safer.
+  if (glob < shells.size() && shells[glob].size() == 1) in.push_back(shells[glob][0]);
+  return true;
+}
+
 void register_tetra2_triangle_topological_mapping(Registry& r) {
   ComponentInfo info;
   info.name = "Tetra2TriangleTopologicalMapping";

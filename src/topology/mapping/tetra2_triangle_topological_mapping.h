@@ -19,6 +19,8 @@ class Tetra2TriangleTopologicalMapping final : public TopologicalMapping {
                                    "start with no triangles; only triangles created later are mapped", "Mapping"};
   void init() override;
   void update_top_down() override;
+  // A boundary face stands for the one tetrahedron it bounds (none when it bounds no single one).
+  bool input_elements(unsigned out, std::vector<unsigned>& in) const override;
 
   // Output triangle → input triangle, and back (kNoIndex when an input triangle is not mapped).
   const std::vector<unsigned>& loc2glob() const { return loc2glob_; }

@@ -5,6 +5,8 @@
 // then is initialised again (which creates its lower lists).
 #pragma once
 
+#include <vector>
+
 #include "topology/mesh_topology.h"
 
 namespace sinew {
@@ -24,6 +26,11 @@ class TopologicalMapping : public Component {
   // with input->topology_changes() listing the events). Default: the output does not follow;
   // one warning says so (mappings that follow override this).
   virtual void update_top_down();
+
+  // The input elements output element `out` stands for (SOFA's getGlobIndex then getFromIndex):
+  // how a removal asked on the output (a carved collision surface) reaches the input. Appends
+  // them to `in`; false when this mapping cannot tell (the default).
+  virtual bool input_elements(unsigned /*out*/, std::vector<unsigned>& /*in*/) const { return false; }
 
  protected:
   bool warned_static_ = false;
