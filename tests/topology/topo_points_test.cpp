@@ -237,3 +237,42 @@ TEST(TopologicalChangeProcessor, UseDataInputsRemovesPointsAndSpringsFollow) {
   EXPECT_DOUBLE_EQ(m.total_mass.value(), 20.0);
   EXPECT_EQ(proc.time_to_remove.value(), 4294967295.0);
 }
+
+// INCISE= blocks: malformed ones are refused at init naming the line; well-formed ones (both
+// forms) are accepted with a warning and, the incision not being written, reported as an error
+// when due, the mesh left unchanged.
+TEST(TopologicalChangeProcessor, InciseBlocksAreCheckedAndReportedWhenDue) {
+  sinew::test::TempDir dir;
+  const char* scene = R"(<Node>
+      <TriangleSetTopologyContainer name="topo" position="0 0 0  1 0 0  0 1 0  1 1 0" triangles="0 1 2  1 3 2"/>
+      <TriangleSetTopologyModifier name="mod"/>
+      <TopologicalChangeProcessor name="proc" filename="FILE"/>
+    </Node>)";
+  auto with = [&](const std::string& file) {
+    std::string xml = scene;
+    xml.replace(xml.find("FILE"), 4, file);
+    return xml;
+  };
+  {
+    const std::string file = dir.write("bad.txt", "T= 0.1\n\tINCISE= 2\n0.2 0.2 0 0.8\n");
+    auto s = sinew::test::build(with(file));
+    init_root(*s.root);
+    EXPECT_TRUE(sinew::test::any_contains(sinew::test::messages(s.root->diagnostics(), Severity::error),
+                                          "bad.txt:2: INCISE= 2: line 3 needs 6 (coordinates) or 8 (triangle and "
+                                          "coordinates) numbers, has 4"));
+  }
+  const std::string file =
+      dir.write("ok.txt", "T= 0.1\n\tINCISE= 2\n0.2 0.2 0 0.8 0.6 0\nT= 0.2\n\tINCISE= 2\n0 0.2 0.2 0 1 0.8 0.6 0\n");
+  auto s = load(with(file));
+  EXPECT_TRUE(sinew::test::any_contains(sinew::test::messages(s.root->diagnostics(), Severity::warning),
+                                        "ok.txt:2: INCISE= (incision along a path) is not supported yet"));
+  auto& proc = *get<TopologicalChangeProcessor>(*s.root, "proc");
+  auto& topo = *get<TriangleSetTopologyContainer>(*s.root, "topo");
+  proc.process(0.1);
+  proc.process(0.2);
+  const auto errors = sinew::test::messages(s.root->diagnostics(), Severity::error);
+  EXPECT_TRUE(sinew::test::any_contains(errors, "ok.txt:2: INCISE= is not supported yet: no incision made"));
+  EXPECT_TRUE(sinew::test::any_contains(errors, "ok.txt:5: INCISE= is not supported yet: no incision made"));
+  EXPECT_EQ(topo.triangles().size(), 2u);
+  EXPECT_EQ(topo.nb_points(), 4u);
+}

@@ -1,6 +1,7 @@
 #include "topology/utility/topological_change_processor.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <sstream>
 
@@ -65,13 +66,21 @@ void TopologicalChangeProcessor::init() {
   // Commands this slice cannot apply, and malformed ADD= lines, are refused now, naming the line
   // (never skipped silently).
   bool ok = true;
+  incisions_ = 0;
   for (std::size_t i = 0; i < lines_.size(); ++i) {
     std::istringstream s(lines_[i]);
     std::string tok;
     s >> tok;
     if (tok == "INCISE=") {
-      msg_error(where(i) + tok + " changes are not supported yet");
-      ok = false;
+      std::string why;
+      if (!check_incise(i, &why)) {
+        msg_error(where(i) + why);
+        ok = false;
+      } else if (incisions_++ == 0) {
+        // The scene still runs; each incision is reported as an error when it comes due.
+        msg_warning(where(i) + "INCISE= (incision along a path) is not supported yet: the incisions of this "
+                    "file will not be applied");
+      }
     } else if (tok == "ADD=" && is_points_in_triangle(lines_[i])) {
       std::string why;
       if (!parse_points_in_triangle(i, nullptr, &why)) {
@@ -269,7 +278,12 @@ void TopologicalChangeProcessor::process(double t) {
       apply_add(a);
       continue;
     }
-    if (tok != "REMOVE=") continue;  // T= and index lines (INCISE= was refused at init)
+    if (tok == "INCISE=") {
+      msg_error(where(i) + "INCISE= is not supported yet: no incision made");
+      if (k + 1 < valid.size() && valid[k + 1] == i + 1) ++k;  // its coordinate line
+      continue;
+    }
+    if (tok != "REMOVE=") continue;  // T= and index lines
     long long n = -1;
     if (!(s >> n) || n < 0) {
       msg_error(where(i) + "REMOVE= needs a count of elements; line ignored");
@@ -302,6 +316,50 @@ void TopologicalChangeProcessor::process(double t) {
     std::string why;
     if (!modifier_->remove_items(ids, &why)) msg_error(where(i) + why);
   }
+}
+
+// ---------------------------------------------------------------- incisions
+
+// SOFA's getValuesInLine rules: the next line holds n points, each "triangle x y z" (4n numbers)
+// or "x y z" (3n); fewer than 3n numbers abort the incision; other counts are read as SOFA does
+// (warned).
+bool TopologicalChangeProcessor::check_incise(std::size_t line, std::string* why) {
+  std::istringstream s(lines_[line]);
+  std::string tok;
+  long long n = -1;
+  s >> tok;
+  if (!(s >> n) || n < 1) {
+    *why = "INCISE= needs a count of points (at least 1)";
+    return false;
+  }
+  if (line + 1 >= lines_.size()) {
+    *why = "INCISE= has no coordinate line";
+    return false;
+  }
+  std::istringstream v(lines_[line + 1]);
+  std::size_t count = 0;
+  std::string word;
+  while (v >> word) {
+    char* end = nullptr;
+    std::strtod(word.c_str(), &end);
+    if (end == word.c_str() || *end != '\0') {
+      *why = "INCISE= " + std::to_string(n) + ": line " + std::to_string(line + 2) + " holds '" + word +
+             "', not a number";
+      return false;
+    }
+    ++count;
+  }
+  const std::size_t un = static_cast<std::size_t>(n);
+  if (count < 3 * un) {
+    *why = "INCISE= " + std::to_string(n) + ": line " + std::to_string(line + 2) + " needs " +
+           std::to_string(3 * un) + " (coordinates) or " + std::to_string(4 * un) +
+           " (triangle and coordinates) numbers, has " + std::to_string(count);
+    return false;
+  }
+  if (count != 3 * un && count != 4 * un)
+    msg_warning(where(line + 1) + std::to_string(count) + " numbers for " + std::to_string(n) +
+                " points: neither coordinates only nor triangle and coordinates");
+  return true;
 }
 
 // ---------------------------------------------------------------- points in triangles

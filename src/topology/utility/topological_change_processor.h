@@ -14,9 +14,12 @@
 // with ancestors and coefficients). With `useDataInputs` the file is not read:
 // the *ToRemove lists are removed once time passes timeToRemove (then every
 // `interval`).
+// `INCISE=` blocks are checked at init (count and coordinate line) and warned
+// about; the incision algorithm is not written, so a due block is an error
+// naming its line and nothing is cut.
 // Refused at init with an error naming file:line: ADD= lines of other kinds
 // (Quad, Hexahedron) or malformed (count, vertex line, missing modifier), and
-// `INCISE=` lines.
+// malformed INCISE= blocks.
 #pragma once
 
 #include <array>
@@ -90,6 +93,11 @@ class TopologicalChangeProcessor : public Component {
   static bool is_points_in_triangle(const std::string& line);
   bool parse_points_in_triangle(std::size_t line, PointsInTriangle* out, std::string* why) const;
   void apply_points_in_triangle(std::size_t line, const PointsInTriangle& p);
+
+  // `INCISE= n` with its line of points: checked at init (SOFA's value-count rules); the incision
+  // itself is not written yet, so a due block is reported as an error and skipped.
+  bool check_incise(std::size_t line, std::string* why);
+  std::size_t incisions_ = 0;
 
   std::vector<std::string> lines_;  // as getline returns them; the last one reaches end of file
   std::size_t next_ = 0;            // next line to read
