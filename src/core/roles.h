@@ -65,6 +65,11 @@ class MechanicalState : public Component {
   // Point removal of the state's topology (SOFA's handleStateChange on POINTSREMOVED): for
   // each index (decreasing), every vector's last DoF moves into the slot; then size −= n.
   virtual void remove_points(const std::vector<unsigned>& decreasing) = 0;
+  // Point addition (SOFA's handleStateChange on POINTSADDED): `n` DoFs appended; with ancestors
+  // (one row per new point, empty when none), each new DoF of every allocated vector is the
+  // weighted sum of its ancestors' (coefficients default to 1/k for k ancestors).
+  virtual void add_points(std::size_t n, const std::vector<std::vector<unsigned>>& ancestors,
+                          const std::vector<std::vector<double>>& coefficients) = 0;
   // Vector `id` (coordinate or derivative layout), allocated and zero-filled
   // to size() on first use. Standard ids are the state's fields.
   // read(): the values; the vector's version is left alone, so a version

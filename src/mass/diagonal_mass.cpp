@@ -125,7 +125,44 @@ void DiagonalMass::on_topology_change(const MeshTopologyBase& t, const TopologyC
     remove_swap_last(vertex_mass.edit(), c.indices);
     return;
   }
+  if (c.type == T::points_added) {  // SOFA's applyPointCreation: a new point has no mass yet
+    std::vector<double>& m = vertex_mass.edit();
+    m.resize(m.size() + c.indices.size(), 0.0);
+    return;
+  }
   const MassElement k = static_cast<MassElement>(kind_);
+  const bool added = (c.type == T::edges_added && k == MassElement::edge) ||
+                     (c.type == T::triangles_added && k == MassElement::triangle) ||
+                     (c.type == T::tetrahedra_added && k == MassElement::tetra);
+  if (added) {
+    // SOFA's apply*Creation (received after the container changed): each new element gives
+    // rho * measure / nv to each of its vertices, and nv times that to the total.
+    const MechanicalState& g = *geometry_state;
+    const std::vector<double>& X = g.read(kRestPosition);
+    const int w = g.info().coord_width;
+    const double rho = mass_density.value();
+    std::vector<double>& m = vertex_mass.edit();
+    double total = total_mass.value();
+    auto give = [&](const auto& e, double share, double nv) {
+      for (unsigned v : e)
+        if (v < m.size()) m[v] += share;
+      total += nv * share;
+    };
+    for (unsigned i : c.indices) {
+      if (k == MassElement::tetra && i < t.tetrahedra().size()) {
+        const Tetra& e = t.tetrahedra()[i];
+        give(e, (rho * meshgeo::tetra_volume(X, e[0], e[1], e[2], e[3])) / 4.0, 4.0);
+      } else if (k == MassElement::triangle && i < t.triangles().size()) {
+        const Triangle& e = t.triangles()[i];
+        give(e, (rho * meshgeo::triangle_area(X, w, e[0], e[1], e[2])) / 3.0, 3.0);
+      } else if (k == MassElement::edge && i < t.edges().size()) {
+        const Edge& e = t.edges()[i];
+        give(e, (rho * meshgeo::edge_length(X, w, e[0], e[1])) / 2.0, 2.0);
+      }
+    }
+    total_mass.set(total);
+    return;
+  }
   const bool mine = (c.type == T::edges_removed && k == MassElement::edge) ||
                     (c.type == T::triangles_removed && k == MassElement::triangle) ||
                     (c.type == T::tetrahedra_removed && k == MassElement::tetra);

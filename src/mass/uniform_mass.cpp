@@ -92,6 +92,56 @@ void UniformMass::init() {
   inertia_mass_ = inertia * m_;
   inv_inertia_mass_ = inertia_mass_.inverse();
   inertia_mass2_ = inertia2 * m_;
+  inertia_ = inertia;
+  inertia2_ = inertia2;
+  follow_.owner = this;
+  follow_.attach(node() ? node()->get_mesh_topology_link() : nullptr);
+}
+
+void UniformMass::update_mass_on_resize(std::size_t n) {
+  if (n == 0) {
+    total_mass.set(0.0);
+    return;
+  }
+  if (preserve_total_mass.value()) {
+    m_ = total_mass.value() / static_cast<double>(n);
+    inertia_mass_ = inertia_ * m_;
+    inv_inertia_mass_ = inertia_mass_.inverse();
+    inertia_mass2_ = inertia2_ * m_;
+  } else {
+    total_mass.set(static_cast<double>(n) * m_);
+  }
+}
+
+void UniformMass::Follow::apply(const MeshTopologyBase& t, const TopologyChange& c) {
+  std::vector<unsigned>& active = owner->active_;
+  switch (c.type) {
+    case TopologyChangeType::points_removed: {
+      // Received before the container changes: its count is the one before the removal.
+      auto n = static_cast<unsigned>(t.nb_points());
+      for (unsigned r : c.indices) {
+        if (n == 0) break;
+        const unsigned last = --n;
+        for (std::size_t k = 0; k < active.size();) {
+          if (active[k] == r) {
+            active[k] = active.back();
+            active.pop_back();
+          } else {
+            ++k;
+          }
+        }
+        if (r != last)
+          for (unsigned& v : active)
+            if (v == last) v = r;
+      }
+      break;
+    }
+    case TopologyChangeType::points_added:
+      active.insert(active.end(), c.indices.begin(), c.indices.end());
+      break;
+    case TopologyChangeType::ending: owner->update_mass_on_resize(active.size()); break;
+    default: break;
+  }
 }
 
 bool UniformMass::load_rigid_file(double& mass, Mat3& inertia) {

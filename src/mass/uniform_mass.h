@@ -55,7 +55,18 @@ class UniformMass final : public Mass {
   Mat3 inertia_mass_ = Mat3::Identity();   // Rigid3d: inertia·mass (world axes)
   Mat3 inv_inertia_mass_ = Mat3::Identity();
   double inertia_mass2_ = 1.0;             // Rigid2d: inertia·mass
+  Mat3 inertia_ = Mat3::Identity();        // per unit mass (resizes with preserveTotalMass)
+  double inertia2_ = 1.0;
   std::vector<unsigned> active_;      // DoFs with mass
+  // The topology's point changes (SOFA's indices TopologySubsetData): a removed point leaves the
+  // list (its entry takes the list's last), the last point's index becomes the slot's; new points
+  // join; each ending event resizes the mass (totalMass = n·m, or m = totalMass/n when
+  // preserveTotalMass).
+  struct Follow final : TopologyHandler {
+    UniformMass* owner = nullptr;
+    void apply(const MeshTopologyBase& t, const TopologyChange& c) override;
+  } follow_;
+  void update_mass_on_resize(std::size_t n);
 };
 
 }  // namespace sinew

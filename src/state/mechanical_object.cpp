@@ -108,6 +108,59 @@ void MechanicalObject::remove_points(const std::vector<unsigned>& decreasing) {
   size_field.set(static_cast<int>(size_));
 }
 
+void MechanicalObject::add_points(std::size_t n, const std::vector<std::vector<unsigned>>& ancestors,
+                                  const std::vector<std::vector<double>>& coefficients) {
+  // SOFA: resize(prev + n) grows the allocated vectors (new entries zero), then
+  // computeWeightedValue writes each new DoF as sum_j ancestor_j * coef_j, summed in ancestor
+  // order from zero (DataTypes::interpolate), in every allocated vector.
+  const auto& inf = info();
+  const std::size_t prev = size_;
+  const bool rigid = type_ == StateType::rigid2 || type_ == StateType::rigid3;
+  struct Vec {
+    std::vector<double>* data;
+    int width;
+  };
+  std::vector<Vec> vecs;
+  for (int id : {kPosition, kVelocity, kForce, kExternalForce, kRestPosition, kDx, kFreePosition, kFreeVelocity,
+                 kResetPosition, kResetVelocity}) {
+    Field<FlatVec>* f = standard(id);
+    f->get();
+    if (f->value().data.empty()) continue;
+    if (f->parent()) f->set_parent(nullptr);  // the values now differ from the linked source
+    const bool coord = is_coord_vec(id);
+    std::vector<double>& d = f->edit().data;
+    resize_vec(d, coord, prev + n);
+    vecs.push_back({&d, coord ? inf.coord_width : inf.deriv_width});
+  }
+  for (auto& [id, v] : dynamic_) {
+    resize_vec(v, false, prev + n);
+    vecs.push_back({&v, inf.deriv_width});
+  }
+  size_ = prev + n;
+  size_field.set(static_cast<int>(size_));
+  if (ancestors.empty()) return;
+  if (rigid) {
+    msg_warning("point additions with ancestors on a rigid state: the new DoFs are not interpolated");
+    return;
+  }
+  for (std::size_t i = 0; i < ancestors.size() && i < n; ++i) {
+    const std::vector<unsigned>& anc = ancestors[i];
+    const bool given = i < coefficients.size() && !coefficients[i].empty();
+    for (const Vec& v : vecs) {
+      double* out = v.data->data() + (prev + i) * v.width;
+      for (int c = 0; c < v.width; ++c) out[c] = 0.0;
+      for (std::size_t j = 0; j < anc.size(); ++j) {
+        if (anc[j] >= prev + n) continue;  // checked by the modifier; never read out of range
+        // SOFA's default is computed in float (1.0f / k), then widened.
+        const double w = given ? (j < coefficients[i].size() ? coefficients[i][j] : 0.0)
+                               : static_cast<double>(1.0f / static_cast<float>(anc.size()));
+        const double* a = v.data->data() + static_cast<std::size_t>(anc[j]) * v.width;
+        for (int c = 0; c < v.width; ++c) out[c] += a[c] * w;
+      }
+    }
+  }
+}
+
 std::vector<double>& MechanicalObject::storage(int id) {
   if (Field<FlatVec>* f = standard(id)) {
     f->get();  // follows a data link (position="@loader.position") like every read

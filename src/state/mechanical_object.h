@@ -48,6 +48,8 @@ class MechanicalObject final : public MechanicalState {
   std::size_t size() const override { return size_; }
   void resize(std::size_t n) override;
   void remove_points(const std::vector<unsigned>& decreasing) override;
+  void add_points(std::size_t n, const std::vector<std::vector<unsigned>>& ancestors,
+                  const std::vector<std::vector<double>>& coefficients) override;
   const std::vector<double>& read(int id) const override;
   bool has_vec(int id) const override;
   std::vector<double>& write(int id) override;

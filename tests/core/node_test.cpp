@@ -22,6 +22,7 @@ class TestState final : public MechanicalState {
   std::size_t size() const override { return 0; }
   void resize(std::size_t) override {}
   void remove_points(const std::vector<unsigned>&) override {}
+  void add_points(std::size_t, const std::vector<std::vector<unsigned>>&, const std::vector<std::vector<double>>&) override {}
   bool has_vec(int) const override { return false; }
   const std::vector<double>& read(int) const override { return data_; }
   std::vector<double>& write(int) override { return data_; }

@@ -183,7 +183,8 @@ TEST(TopologicalChangeProcessor, RefusesMalformedAddLinesNamingTheLine) {
       {"T= 0.1\n\nADD= Prisms 1\n0 1 2\n", "bad.txt:3: ADD= of unknown kind 'Prisms'"},
       {"T= 0.1\nADD= Tetrahedra 1\n0 1 2 3\n",
        "bad.txt:2: ADD= Tetrahedra needs a TetrahedronSetTopologyModifier in the topology's node or its ancestors"},
-      {"T= 0.1\nADD= PointInTriangle 1\n0 0.2 0.3\n", "bad.txt:2: ADD= PointInTriangle is not supported yet"},
+      {"T= 0.1\nADD= PointInTriangle 1\n0 0.2\n",
+       "bad.txt:2: ADD= PointInTriangle 1: line 3 needs 1 groups 'triangle b0 b1' (non-negative triangle index)"},
       {"T= 0.1\nADD= Triangles 1\n", "bad.txt:2: ADD= Triangles 1: line 3 needs 3 non-negative vertex indices"},
   };
   for (const auto& [text, error] : cases) {

@@ -1,5 +1,7 @@
 #include "forcefield/spring/spring_force_field.h"
 
+#include <algorithm>
+
 #include "core/node.h"
 #include "core/parse.h"
 #include "core/registry.h"
@@ -48,6 +50,13 @@ bool SpringForceField::bind_states() {
 
 void SpringForceField::init() {
   if (!bind_states()) return;
+  // SOFA attaches one handler per state, to the topology of the state's context.
+  MechanicalState* sides[2] = {s1_, s2_};
+  for (int k = 0; k < 2; ++k) {
+    follow_[k].owner = this;
+    follow_[k].side = k;
+    follow_[k].attach(sides[k]->node() ? sides[k]->node()->get_mesh_topology_link() : nullptr);
+  }
   if (!file_springs.value().empty()) {
     msg_error("spring files (filename=" + file_springs.value() + ") are not supported");
     set_state(ComponentState::invalid);
@@ -107,6 +116,25 @@ void SpringForceField::init() {
                   parse::format_double(springs_[i].ks) + "): the motion may be unstable and the system indefinite");
       break;
     }
+}
+
+void SpringForceField::Follow::apply(const MeshTopologyBase& t, const TopologyChange& c) {
+  if (c.type != TopologyChangeType::points_removed || c.indices.empty()) return;
+  // Received before the container changes: its count is the one before the removal.
+  auto n = static_cast<unsigned>(t.nb_points());
+  std::vector<springs::LinearSpring>& list = owner->springs_;
+  auto end_of = [&](springs::LinearSpring& s) -> unsigned& { return side == 0 ? s.m1 : s.m2; };
+  for (unsigned removed : c.indices) {
+    if (n == 0) break;
+    --n;
+    list.erase(std::remove_if(list.begin(), list.end(),
+                              [&](springs::LinearSpring& s) { return end_of(s) == removed; }),
+               list.end());
+    if (removed == n) continue;
+    for (auto& s : list)
+      if (end_of(s) == n) end_of(s) = removed;
+  }
+  owner->dfdx_.assign(list.size() + owner->grid_springs_.size(), springs::Block{});
 }
 
 // The ends are checked once every state is initialised: object1/object2 may be

@@ -73,6 +73,14 @@ class SpringForceField : public ForceField {
   void add_dforce_n(const MechParams& p, double kfactor);
   // False (component invalid, springs dropped) when a resized state no longer holds every spring end.
   bool sizes_ok();
+  // Point removals of each state's topology (SOFA's springsIndices handlers, side 0 = object1):
+  // springs using a removed point are erased (order kept), then the ones using the topology's
+  // last point are renumbered to the slot (its swap-with-last).
+  struct Follow final : TopologyHandler {
+    SpringForceField* owner = nullptr;
+    int side = 0;
+    void apply(const MeshTopologyBase& t, const TopologyChange& c) override;
+  } follow_[2];
   std::vector<springs::Block> dfdx_;
   std::size_t n1_ = 0, n2_ = 0;
   double energy_ = 0;

@@ -34,6 +34,13 @@ unsigned find_triangle(const DynamicMesh& m, unsigned a, unsigned b, unsigned c)
   return found;
 }
 
+void add_points_process(DynamicMesh& m, unsigned n) {
+  m.nb_points += n;
+  if (!m.edges->empty() || !m.edges_around_vertex.empty()) fit(m.edges_around_vertex, m.nb_points);
+  if (!m.triangles->empty() || !m.triangles_around_vertex.empty()) fit(m.triangles_around_vertex, m.nb_points);
+  if (!m.tetrahedra->empty() || !m.tetrahedra_around_vertex.empty()) fit(m.tetrahedra_around_vertex, m.nb_points);
+}
+
 void add_edge_process(DynamicMesh& m, const Edge& e) {
   const unsigned id = static_cast<unsigned>(m.edges->size());
   grow_points(m, e[0]);

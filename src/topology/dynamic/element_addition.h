@@ -21,6 +21,10 @@ inline constexpr unsigned kNoIndex = ~0u;
 // kNoIndex when there is none.
 unsigned find_edge(const DynamicMesh& m, unsigned a, unsigned b);
 
+// Appends n isolated points: the vertex shells of the kinds the mesh holds grow with empty
+// lists (SOFA's addPointsProcess chain).
+void add_points_process(DynamicMesh& m, unsigned n);
+
 // Appends edge e (growing the point count when it names a point beyond it).
 void add_edge_process(DynamicMesh& m, const Edge& e);
 

@@ -5,6 +5,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "topology/dynamic/element_addition.h"
 #include "topology/dynamic/point_set_topology_container.h"
 #include "topology/mapping/topological_mapping.h"
 
@@ -74,7 +75,45 @@ void visit_state_change(Node& n, bool root, MeshTopologyBase& source, const std:
   if (n.mechanical_state && n.get_mesh_topology_link() == &source) n.mechanical_state->remove_points(decreasing);
   for (const auto& c : n.children()) visit_state_change(*c, false, source, decreasing);
 }
+
+// The same visit for point additions.
+void visit_state_add(Node& n, bool root, MeshTopologyBase& source, unsigned count,
+                     const std::vector<std::vector<unsigned>>& ancestors,
+                     const std::vector<std::vector<double>>& coefficients) {
+  if (!root && n.mechanical_mapping && !n.mechanical_mapping->same_topology()) return;
+  if (n.mechanical_state && n.get_mesh_topology_link() == &source)
+    n.mechanical_state->add_points(count, ancestors, coefficients);
+  for (const auto& c : n.children()) visit_state_add(*c, false, source, count, ancestors, coefficients);
+}
 }  // namespace
+
+bool PointSetTopologyModifier::add_points(unsigned n, std::vector<std::vector<unsigned>> ancestors,
+                                          std::vector<std::vector<double>> coefficients, bool add_dof) {
+  if (!container_ || n == 0) return false;
+  const unsigned before = static_cast<unsigned>(container_->nb_points());
+  if (!ancestors.empty() && ancestors.size() != n) {
+    msg_error("addPoints: " + std::to_string(ancestors.size()) + " ancestor rows for " + std::to_string(n) +
+              " points; nothing added");
+    return false;
+  }
+  for (const auto& row : ancestors)
+    for (unsigned a : row)
+      if (a >= before) {
+        msg_error("addPoints: ancestor " + std::to_string(a) + " is out of bounds (" + std::to_string(before) +
+                  " points); nothing added");
+        return false;
+      }
+  PointSetTopologyContainer& c = *dynamic_container();
+  topo::DynamicMesh& m = c.begin_edit();
+  topo::add_points_process(m, n);
+  c.end_edit(false, false, false);
+  if (add_dof && node()) visit_state_add(*node(), true, c, n, ancestors, coefficients);
+  TopologyChange added{TopologyChangeType::points_added, {}, std::move(ancestors), std::move(coefficients)};
+  for (unsigned i = 0; i < n; ++i) added.indices.push_back(before + i);
+  warn(std::move(added));
+  propagate_topological_changes();
+  return true;
+}
 
 void PointSetTopologyModifier::propagate_topological_changes() {
   auto& changes = container_->edit_topology_changes();

@@ -38,6 +38,13 @@ class PointSetTopologyModifier : public TopologyObject {
   // Removes points (expected isolated: elements using them are not removed); with `remove_dof`
   // the states using the container follow.
   void remove_points(std::vector<unsigned> ids, bool remove_dof);
+  // SOFA's addPoints: the container grows by n points (process); with `add_dof` the states of
+  // the subtree using the container grow (new DoFs interpolated from `ancestors` with
+  // `coefficients`, see MechanicalState::add_points); then a points-added event carrying both is
+  // propagated. Rows are empty or one per new point; ancestors out of range are refused with an
+  // error (nothing added).
+  bool add_points(unsigned n, std::vector<std::vector<unsigned>> ancestors = {},
+                  std::vector<std::vector<double>> coefficients = {}, bool add_dof = true);
   // Sends the queued events (plus the ending event) to handlers and the subtree, then clears them.
   void propagate_topological_changes();
   // SOFA's notifyEndingEvent: propagates a lone ending event (a topological mapping relays the

@@ -65,8 +65,8 @@ void Tetra2TriangleTopologicalMapping::update_top_down() {
         out.add_edges(edges, c.ancestors, c.coefficients);
         break;
       }
-      case TopologyChangeType::points_added:
-        msg_error("point additions are not followed yet: the output keeps its points");
+      case TopologyChangeType::points_added:  // relayed with their DoFs (SOFA passes addDOF = true here)
+        out.add_points(static_cast<unsigned>(c.indices.size()), c.ancestors, c.coefficients, true);
         break;
       // Triangle additions come with the tetrahedra that bring them (handled there); other kinds
       // do not concern the boundary triangles.

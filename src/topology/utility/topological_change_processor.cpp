@@ -1,6 +1,7 @@
 #include "topology/utility/topological_change_processor.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <sstream>
 
@@ -8,6 +9,8 @@
 #include "core/registry.h"
 #include "io/text_file.h"
 #include "topology/dynamic/point_set_topology_modifier.h"
+#include "topology/dynamic/hexahedron_set_topology_modifier.h"
+#include "topology/dynamic/quad_set_topology_modifier.h"
 #include "topology/dynamic/tetrahedron_set_topology_modifier.h"
 
 namespace sinew {
@@ -36,11 +39,7 @@ void TopologicalChangeProcessor::init() {
   }
   // SOFA: the first TopologyModifier from the topology's node upwards.
   if (t->node()) modifier_ = t->node()->find_up<PointSetTopologyModifier>();
-  if (use_data_inputs.value()) {
-    msg_error("useDataInputs is not supported yet: no change is applied");
-    set_state(ComponentState::invalid);
-    return;
-  }
+  if (use_data_inputs.value()) return;  // SOFA reads no file then
   if (filename.value().empty()) {
     msg_error("empty filename");
     set_state(ComponentState::invalid);
@@ -67,13 +66,27 @@ void TopologicalChangeProcessor::init() {
   // Commands this slice cannot apply, and malformed ADD= lines, are refused now, naming the line
   // (never skipped silently).
   bool ok = true;
+  incisions_ = 0;
   for (std::size_t i = 0; i < lines_.size(); ++i) {
     std::istringstream s(lines_[i]);
     std::string tok;
     s >> tok;
     if (tok == "INCISE=") {
-      msg_error(where(i) + tok + " changes are not supported yet");
-      ok = false;
+      std::string why;
+      if (!check_incise(i, &why)) {
+        msg_error(where(i) + why);
+        ok = false;
+      } else if (incisions_++ == 0) {
+        // The scene still runs; each incision is reported as an error when it comes due.
+        msg_warning(where(i) + "INCISE= (incision along a path) is not supported yet: the incisions of this "
+                    "file will not be applied");
+      }
+    } else if (tok == "ADD=" && is_points_in_triangle(lines_[i])) {
+      std::string why;
+      if (!parse_points_in_triangle(i, nullptr, &why)) {
+        msg_error(where(i) + why);
+        ok = false;
+      }
     } else if (tok == "ADD=") {
       std::string why;
       if (!parse_add(i, nullptr, &why)) {
@@ -194,6 +207,10 @@ void TopologicalChangeProcessor::apply_add(const AddCommand& a) {
 
 void TopologicalChangeProcessor::handle_event(Event& e) {
   if (e.kind != Event::Kind::animate_begin || state() != ComponentState::valid || !node()) return;
+  if (use_data_inputs.value()) {
+    process_data_inputs(node()->time.value());  // SOFA passes getTime(), without the shift
+    return;
+  }
   process(node()->time.value() + shift.value());
 }
 
@@ -230,6 +247,21 @@ void TopologicalChangeProcessor::process(double t) {
     std::istringstream s(lines_[i]);
     std::string tok;
     s >> tok;
+    if (tok == "ADD=" && is_points_in_triangle(lines_[i])) {
+      PointsInTriangle p;
+      std::string why;
+      if (k + 1 >= valid.size() || valid[k + 1] != i + 1) {
+        msg_error(where(i) + "ADD= has no coordinate line in its block; nothing added");
+        continue;
+      }
+      ++k;
+      if (!parse_points_in_triangle(i, &p, &why)) {
+        msg_error(where(i) + why);
+        continue;
+      }
+      apply_points_in_triangle(i, p);
+      continue;
+    }
     if (tok == "ADD=") {
       // Checked at init; the vertex line is the next collected one, as in SOFA.
       AddCommand a;
@@ -246,7 +278,12 @@ void TopologicalChangeProcessor::process(double t) {
       apply_add(a);
       continue;
     }
-    if (tok != "REMOVE=") continue;  // T= and index lines (INCISE= was refused at init)
+    if (tok == "INCISE=") {
+      msg_error(where(i) + "INCISE= is not supported yet: no incision made");
+      if (k + 1 < valid.size() && valid[k + 1] == i + 1) ++k;  // its coordinate line
+      continue;
+    }
+    if (tok != "REMOVE=") continue;  // T= and index lines
     long long n = -1;
     if (!(s >> n) || n < 0) {
       msg_error(where(i) + "REMOVE= needs a count of elements; line ignored");
@@ -279,6 +316,145 @@ void TopologicalChangeProcessor::process(double t) {
     std::string why;
     if (!modifier_->remove_items(ids, &why)) msg_error(where(i) + why);
   }
+}
+
+// ---------------------------------------------------------------- incisions
+
+// SOFA's getValuesInLine rules: the next line holds n points, each "triangle x y z" (4n numbers)
+// or "x y z" (3n); fewer than 3n numbers abort the incision; other counts are read as SOFA does
+// (warned).
+bool TopologicalChangeProcessor::check_incise(std::size_t line, std::string* why) {
+  std::istringstream s(lines_[line]);
+  std::string tok;
+  long long n = -1;
+  s >> tok;
+  if (!(s >> n) || n < 1) {
+    *why = "INCISE= needs a count of points (at least 1)";
+    return false;
+  }
+  if (line + 1 >= lines_.size()) {
+    *why = "INCISE= has no coordinate line";
+    return false;
+  }
+  std::istringstream v(lines_[line + 1]);
+  std::size_t count = 0;
+  std::string word;
+  while (v >> word) {
+    char* end = nullptr;
+    std::strtod(word.c_str(), &end);
+    if (end == word.c_str() || *end != '\0') {
+      *why = "INCISE= " + std::to_string(n) + ": line " + std::to_string(line + 2) + " holds '" + word +
+             "', not a number";
+      return false;
+    }
+    ++count;
+  }
+  const std::size_t un = static_cast<std::size_t>(n);
+  if (count < 3 * un) {
+    *why = "INCISE= " + std::to_string(n) + ": line " + std::to_string(line + 2) + " needs " +
+           std::to_string(3 * un) + " (coordinates) or " + std::to_string(4 * un) +
+           " (triangle and coordinates) numbers, has " + std::to_string(count);
+    return false;
+  }
+  if (count != 3 * un && count != 4 * un)
+    msg_warning(where(line + 1) + std::to_string(count) + " numbers for " + std::to_string(n) +
+                " points: neither coordinates only nor triangle and coordinates");
+  return true;
+}
+
+// ---------------------------------------------------------------- points in triangles
+
+bool TopologicalChangeProcessor::is_points_in_triangle(const std::string& line) {
+  std::istringstream s(line);
+  std::string tok, kind;
+  s >> tok >> kind;
+  return tok == "ADD=" && (kind == "PointInTriangle" || kind == "PointsInTriangle");
+}
+
+bool TopologicalChangeProcessor::parse_points_in_triangle(std::size_t line, PointsInTriangle* out,
+                                                          std::string* why) const {
+  std::istringstream s(lines_[line]);
+  std::string tok, kind;
+  s >> tok >> kind;
+  long long n = -1;
+  if (!(s >> n) || n < 0) {
+    *why = "ADD= " + kind + " needs a count of points";
+    return false;
+  }
+  if (line + 1 >= lines_.size()) {
+    *why = "ADD= " + kind + " has no coordinate line";
+    return false;
+  }
+  std::istringstream v(lines_[line + 1]);
+  PointsInTriangle p;
+  for (long long k = 0; k < n; ++k) {
+    long long t = -1;
+    std::array<double, 2> b{};
+    if (!(v >> t) || t < 0 || !(v >> b[0] >> b[1])) {
+      *why = "ADD= " + kind + " " + std::to_string(n) + ": line " + std::to_string(line + 2) + " needs " +
+             std::to_string(n) + " groups 'triangle b0 b1' (non-negative triangle index)";
+      return false;
+    }
+    p.triangles.push_back(static_cast<unsigned>(t));
+    p.bary.push_back(b);
+  }
+  MeshTopologyBase* t = topology.get();
+  if (!t && node()) t = node()->get_mesh_topology_link();
+  if (!t || !t->node() || !t->node()->find_up<TriangleSetTopologyModifier>()) {
+    *why = "ADD= " + kind + " needs a TriangleSetTopologyModifier in the topology's node or its ancestors";
+    return false;
+  }
+  if (out) *out = std::move(p);
+  return true;
+}
+
+void TopologicalChangeProcessor::apply_points_in_triangle(std::size_t line, const PointsInTriangle& p) {
+  MeshTopologyBase* t = topology.get();
+  if (!t && node()) t = node()->get_mesh_topology_link();
+  auto* mod = t && t->node() ? t->node()->find_up<TriangleSetTopologyModifier>() : nullptr;
+  if (!mod) return;  // checked at init
+  const auto& tris = t->triangles();
+  std::vector<std::vector<unsigned>> ancestors;
+  std::vector<std::vector<double>> coefs;
+  for (std::size_t i = 0; i < p.triangles.size(); ++i) {
+    if (p.triangles[i] >= tris.size()) {
+      msg_error(where(line + 1) + "triangle " + std::to_string(p.triangles[i]) + " is out of range (" +
+                std::to_string(tris.size()) + " triangles); no point added");
+      return;
+    }
+    const Triangle& tr = tris[p.triangles[i]];
+    ancestors.push_back({tr[0], tr[1], tr[2]});
+    coefs.push_back({p.bary[i][0], p.bary[i][1], 1 - p.bary[i][0] - p.bary[i][1]});
+  }
+  mod->add_points(static_cast<unsigned>(p.triangles.size()), std::move(ancestors), std::move(coefs), true);
+}
+
+// ---------------------------------------------------------------- useDataInputs
+
+void TopologicalChangeProcessor::process_data_inputs(double time) {
+  if (time_to_remove.value() >= time) return;
+  MeshTopologyBase* t = topology.get();
+  if (!t && node()) t = node()->get_mesh_topology_link();
+  Node* from = t ? t->node() : nullptr;
+  auto remove = [&](const std::vector<unsigned>& ids, PointSetTopologyModifier* mod, const char* what) {
+    if (ids.empty()) return;
+    if (!mod) {
+      msg_error(std::string("No ") + what + " modifier available");
+      return;
+    }
+    std::string why;
+    if (!mod->remove_items(ids, &why)) msg_error(why);
+  };
+  // SOFA's order: hexahedra, tetrahedra, quads, triangles, edges, points.
+  remove(hexahedra_to_remove.get(), from ? from->find_up<HexahedronSetTopologyModifier>() : nullptr, "hexahedron");
+  remove(tetrahedra_to_remove.get(), from ? from->find_up<TetrahedronSetTopologyModifier>() : nullptr, "tetrahedron");
+  remove(quads_to_remove.get(), from ? from->find_up<QuadSetTopologyModifier>() : nullptr, "quad");
+  remove(triangles_to_remove.get(), from ? from->find_up<TriangleSetTopologyModifier>() : nullptr, "triangle");
+  remove(edges_to_remove.get(), from ? from->find_up<EdgeSetTopologyModifier>() : nullptr, "edge");
+  remove(points_to_remove.get(), from ? from->find_up<PointSetTopologyModifier>() : nullptr, "point");
+  // SOFA's Index is 32-bit: without interval the next time is (Index)-1.
+  if (interval.value() != 0.0) time_to_remove.set(time_to_remove.value() + interval.value());
+  else time_to_remove.set(static_cast<double>(~0u));
 }
 
 void register_topological_change_processor(Registry& r) {

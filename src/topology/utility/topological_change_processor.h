@@ -10,11 +10,19 @@
 // of that kind found the same way: Edge(s) → addEdges, Triangle(s) →
 // addTriangles (one ancestor per triangle when given), Tetrahedron/Tetrahedra →
 // addTetrahedra.
+// `ADD= PointInTriangle(s) n` adds points interpolated in triangles (addPoints
+// with ancestors and coefficients). With `useDataInputs` the file is not read:
+// the *ToRemove lists are removed once time passes timeToRemove (then every
+// `interval`).
+// `INCISE=` blocks are checked at init (count and coordinate line) and warned
+// about; the incision algorithm is not written, so a due block is an error
+// naming its line and nothing is cut.
 // Refused at init with an error naming file:line: ADD= lines of other kinds
-// (Quad, Hexahedron, PointInTriangle) or malformed (count, vertex line, missing
-// modifier), `INCISE=` lines, and `useDataInputs`.
+// (Quad, Hexahedron) or malformed (count, vertex line, missing modifier), and
+// malformed INCISE= blocks.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -33,7 +41,7 @@ class TopologicalChangeProcessor : public Component {
   Field<double> interval{this, "interval", 0.0, "time duration between 2 actions (useDataInputs)", "Changes", "time"};
   Field<double> shift{this, "shift", 0.0, "shift between times in the file and times when they are read", "Changes", "time"};
   Field<bool> loop{this, "loop", false, "re-read the file when reaching its end", "Changes"};
-  Field<bool> use_data_inputs{this, "useDataInputs", false, "use the Data lists instead of the file (not supported yet)", "Changes"};
+  Field<bool> use_data_inputs{this, "useDataInputs", false, "remove the elements of the Data lists at timeToRemove instead of reading the file", "Changes"};
   Field<double> time_to_remove{this, "timeToRemove", 0.0, "useDataInputs: time of the removals", "Changes", "time"};
   Field<std::vector<unsigned>> points_to_remove{this, "pointsToRemove", {}, "point ids to remove (useDataInputs)", "Changes"};
   Field<std::vector<unsigned>> edges_to_remove{this, "edgesToRemove", {}, "edge ids to remove (useDataInputs)", "Changes"};
@@ -54,6 +62,11 @@ class TopologicalChangeProcessor : public Component {
 
   // One step's work (public for tests): reads the blocks due at `t` and applies them.
   void process(double t);
+  // useDataInputs (SOFA's processTopologicalChanges(time)): once time > timeToRemove, the listed
+  // hexahedra, tetrahedra, quads, triangles, edges then points are removed (removeItems of the
+  // first modifier of that kind from the topology's node upwards); timeToRemove then advances
+  // by `interval`, or to 2^32 − 1 (never again) when interval is 0. Public for tests.
+  void process_data_inputs(double time);
 
  private:
   // SOFA's readNext: the lines of the last due block (T= lines included).
@@ -69,6 +82,22 @@ class TopologicalChangeProcessor : public Component {
   // Parses and checks it; false with `why` (without the file:line prefix) when refused.
   bool parse_add(std::size_t line, AddCommand* out, std::string* why) const;
   void apply_add(const AddCommand& a);
+
+  // `ADD= PointInTriangle(s) n` with its line "t b0 b1" × n: n points, each interpolated from the
+  // vertices of triangle t with coefficients (b0, b1, 1 − b0 − b1), added with their DoFs through
+  // the TriangleSetTopologyModifier. Parsed (and checked) at init; triangles are checked when applied.
+  struct PointsInTriangle {
+    std::vector<unsigned> triangles;
+    std::vector<std::array<double, 2>> bary;
+  };
+  static bool is_points_in_triangle(const std::string& line);
+  bool parse_points_in_triangle(std::size_t line, PointsInTriangle* out, std::string* why) const;
+  void apply_points_in_triangle(std::size_t line, const PointsInTriangle& p);
+
+  // `INCISE= n` with its line of points: checked at init (SOFA's value-count rules); the incision
+  // itself is not written yet, so a due block is reported as an error and skipped.
+  bool check_incise(std::size_t line, std::string* why);
+  std::size_t incisions_ = 0;
 
   std::vector<std::string> lines_;  // as getline returns them; the last one reaches end of file
   std::size_t next_ = 0;            // next line to read
