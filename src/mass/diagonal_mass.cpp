@@ -128,7 +128,9 @@ void DiagonalMass::on_topology_change(const MeshTopologyBase& t, const TopologyC
   const MassElement k = static_cast<MassElement>(kind_);
   const bool mine = (c.type == T::edges_removed && k == MassElement::edge) ||
                     (c.type == T::triangles_removed && k == MassElement::triangle) ||
-                    (c.type == T::tetrahedra_removed && k == MassElement::tetra);
+                    (c.type == T::tetrahedra_removed && k == MassElement::tetra) ||
+                    (c.type == T::quads_removed && k == MassElement::quad) ||
+                    (c.type == T::hexahedra_removed && k == MassElement::hexa);
   if (!mine) return;
   // Called before the container changes: the removed elements can still be read.
   const MechanicalState& g = *geometry_state;
@@ -149,6 +151,12 @@ void DiagonalMass::on_topology_change(const MeshTopologyBase& t, const TopologyC
     } else if (k == MassElement::triangle && i < t.triangles().size()) {
       const Triangle& e = t.triangles()[i];
       take(e, (rho * meshgeo::triangle_area(X, w, e[0], e[1], e[2])) / 3.0);
+    } else if (k == MassElement::hexa && i < t.hexahedra().size()) {
+      const Hexa& e = t.hexahedra()[i];
+      take(e, (rho * meshgeo::hexa_volume(X, e)) / 8.0);
+    } else if (k == MassElement::quad && i < t.quads().size()) {
+      const Quad& e = t.quads()[i];
+      take(e, (rho * meshgeo::quad_area(X, w, e)) / 4.0);
     } else if (k == MassElement::edge && i < t.edges().size()) {
       const Edge& e = t.edges()[i];
       take(e, (rho * meshgeo::edge_length(X, w, e[0], e[1])) / 2.0);

@@ -8,11 +8,11 @@
 // modifier found from the topology's node upwards; an `ADD= Kind n [Ancestor(s)
 // a1 … an]` line with its vertex line adds n elements through the first modifier
 // of that kind found the same way: Edge(s) → addEdges, Triangle(s) →
-// addTriangles (one ancestor per triangle when given), Tetrahedron/Tetrahedra →
-// addTetrahedra.
+// addTriangles (one ancestor per triangle when given), Quad(s) → addQuads,
+// Tetrahedron/Tetrahedra → addTetrahedra, Hexahedron/Hexahedra → addHexahedra.
 // Refused at init with an error naming file:line: ADD= lines of other kinds
-// (Quad, Hexahedron, PointInTriangle) or malformed (count, vertex line, missing
-// modifier), `INCISE=` lines, and `useDataInputs`.
+// (PointInTriangle) or malformed (count, vertex line, missing modifier),
+// `INCISE=` lines, and `useDataInputs`.
 #pragma once
 
 #include <string>
@@ -55,13 +55,17 @@ class TopologicalChangeProcessor : public Component {
   // One step's work (public for tests): reads the blocks due at `t` and applies them.
   void process(double t);
 
+  // The element kinds an ADD= line adds.
+  enum class AddKind { edge, triangle, quad, tetrahedron, hexahedron };
+
  private:
   // SOFA's readNext: the lines of the last due block (T= lines included).
   std::vector<std::size_t> read_due(double t);
   std::string where(std::size_t line) const;
   // One ADD= line (at `line`) with its vertex line (the next one).
   struct AddCommand {
-    unsigned arity = 0;              // vertices per element: 2, 3 or 4
+    AddKind kind = AddKind::edge;
+    unsigned arity = 0;              // vertices per element: 2, 3, 4 or 8
     std::vector<unsigned> vertices;  // n * arity
     std::vector<std::vector<unsigned>> ancestors;  // empty, or one row per element
     PointSetTopologyModifier* modifier = nullptr;  // of the kind's modifier class
