@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <set>
 
+#include "constraint/model/bilateral_lagrangian_constraint.h"
 #include "core/simulation.h"
 #include "mass/diagonal_mass.h"
 #include "state/mechanical_object.h"
@@ -296,4 +297,27 @@ TEST(TopologyHexaQuad, ProcessorRefusesMalformedQuadLine) {
                                         "bad.txt:2: ADD= Quads 2: line 3 needs 8 non-negative vertex indices"));
   get<TopologicalChangeProcessor>(*s.root, "proc")->process(1.0);
   EXPECT_TRUE(get<QuadSetTopologyContainer>(*s.root, "topo")->quads().empty());
+}
+
+// BilateralLagrangianConstraint with topology1 (RemovingBilateralInteractionConstraint): the
+// removal of points {9,6,3,0} (the cascade of removing H0 above) first drops the pairs naming a
+// removed point (9 at pair 1, then 0 at pair 0, rest vectors with them), then first_point
+// follows the renumbering (11 → 9 → 3); second_point is another topology's and is kept.
+TEST(TopologyHexaQuad, BilateralConstraintDropsPairsOfRemovedPoints) {
+  auto s = load(R"(<Node>
+    <MechanicalObject name="dofs" position="0 0 0  1 0 0  2 0 0  0 1 0  1 1 0  2 1 0
+                                            0 0 1  1 0 1  2 0 1  0 1 1  1 1 1  2 1 1"/>
+    <HexahedronSetTopologyContainer name="topo" hexahedra="0 1 4 3 6 7 10 9  1 2 5 4 7 8 11 10"/>
+    <HexahedronSetTopologyModifier name="mod"/>
+    <Node name="other">
+      <MechanicalObject name="x" position="0 0 0  1 0 0  2 0 0  3 0 0"/>
+    </Node>
+    <BilateralLagrangianConstraint name="c" object1="@dofs" object2="@other/x" topology1="@topo"
+        first_point="0 9 5 11" second_point="0 1 2 3" rest_vector="0 0 0  1 1 1  2 2 2  3 3 3"/>
+  </Node>)");
+  auto& c = *get<BilateralLagrangianConstraint>(*s.root, "c");
+  get<HexahedronSetTopologyModifier>(*s.root, "mod")->remove_hexahedra({0});
+  EXPECT_EQ(c.first_point.value(), list<unsigned>({5, 3}));
+  EXPECT_EQ(c.second_point.value(), list<unsigned>({2, 3}));
+  EXPECT_EQ(c.rest_vector.value().data, (std::vector<double>{2, 2, 2, 3, 3, 3}));
 }
