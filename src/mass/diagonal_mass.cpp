@@ -126,7 +126,11 @@ void DiagonalMass::on_topology_change(const MeshTopologyBase& t, const TopologyC
     return;
   }
   const MassElement k = static_cast<MassElement>(kind_);
-  const bool mine = (c.type == T::edges_removed && k == MassElement::edge) ||
+  // Additions (SOFA's applyQuadCreation / applyHexahedronCreation; propagated after the container
+  // changed): each new element's mass goes to its vertices and to the total.
+  const bool added = (c.type == T::quads_added && k == MassElement::quad) ||
+                     (c.type == T::hexahedra_added && k == MassElement::hexa);
+  const bool mine = added || (c.type == T::edges_removed && k == MassElement::edge) ||
                     (c.type == T::triangles_removed && k == MassElement::triangle) ||
                     (c.type == T::tetrahedra_removed && k == MassElement::tetra) ||
                     (c.type == T::quads_removed && k == MassElement::quad) ||
@@ -140,6 +144,12 @@ void DiagonalMass::on_topology_change(const MeshTopologyBase& t, const TopologyC
   std::vector<double>& m = vertex_mass.edit();
   double total = total_mass.value();
   auto take = [&](const auto& e, double share) {
+    if (added) {
+      for (unsigned v : e)
+        if (v < m.size()) m[v] += share;
+      total += static_cast<double>(e.size()) * share;
+      return;
+    }
     for (unsigned v : e)
       if (v < m.size()) m[v] -= share;
     total -= static_cast<double>(e.size()) * share;

@@ -321,3 +321,20 @@ TEST(TopologyHexaQuad, BilateralConstraintDropsPairsOfRemovedPoints) {
   EXPECT_EQ(c.second_point.value(), list<unsigned>({2, 3}));
   EXPECT_EQ(c.rest_vector.value().data, (std::vector<double>{2, 2, 2, 3, 3, 3}));
 }
+
+// DiagonalMass on quads follows additions (SOFA's applyQuadCreation): density·area/4 on each
+// vertex of the new quad, and to the total.
+TEST(TopologyHexaQuad, DiagonalMassFollowsQuadAddition) {
+  auto s = load(R"(<Node>
+    <MechanicalObject name="dofs" position="0 0 0  1 0 0  2 0 0  0 1 0  1 1 0  2 1 0"/>
+    <QuadSetTopologyContainer name="topo" quads="0 1 4 3"/>
+    <QuadSetTopologyModifier name="mod"/>
+    <DiagonalMass name="mass" massDensity="2"/>
+  </Node>)");
+  auto& mass = *get<DiagonalMass>(*s.root, "mass");
+  ASSERT_EQ(mass.vertex_mass.value().size(), 6u);
+  get<QuadSetTopologyModifier>(*s.root, "mod")->add_quads({{1, 2, 5, 4}});
+  const std::vector<double> want = {0.5, 1.0, 0.5, 0.5, 1.0, 0.5};
+  for (std::size_t i = 0; i < 6; ++i) EXPECT_NEAR(mass.vertex_mass.value()[i], want[i], 1e-14) << i;
+  EXPECT_NEAR(mass.total_mass.value(), 4.0, 1e-13);
+}
