@@ -31,6 +31,8 @@ enum class TopologyChangeType {
   edges_added,
   triangles_added,
   tetrahedra_added,
+  quads_added,
+  hexahedra_added,
   ending,  // closes each propagated list (SOFA's ENDING_EVENT)
 };
 

@@ -131,43 +131,20 @@ void DiagonalMass::on_topology_change(const MeshTopologyBase& t, const TopologyC
     return;
   }
   const MassElement k = static_cast<MassElement>(kind_);
+  // Additions (SOFA's apply*Creation; propagated after the container changed): each new
+  // element gives ρ·measure/nv to each of its vertices, and nv times that to the total.
   const bool added = (c.type == T::edges_added && k == MassElement::edge) ||
                      (c.type == T::triangles_added && k == MassElement::triangle) ||
-                     (c.type == T::tetrahedra_added && k == MassElement::tetra);
-  if (added) {
-    // SOFA's apply*Creation (received after the container changed): each new element gives
-    // rho * measure / nv to each of its vertices, and nv times that to the total.
-    const MechanicalState& g = *geometry_state;
-    const std::vector<double>& X = g.read(kRestPosition);
-    const int w = g.info().coord_width;
-    const double rho = mass_density.value();
-    std::vector<double>& m = vertex_mass.edit();
-    double total = total_mass.value();
-    auto give = [&](const auto& e, double share, double nv) {
-      for (unsigned v : e)
-        if (v < m.size()) m[v] += share;
-      total += nv * share;
-    };
-    for (unsigned i : c.indices) {
-      if (k == MassElement::tetra && i < t.tetrahedra().size()) {
-        const Tetra& e = t.tetrahedra()[i];
-        give(e, (rho * meshgeo::tetra_volume(X, e[0], e[1], e[2], e[3])) / 4.0, 4.0);
-      } else if (k == MassElement::triangle && i < t.triangles().size()) {
-        const Triangle& e = t.triangles()[i];
-        give(e, (rho * meshgeo::triangle_area(X, w, e[0], e[1], e[2])) / 3.0, 3.0);
-      } else if (k == MassElement::edge && i < t.edges().size()) {
-        const Edge& e = t.edges()[i];
-        give(e, (rho * meshgeo::edge_length(X, w, e[0], e[1])) / 2.0, 2.0);
-      }
-    }
-    total_mass.set(total);
-    return;
-  }
-  const bool mine = (c.type == T::edges_removed && k == MassElement::edge) ||
+                     (c.type == T::tetrahedra_added && k == MassElement::tetra) ||
+                     (c.type == T::quads_added && k == MassElement::quad) ||
+                     (c.type == T::hexahedra_added && k == MassElement::hexa);
+  const bool mine = added || (c.type == T::edges_removed && k == MassElement::edge) ||
                     (c.type == T::triangles_removed && k == MassElement::triangle) ||
-                    (c.type == T::tetrahedra_removed && k == MassElement::tetra);
+                    (c.type == T::tetrahedra_removed && k == MassElement::tetra) ||
+                    (c.type == T::quads_removed && k == MassElement::quad) ||
+                    (c.type == T::hexahedra_removed && k == MassElement::hexa);
   if (!mine) return;
-  // Called before the container changes: the removed elements can still be read.
+  // Removals arrive before the container changes: the removed elements can still be read.
   const MechanicalState& g = *geometry_state;
   const std::vector<double>& X = g.read(kRestPosition);
   const int w = g.info().coord_width;
@@ -175,6 +152,12 @@ void DiagonalMass::on_topology_change(const MeshTopologyBase& t, const TopologyC
   std::vector<double>& m = vertex_mass.edit();
   double total = total_mass.value();
   auto take = [&](const auto& e, double share) {
+    if (added) {
+      for (unsigned v : e)
+        if (v < m.size()) m[v] += share;
+      total += static_cast<double>(e.size()) * share;
+      return;
+    }
     for (unsigned v : e)
       if (v < m.size()) m[v] -= share;
     total -= static_cast<double>(e.size()) * share;
@@ -186,6 +169,12 @@ void DiagonalMass::on_topology_change(const MeshTopologyBase& t, const TopologyC
     } else if (k == MassElement::triangle && i < t.triangles().size()) {
       const Triangle& e = t.triangles()[i];
       take(e, (rho * meshgeo::triangle_area(X, w, e[0], e[1], e[2])) / 3.0);
+    } else if (k == MassElement::hexa && i < t.hexahedra().size()) {
+      const Hexa& e = t.hexahedra()[i];
+      take(e, (rho * meshgeo::hexa_volume(X, e)) / 8.0);
+    } else if (k == MassElement::quad && i < t.quads().size()) {
+      const Quad& e = t.quads()[i];
+      take(e, (rho * meshgeo::quad_area(X, w, e)) / 4.0);
     } else if (k == MassElement::edge && i < t.edges().size()) {
       const Edge& e = t.edges()[i];
       take(e, (rho * meshgeo::edge_length(X, w, e[0], e[1])) / 2.0);

@@ -254,7 +254,8 @@ TEST(TopologicalChangeProcessor, AppliesDueRemoveBlocksAndRefusesQuadAdd) {
     </Node>)");
   init_root(*s.root);
   EXPECT_TRUE(sinew::test::any_contains(sinew::test::messages(s.root->diagnostics(), Severity::error),
-                                        "a.txt:2: ADD= Quads is not supported yet"));
+                                        "a.txt:2: ADD= Quads needs a QuadSetTopologyModifier in the topology's "
+                                        "node or its ancestors"));
 }
 
 // Tetra2TriangleTopologicalMapping following removeTetrahedra({0}) on the three tetrahedra

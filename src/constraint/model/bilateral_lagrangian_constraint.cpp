@@ -40,6 +40,51 @@ void BilateralLagrangianConstraint::init() {
     load.set(std::clamp(load.value(), 0.0, 1.0));
   }
   prev_forces_.clear();
+  follow1_.owner = follow2_.owner = this;
+  follow1_.side = 0;
+  follow2_.side = 1;
+  follow1_.attach(topology1.get());
+  follow2_.attach(topology2.get());
+}
+
+void BilateralLagrangianConstraint::Follow::apply(const MeshTopologyBase& t, const TopologyChange& c) {
+  if (c.type == TopologyChangeType::points_removed) owner->on_points_removed(side, t, c.indices);
+}
+
+void BilateralLagrangianConstraint::on_points_removed(int side, const MeshTopologyBase& t,
+                                                      const std::vector<unsigned>& decreasing) {
+  std::vector<unsigned> m1 = first_point.value(), m2 = second_point.value();
+  std::vector<double> rest = rest_vector.value().data;
+  const std::size_t w = static_cast<std::size_t>(width_);
+  // SOFA's removeContact: per removed point, the first pair naming it on this side goes (order kept).
+  for (unsigned id : decreasing) {
+    std::vector<unsigned>& mine = side == 0 ? m1 : m2;
+    const auto it = std::find(mine.begin(), mine.end(), id);
+    if (it == mine.end()) continue;
+    const std::size_t pos = static_cast<std::size_t>(it - mine.begin());
+    if (rest.size() == m1.size() * w) rest.erase(rest.begin() + pos * w, rest.begin() + (pos + 1) * w);
+    if (pos < m1.size()) m1.erase(m1.begin() + pos);
+    if (pos < m2.size()) m2.erase(m2.begin() + pos);
+  }
+  // Then the subset list of this side (TopologySubsetIndices::remove): remaining entries naming a
+  // removed point are erased, and the entries naming the point that moves into the freed slot
+  // (the last one) are renumbered.
+  std::vector<unsigned>& mine = side == 0 ? m1 : m2;
+  std::size_t n = t.nb_points();
+  for (unsigned id : decreasing) {
+    if (mine.empty()) break;
+    for (std::size_t k = mine.size(); k-- > 0;)
+      if (mine[k] == id) mine.erase(mine.begin() + static_cast<std::ptrdiff_t>(k));
+    if (n == 0) continue;
+    for (unsigned& v : mine)
+      if (v == n - 1) v = id;
+    --n;
+  }
+  if (first_point.parent()) first_point.set_parent(nullptr);
+  if (second_point.parent()) second_point.set_parent(nullptr);
+  first_point.set(std::move(m1));
+  second_point.set(std::move(m2));
+  rest_vector.edit().data = std::move(rest);
 }
 
 void BilateralLagrangianConstraint::bwd_init() {

@@ -43,6 +43,8 @@ class BilateralLagrangianConstraint final : public LagrangianConstraint {
                                           "keep the initial orientation difference (Rigid3d only)", "Constraint"};
   Field<double> load{this, "load", 1.0, "factor on the constraint force, in [0, 1] (incremental loading, Vec3d)",
                      "Constraint"};
+  // When set, a point removed from that topology drops the pairs naming it (the first one found
+  // per removed point, rest vector included), and the list of that side follows the renumbering.
   Link<MeshTopologyBase> topology1{this, "topology1", "topology of object1 (point removals drop pairs)"};
   Link<MeshTopologyBase> topology2{this, "topology2", "topology of object2 (point removals drop pairs)"};
 
@@ -71,6 +73,15 @@ class BilateralLagrangianConstraint final : public LagrangianConstraint {
   std::size_t active_pairs() const { return activate.value() || rigid_ ? pairs() : 0; }
   void violation_vec3(const ConstraintParams& p, std::vector<double>& dfree);
   void violation_rigid3(const ConstraintParams& p, std::vector<double>& dfree);
+
+  // Point removals on topology1 / topology2 (SOFA's removeContact callback, then the
+  // TopologySubsetIndices default on that side's list).
+  void on_points_removed(int side, const MeshTopologyBase& t, const std::vector<unsigned>& decreasing);
+  struct Follow final : TopologyHandler {
+    BilateralLagrangianConstraint* owner = nullptr;
+    int side = 0;
+    void apply(const MeshTopologyBase& t, const TopologyChange& c) override;
+  } follow1_, follow2_;
 
   bool rigid_;
   int width_;                                       // rows per pair: 3 or 6

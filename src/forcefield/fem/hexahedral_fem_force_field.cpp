@@ -100,6 +100,7 @@ void HexahedralFEMForceField::init() {
     return;
   }
   const auto& hexas = topology->hexahedra();
+  hexa_version_ = topology->elements_version(MeshTopologyBase::Elements::hexahedra);
   if (hexas.empty()) {
     msg_error("Object must have a Topology with hexahedra: " + topology->describe() + " has none");
     set_state(ComponentState::invalid);
@@ -185,7 +186,20 @@ void HexahedralFEMForceField::init() {
              "by one edge length, so it differs from HexahedronFEMForceField on them");
 }
 
+void HexahedralFEMForceField::follow_topology() {
+  if (!topology || topology->elements_version(MeshTopologyBase::Elements::hexahedra) == hexa_version_) return;
+  if (topology->hexahedra().empty()) {
+    // Every element was removed: no force, no error.
+    fem_ = fem::HexaFEM{};
+    hexa_version_ = topology->elements_version(MeshTopologyBase::Elements::hexahedra);
+    return;
+  }
+  init();
+}
+
 void HexahedralFEMForceField::add_force(const MechParams& p) {
+  if (state() != ComponentState::valid) return;
+  follow_topology();
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
   fem_.add_force(as_vec3(s.read(p.x)), as_vec3(s.write(p.f)));
@@ -193,11 +207,15 @@ void HexahedralFEMForceField::add_force(const MechParams& p) {
 
 void HexahedralFEMForceField::add_dforce(const MechParams& p, double kfactor) {
   if (state() != ComponentState::valid) return;
+  follow_topology();
+  if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
   fem_.add_dforce(as_vec3(s.read(p.dx)), as_vec3(s.write(p.df)), kfactor);
 }
 
 bool HexahedralFEMForceField::build_stiffness(MatrixSink& sink) {
+  if (state() != ComponentState::valid) return true;
+  follow_topology();
   if (state() != ComponentState::valid) return true;
   const MechanicalState* s = mstate.get();
   // SOFA stores Q = Rᵀ (element → world) but assembles −Qᵀ·K_ij·Q as if Q

@@ -51,7 +51,13 @@ class HexahedralFEMForceField final : public ForceField {
   const fem::HexaFEM& kernel() const { return fem_; }
 
  private:
+  // Hexahedra removed or added since the elements were built: rebuilt from the rest positions
+  // (SOFA's per-hexahedron data is computed from them on creation and moved with swap-last on
+  // removal, so a rebuild gives the same elements in the container's order).
+  void follow_topology();
+
   fem::HexaFEM fem_;  // K replaced by hexahedral_element_stiffness after init
+  std::uint64_t hexa_version_ = 0;
 };
 
 }  // namespace sinew

@@ -42,6 +42,7 @@ void HexahedronFEMBase<Role>::init() {
     return;
   }
   const auto& hexas = topology->hexahedra();
+  hexa_version_ = topology->elements_version(MeshTopologyBase::Elements::hexahedra);
   if (hexas.empty()) {
     this->msg_error("the topology " + topology->describe() + " has no hexahedra");
     this->set_state(ComponentState::invalid);
@@ -91,7 +92,34 @@ void HexahedronFEMBase<Role>::init() {
 }
 
 template <class Role>
+void HexahedronFEMBase<Role>::follow_topology() {
+  if (!topology || topology->elements_version(MeshTopologyBase::Elements::hexahedra) == hexa_version_) return;
+  hexa_version_ = topology->elements_version(MeshTopologyBase::Elements::hexahedra);
+  const auto& live = topology->hexahedra();
+  std::size_t n = live.size();
+  if (n > fem_.active.size()) {
+    // SOFA would read its per-element arrays past their end: the added hexahedra are not simulated.
+    if (!warned_growth_)
+      this->msg_warning("hexahedra were added after init: as SOFA has no data for them, they add no force");
+    warned_growth_ = true;
+    n = fem_.active.size();
+  }
+  const std::size_t np = this->mstate->size();
+  fem_.hexa.resize(n);
+  for (std::size_t e = 0; e < n; ++e) {
+    bool in_range = true;
+    for (int k = 0; k < 8; ++k) {
+      fem_.hexa[e][k] = static_cast<int>(live[e][k]);
+      in_range = in_range && live[e][k] < np;
+    }
+    fem_.active[e] = in_range ? 1 : 0;
+  }
+  fem_.build_incidence(np);
+}
+
+template <class Role>
 void HexahedronFEMBase<Role>::add_force(const MechParams& p) {
+  follow_topology();
   MechanicalState& s = *this->mstate;
   const std::vector<double>& x = s.read(p.x);
   std::vector<double>& f = s.write(p.f);
@@ -100,6 +128,7 @@ void HexahedronFEMBase<Role>::add_force(const MechParams& p) {
 
 template <class Role>
 void HexahedronFEMBase<Role>::add_dforce(const MechParams& p, double kfactor) {
+  follow_topology();
   MechanicalState& s = *this->mstate;
   const std::vector<double>& dx = s.read(p.dx);
   std::vector<double>& df = s.write(p.df);
@@ -108,6 +137,7 @@ void HexahedronFEMBase<Role>::add_dforce(const MechParams& p, double kfactor) {
 
 template <class Role>
 bool HexahedronFEMBase<Role>::build_stiffness(MatrixSink& K) {
+  follow_topology();
   const MechanicalState* s = this->mstate.get();
   // ∂f/∂x blocks −Rᵀ·K_ij·R (kfactor 1); the assembler applies its factor.
   fem_.add_stiffness_blocks(1.0, [&](int i, int j, const Mat3& b) { K.add_block(s, 3 * i, s, 3 * j, b); });

@@ -48,8 +48,16 @@ class HexahedronFEMBase : public Role, public RotationFinder {
   MechanicalState* rotation_state() const override { return this->mstate.get(); }
 
  protected:
+  // SOFA reads the container's live hexahedra every step while its per-element data (rest
+  // shape, stiffness, rotations) keeps the order of init: after removals, element i takes the
+  // live hexahedron i with the data computed for the i-th one at init. Reproduced: the node
+  // indices follow the live list, the rest of the data stays.
+  void follow_topology();
+
   fem::HexaFEM fem_;
   std::vector<Vec3> rest_;  // initial points (rest positions at init)
+  std::uint64_t hexa_version_ = 0;
+  bool warned_growth_ = false;
 };
 
 class HexahedronFEMForceField final : public HexahedronFEMBase<ForceField> {

@@ -52,6 +52,8 @@ void add_edge_process(DynamicMesh& m, const Edge& e) {
   // Higher levels keep one (empty for now) shell per edge.
   if (!m.triangles->empty() || !m.triangles_around_edge.empty()) fit(m.triangles_around_edge, m.edges->size());
   if (!m.tetrahedra->empty() || !m.tetrahedra_around_edge.empty()) fit(m.tetrahedra_around_edge, m.edges->size());
+  if (!m.quads->empty() || !m.quads_around_edge.empty()) fit(m.quads_around_edge, m.edges->size());
+  if (!m.hexahedra->empty() || !m.hexahedra_around_edge.empty()) fit(m.hexahedra_around_edge, m.edges->size());
 }
 
 std::vector<unsigned> add_triangle_process(DynamicMesh& m, const Triangle& t) {
@@ -113,6 +115,82 @@ std::vector<Created> add_tetrahedron_process(DynamicMesh& m, const Tetra& t) {
     m.tetrahedra_around_edge[e].push_back(id);
   }
   m.tetrahedra->push_back(t);
+  return created;
+}
+
+unsigned find_quad(const DynamicMesh& m, unsigned a, unsigned b, unsigned c, unsigned d) {
+  if (a >= m.quads_around_vertex.size()) return kNoIndex;
+  unsigned found = kNoIndex;
+  for (unsigned id : m.quads_around_vertex[a]) {
+    const Quad& Q = (*m.quads)[id];
+    auto has = [&](unsigned v) { return Q[0] == v || Q[1] == v || Q[2] == v || Q[3] == v; };
+    if (!has(b) || !has(c) || !has(d)) continue;
+    if (found != kNoIndex) return kNoIndex;  // more than one: SOFA answers none
+    found = id;
+  }
+  return found;
+}
+
+std::vector<unsigned> add_quad_process(DynamicMesh& m, const Quad& q) {
+  std::vector<unsigned> created;
+  const unsigned id = static_cast<unsigned>(m.quads->size());
+  for (unsigned v : q) grow_points(m, v);
+  fit(m.quads_around_vertex, m.nb_points);
+  if (!m.edges_around_vertex.empty()) fit(m.edges_around_vertex, m.nb_points);
+  for (unsigned v : q) m.quads_around_vertex[v].push_back(id);
+  if (m.edges_in_quad.size() < id + 1u) m.edges_in_quad.resize(id + 1u);
+  for (unsigned j = 0; j < 4; ++j) {
+    const unsigned a = q[(j + 1) % 4], b = q[(j + 2) % 4];
+    unsigned e = find_edge(m, a, b);
+    if (e == kNoIndex) {
+      add_edge_process(m, Edge{a, b});
+      e = static_cast<unsigned>(m.edges->size() - 1);
+      created.push_back(e);
+    }
+    m.edges_in_quad[id][j] = e;
+    fit(m.quads_around_edge, m.edges->size());
+    m.quads_around_edge[e].push_back(id);
+  }
+  m.quads->push_back(q);
+  return created;
+}
+
+std::vector<Created> add_hexahedron_process(DynamicMesh& m, const Hexa& h) {
+  std::vector<Created> created;
+  const unsigned id = static_cast<unsigned>(m.hexahedra->size());
+  for (unsigned v : h) grow_points(m, v);
+  fit(m.hexahedra_around_vertex, m.nb_points);
+  for (unsigned v : h) m.hexahedra_around_vertex[v].push_back(id);
+
+  if (m.quads_in_hexahedron.size() < id + 1u) m.quads_in_hexahedron.resize(id + 1u);
+  for (unsigned j = 0; j < 6; ++j) {
+    const auto& f = kQuadsInHexa[j];
+    const Quad face{h[f[0]], h[f[1]], h[f[2]], h[f[3]]};
+    unsigned q = find_quad(m, face[0], face[1], face[2], face[3]);
+    if (q == kNoIndex) {
+      for (unsigned e : add_quad_process(m, face)) created.push_back({Created::Kind::edge, e});
+      q = static_cast<unsigned>(m.quads->size() - 1);
+      created.push_back({Created::Kind::quad, q});
+    }
+    m.quads_in_hexahedron[id][j] = q;
+    fit(m.hexahedra_around_quad, m.quads->size());
+    m.hexahedra_around_quad[q].push_back(id);
+  }
+
+  if (m.edges_in_hexahedron.size() < id + 1u) m.edges_in_hexahedron.resize(id + 1u);
+  for (unsigned j = 0; j < 12; ++j) {
+    const unsigned a = h[kEdgesInHexa[j][0]], b = h[kEdgesInHexa[j][1]];
+    unsigned e = find_edge(m, a, b);
+    if (e == kNoIndex) {  // only when the faces did not bring it (never with the faces above)
+      add_edge_process(m, Edge{a, b});
+      e = static_cast<unsigned>(m.edges->size() - 1);
+      created.push_back({Created::Kind::edge, e});
+    }
+    m.edges_in_hexahedron[id][j] = e;
+    fit(m.hexahedra_around_edge, m.edges->size());
+    m.hexahedra_around_edge[e].push_back(id);
+  }
+  m.hexahedra->push_back(h);
   return created;
 }
 

@@ -39,7 +39,7 @@ std::vector<unsigned> add_triangle_process(DynamicMesh& m, const Triangle& t);
 
 // An element a tetrahedron addition created on its way, in creation order.
 struct Created {
-  enum class Kind { edge, triangle } kind;
+  enum class Kind { edge, triangle, quad } kind;
   unsigned index;
 };
 
@@ -49,5 +49,21 @@ struct Created {
 // (kEdgesInTetra[j]) the edge is looked up and created as (t[a], t[b]) when absent. The new
 // index joins the face and edge shells. Returns what it created, in order.
 std::vector<Created> add_tetrahedron_process(DynamicMesh& m, const Tetra& t);
+
+// The index of the quad with vertices a, b, c, d (any order), when exactly one exists; kNoIndex
+// otherwise (SOFA's getQuadIndex intersects the four vertex shells).
+unsigned find_quad(const DynamicMesh& m, unsigned a, unsigned b, unsigned c, unsigned d);
+
+// Appends quad q (SOFA's addQuadProcess): its index joins the shells of its vertices; for each
+// corner j the edge (q[j+1], q[j+2]) is looked up and created, in that vertex order, when absent.
+// Returns the indices of the edges it created, in creation order.
+std::vector<unsigned> add_quad_process(DynamicMesh& m, const Quad& q);
+
+// Appends hexahedron h (SOFA's addHexahedronProcess): its index joins the shells of its
+// vertices; for each face j (vertices kQuadsInHexa[j] of h, in that order) the quad is looked up
+// and created when absent (with add_quad_process, so its missing edges come first); then for each
+// local edge j (kEdgesInHexa[j]) the edge is looked up and created as (h[a], h[b]) when absent.
+// Returns what it created, in order.
+std::vector<Created> add_hexahedron_process(DynamicMesh& m, const Hexa& h);
 
 }  // namespace sinew::topo

@@ -118,6 +118,100 @@ Isolated remove_triangles_process(DynamicMesh& m, const std::vector<unsigned>& d
   return out;
 }
 
+namespace {
+
+// Rows of `in` (element → sub-element) that named the moving last sub-element now name its new
+// slot, and the "around" shells follow it (the upper-level half of SOFA's removeXProcess
+// overrides, run before the sub-elements themselves are removed).
+template <std::size_t N>
+void renumber_sub_elements(std::vector<std::array<unsigned, N>>& in, std::vector<IndexList>& around,
+                           std::size_t count, const std::vector<unsigned>& decreasing) {
+  if (in.empty()) return;
+  unsigned last = static_cast<unsigned>(count - 1);
+  for (unsigned id : decreasing) {
+    for (unsigned e : around[last]) replace_in(in[e], last, id);
+    around[id] = around[last];
+    --last;
+  }
+  shrink_by(around, decreasing.size());
+}
+
+}  // namespace
+
+Isolated remove_hexahedra_process(DynamicMesh& m, const std::vector<unsigned>& decreasing, bool isolated_items,
+                                  bool isolated_points) {
+  // SOFA's HexahedronSetTopologyModifier::removeHexahedraProcess: the same walk as tetrahedra.
+  Isolated out;
+  auto& hexas = *m.hexahedra;
+  const bool want_points = isolated_items && isolated_points;
+  const bool want_edges = isolated_items && !m.edges->empty();
+  const bool want_quads = isolated_items && !m.quads->empty();
+  const bool has_edges = !m.edges_in_hexahedron.empty(), has_quads = !m.quads_in_hexahedron.empty();
+  for (unsigned id : decreasing) {
+    const unsigned last = static_cast<unsigned>(hexas.size() - 1);
+    for (unsigned v : hexas[id]) {
+      IndexList& shell = m.hexahedra_around_vertex[v];
+      erase_from(shell, id);
+      if (want_points && shell.empty()) out.points.push_back(v);
+    }
+    if (has_edges)
+      for (unsigned e : m.edges_in_hexahedron[id]) {
+        IndexList& shell = m.hexahedra_around_edge[e];
+        erase_from(shell, id);
+        if (want_edges && shell.empty()) out.edges.push_back(e);
+      }
+    if (has_quads)
+      for (unsigned q : m.quads_in_hexahedron[id]) {
+        IndexList& shell = m.hexahedra_around_quad[q];
+        erase_from(shell, id);
+        if (want_quads && shell.empty()) out.quads.push_back(q);
+      }
+    if (id < last) {
+      for (unsigned v : hexas[last]) replace_in(m.hexahedra_around_vertex[v], last, id);
+      if (has_edges)
+        for (unsigned e : m.edges_in_hexahedron[last]) replace_in(m.hexahedra_around_edge[e], last, id);
+      if (has_quads)
+        for (unsigned q : m.quads_in_hexahedron[last]) replace_in(m.hexahedra_around_quad[q], last, id);
+    }
+    if (has_quads) swap_pop(m.quads_in_hexahedron, id);
+    if (has_edges) swap_pop(m.edges_in_hexahedron, id);
+    swap_pop(hexas, id);
+  }
+  return out;
+}
+
+Isolated remove_quads_process(DynamicMesh& m, const std::vector<unsigned>& decreasing, bool isolated_edges,
+                              bool isolated_points) {
+  Isolated out;
+  auto& quads = *m.quads;
+  // Hexahedron level first: faces of hexahedra that pointed at the moved quad.
+  renumber_sub_elements(m.quads_in_hexahedron, m.hexahedra_around_quad, m.hexahedra_around_quad.size(), decreasing);
+  const bool want_edges = isolated_edges && !m.edges->empty();
+  const bool has_edges = !m.edges_in_quad.empty();
+  for (unsigned id : decreasing) {
+    const unsigned last = static_cast<unsigned>(quads.size() - 1);
+    for (unsigned v : quads[id]) {
+      IndexList& shell = m.quads_around_vertex[v];
+      erase_from(shell, id);
+      if (isolated_points && shell.empty()) out.points.push_back(v);
+    }
+    if (has_edges)
+      for (unsigned e : m.edges_in_quad[id]) {
+        IndexList& shell = m.quads_around_edge[e];
+        erase_from(shell, id);
+        if (want_edges && shell.empty()) out.edges.push_back(e);
+      }
+    if (id < last) {
+      for (unsigned v : quads[last]) replace_in(m.quads_around_vertex[v], last, id);
+      if (has_edges)
+        for (unsigned e : m.edges_in_quad[last]) replace_in(m.quads_around_edge[e], last, id);
+    }
+    if (has_edges) swap_pop(m.edges_in_quad, id);
+    swap_pop(quads, id);
+  }
+  return out;
+}
+
 Isolated remove_edges_process(DynamicMesh& m, const std::vector<unsigned>& decreasing, bool isolated_points) {
   Isolated out;
   // Tetrahedron then triangle level: element rows that pointed at the moved edge.
@@ -139,6 +233,9 @@ Isolated remove_edges_process(DynamicMesh& m, const std::vector<unsigned>& decre
     }
     shrink_by(m.triangles_around_edge, decreasing.size());
   }
+  // Hexahedron then quad level (SOFA's Hexahedron/QuadSetTopologyModifier::removeEdgesProcess).
+  renumber_sub_elements(m.edges_in_hexahedron, m.hexahedra_around_edge, m.edges->size(), decreasing);
+  renumber_sub_elements(m.edges_in_quad, m.quads_around_edge, m.edges->size(), decreasing);
   auto& edges = *m.edges;
   for (unsigned id : decreasing) {
     const unsigned last = static_cast<unsigned>(edges.size() - 1);
@@ -156,7 +253,8 @@ Isolated remove_edges_process(DynamicMesh& m, const std::vector<unsigned>& decre
 }
 
 void remove_points_process(DynamicMesh& m, const std::vector<unsigned>& decreasing) {
-  // Tetrahedra, triangles, edges in turn (SOFA's modifier chain), each with its vertex shells.
+  // Tetrahedra, triangles, edges in turn (SOFA's modifier chain; hexahedra and quads before the
+  // edges in the other family), each with its vertex shells.
   auto renumber = [&](auto& elements, std::vector<IndexList>& shells) {
     if (elements.empty() && shells.empty()) return;
     unsigned last = m.nb_points - 1;
@@ -169,6 +267,8 @@ void remove_points_process(DynamicMesh& m, const std::vector<unsigned>& decreasi
   };
   renumber(*m.tetrahedra, m.tetrahedra_around_vertex);
   renumber(*m.triangles, m.triangles_around_vertex);
+  renumber(*m.hexahedra, m.hexahedra_around_vertex);
+  renumber(*m.quads, m.quads_around_vertex);
   renumber(*m.edges, m.edges_around_vertex);
   m.nb_points = decreasing.size() < m.nb_points ? m.nb_points - static_cast<unsigned>(decreasing.size()) : 0;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/registry.h"
+#include "topology/dynamic/element_addition.h"
 
 namespace sinew {
 
@@ -80,8 +81,11 @@ bool PointSetTopologyContainer::live() const {
   edges();
   triangles();
   tetrahedra();
-  const std::uint64_t v[4] = {edges_f.version(), triangles_f.version(), tetrahedra_f.version(), nb_points_f.version()};
-  return std::equal(v, v + 4, mesh_versions_);
+  quads();
+  hexahedra();
+  const std::uint64_t v[6] = {edges_f.version(),     triangles_f.version(), tetrahedra_f.version(),
+                              nb_points_f.version(), quads_f.version(),     hexahedra_f.version()};
+  return std::equal(v, v + 6, mesh_versions_);
 }
 
 topo::DynamicMesh& PointSetTopologyContainer::begin_edit() {
@@ -108,31 +112,57 @@ topo::DynamicMesh& PointSetTopologyContainer::begin_edit() {
         m->tetrahedra_around_triangle = MeshContainer::tetrahedra_around_triangle();
       }
     }
+    if (!quads().empty()) {
+      m->quads_around_vertex = MeshContainer::quads_around_vertex();
+      if (!edges().empty()) {
+        m->edges_in_quad = MeshContainer::edges_in_quad();
+        m->quads_around_edge = MeshContainer::quads_around_edge();
+      }
+    }
+    if (!hexahedra().empty()) {
+      m->hexahedra_around_vertex = MeshContainer::hexahedra_around_vertex();
+      if (!edges().empty()) {
+        m->edges_in_hexahedron = MeshContainer::edges_in_hexahedron();
+        m->hexahedra_around_edge = MeshContainer::hexahedra_around_edge();
+      }
+      if (!quads().empty()) {
+        m->quads_in_hexahedron = MeshContainer::quads_in_hexahedron();
+        m->hexahedra_around_quad = MeshContainer::hexahedra_around_quad();
+      }
+    }
     // Vertex shells span every point, isolated ones included.
-    for (auto* shells : {&m->edges_around_vertex, &m->triangles_around_vertex, &m->tetrahedra_around_vertex})
+    for (auto* shells : {&m->edges_around_vertex, &m->triangles_around_vertex, &m->tetrahedra_around_vertex,
+                         &m->quads_around_vertex, &m->hexahedra_around_vertex})
       if (!shells->empty() && shells->size() < m->nb_points) shells->resize(m->nb_points);
     mesh_ = std::move(m);
     // The lists now differ from any linked source (a loader's output).
-    for (BaseField* f : std::initializer_list<BaseField*>{&edges_f, &triangles_f, &tetrahedra_f})
+    for (BaseField* f : std::initializer_list<BaseField*>{&edges_f, &triangles_f, &tetrahedra_f, &quads_f, &hexahedra_f})
       if (f->parent()) f->set_parent(nullptr);
   }
   // Written in place; end_edit moves the versions of what changed.
   mesh_->edges = &edges_f.raw();
   mesh_->triangles = &triangles_f.raw();
   mesh_->tetrahedra = &tetrahedra_f.raw();
+  mesh_->quads = &quads_f.raw();
+  mesh_->hexahedra = &hexahedra_f.raw();
   return *mesh_;
 }
 
-void PointSetTopologyContainer::end_edit(bool edges_changed, bool triangles_changed, bool tetrahedra_changed) {
+void PointSetTopologyContainer::end_edit(bool edges_changed, bool triangles_changed, bool tetrahedra_changed,
+                                         bool quads_changed, bool hexahedra_changed) {
   if (!mesh_) return;
   if (edges_changed) edges_f.touch();
   if (triangles_changed) triangles_f.touch();
   if (tetrahedra_changed) tetrahedra_f.touch();
+  if (quads_changed) quads_f.touch();
+  if (hexahedra_changed) hexahedra_f.touch();
   if (nb_points_f.value() != mesh_->nb_points) nb_points_f.set(mesh_->nb_points);
   mesh_versions_[0] = edges_f.version();
   mesh_versions_[1] = triangles_f.version();
   mesh_versions_[2] = tetrahedra_f.version();
   mesh_versions_[3] = nb_points_f.version();
+  mesh_versions_[4] = quads_f.version();
+  mesh_versions_[5] = hexahedra_f.version();
 }
 
 #define SINEW_LIVE_QUERY(type, name)                                   \
@@ -145,12 +175,23 @@ SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, triangles_around_edge
 SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, tetrahedra_around_vertex)
 SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, tetrahedra_around_edge)
 SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, tetrahedra_around_triangle)
+SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, quads_around_vertex)
+SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, quads_around_edge)
+SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, hexahedra_around_vertex)
+SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, hexahedra_around_edge)
+SINEW_LIVE_QUERY(std::vector<MeshTopologyBase::IndexList>, hexahedra_around_quad)
 using EdgesInTriangle = std::vector<std::array<unsigned, 3>>;
 using EdgesInTetrahedron = std::vector<std::array<unsigned, 6>>;
 using TrianglesInTetrahedron = std::vector<std::array<unsigned, 4>>;
 SINEW_LIVE_QUERY(EdgesInTriangle, edges_in_triangle)
 SINEW_LIVE_QUERY(EdgesInTetrahedron, edges_in_tetrahedron)
 SINEW_LIVE_QUERY(TrianglesInTetrahedron, triangles_in_tetrahedron)
+using EdgesInQuad = std::vector<std::array<unsigned, 4>>;
+using EdgesInHexahedron = std::vector<std::array<unsigned, 12>>;
+using QuadsInHexahedron = std::vector<std::array<unsigned, 6>>;
+SINEW_LIVE_QUERY(EdgesInQuad, edges_in_quad)
+SINEW_LIVE_QUERY(EdgesInHexahedron, edges_in_hexahedron)
+SINEW_LIVE_QUERY(QuadsInHexahedron, quads_in_hexahedron)
 #undef SINEW_LIVE_QUERY
 
 unsigned PointSetTopologyContainer::triangle_index(unsigned a, unsigned b, unsigned c) const {
@@ -166,6 +207,11 @@ unsigned PointSetTopologyContainer::triangle_index(unsigned a, unsigned b, unsig
     if (hb && hc) return t;
   }
   return kInvalidIndex;
+}
+
+unsigned PointSetTopologyContainer::quad_index(unsigned a, unsigned b, unsigned c, unsigned d) const {
+  if (!live()) return MeshContainer::quad_index(a, b, c, d);
+  return topo::find_quad(*mesh_, a, b, c, d);
 }
 
 void register_point_set_topology_container(Registry& r) {

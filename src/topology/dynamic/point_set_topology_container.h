@@ -38,7 +38,8 @@ class PointSetTopologyContainer : public MeshContainer {
   // else edits the lists; `end_edit()` records the new lists and point count.
   topo::DynamicMesh& begin_edit();
   // Moves the versions of the lists that changed (consumers comparing elements_version follow).
-  void end_edit(bool edges_changed, bool triangles_changed, bool tetrahedra_changed);
+  void end_edit(bool edges_changed, bool triangles_changed, bool tetrahedra_changed, bool quads_changed = false,
+                bool hexahedra_changed = false);
 
   // Neighbourhood queries: the live arrays while a removal view is live, else the cache.
   const std::vector<IndexList>& edges_around_vertex() const override;
@@ -47,10 +48,19 @@ class PointSetTopologyContainer : public MeshContainer {
   const std::vector<IndexList>& tetrahedra_around_vertex() const override;
   const std::vector<IndexList>& tetrahedra_around_edge() const override;
   const std::vector<IndexList>& tetrahedra_around_triangle() const override;
+  const std::vector<IndexList>& quads_around_vertex() const override;
+  const std::vector<IndexList>& quads_around_edge() const override;
+  const std::vector<IndexList>& hexahedra_around_vertex() const override;
+  const std::vector<IndexList>& hexahedra_around_edge() const override;
+  const std::vector<IndexList>& hexahedra_around_quad() const override;
   const std::vector<std::array<unsigned, 3>>& edges_in_triangle() const override;
   const std::vector<std::array<unsigned, 6>>& edges_in_tetrahedron() const override;
   const std::vector<std::array<unsigned, 4>>& triangles_in_tetrahedron() const override;
+  const std::vector<std::array<unsigned, 4>>& edges_in_quad() const override;
+  const std::vector<std::array<unsigned, 12>>& edges_in_hexahedron() const override;
+  const std::vector<std::array<unsigned, 6>>& quads_in_hexahedron() const override;
   unsigned triangle_index(unsigned a, unsigned b, unsigned c) const override;
+  unsigned quad_index(unsigned a, unsigned b, unsigned c, unsigned d) const override;
 
  protected:
   std::uint64_t points_stamp() const override { return (nb_points_f.version() << 1) | (initialised_ ? 1u : 0u); }
@@ -61,7 +71,7 @@ class PointSetTopologyContainer : public MeshContainer {
   bool live() const;
   bool initialised_ = false;
   std::unique_ptr<topo::DynamicMesh> mesh_;
-  std::uint64_t mesh_versions_[4] = {0, 0, 0, 0};
+  std::uint64_t mesh_versions_[6] = {0, 0, 0, 0, 0, 0};
 };
 
 }  // namespace sinew

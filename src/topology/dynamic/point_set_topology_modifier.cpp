@@ -149,7 +149,8 @@ void PointSetTopologyModifier::remove_points_process(const std::vector<unsigned>
   PointSetTopologyContainer& c = *dynamic_container();
   topo::DynamicMesh& m = c.begin_edit();
   topo::remove_points_process(m, decreasing);
-  c.end_edit(!m.edges->empty(), !m.triangles->empty(), !m.tetrahedra->empty());
+  c.end_edit(!m.edges->empty(), !m.triangles->empty(), !m.tetrahedra->empty(), !m.quads->empty(),
+             !m.hexahedra->empty());
   if (remove_dof && node()) visit_state_change(*node(), true, c, decreasing);
 }
 

@@ -32,8 +32,8 @@ class PointSetTopologyModifier : public TopologyObject {
   MeshContainer* container() const { return container_; }
 
   // SOFA's removeItems for this modifier's element kind (ids in any order). Indices out of
-  // range are skipped with a warning naming them; false with `why` when this modifier cannot
-  // remove its elements (quads and hexahedra are not supported yet) or has no container.
+  // range are skipped with a warning naming them; false with `why` when this modifier has no
+  // container.
   virtual bool remove_items(const std::vector<unsigned>& ids, std::string* why);
   // Removes points (expected isolated: elements using them are not removed); with `remove_dof`
   // the states using the container follow.

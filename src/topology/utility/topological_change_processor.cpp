@@ -1,9 +1,11 @@
 #include "topology/utility/topological_change_processor.h"
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <sstream>
+#include <type_traits>
 
 #include "core/node.h"
 #include "core/registry.h"
@@ -103,15 +105,16 @@ void TopologicalChangeProcessor::init() {
 }
 
 namespace {
-// The element kinds an ADD= line may name, with their vertex count; 0 for the kinds SOFA knows
-// that are not supported here.
-int add_kind_arity(const std::string& kind) {
-  if (kind == "Edge" || kind == "Edges") return 2;
-  if (kind == "Triangle" || kind == "Triangles") return 3;
-  if (kind == "Tetrahedron" || kind == "Tetrahedra") return 4;
-  if (kind == "Quad" || kind == "Quads" || kind == "Hexahedron" || kind == "Hexahedra" ||
-      kind == "PointInTriangle" || kind == "PointsInTriangle")
-    return 0;
+using AddKind = TopologicalChangeProcessor::AddKind;
+// The element kinds an ADD= line may name (SOFA's keywords), with their vertex count; arity 0 for
+// the kinds SOFA knows that are not supported here, -1 for unknown words.
+int add_kind_arity(const std::string& kind, AddKind* k) {
+  if (kind == "Edge" || kind == "Edges") return *k = AddKind::edge, 2;
+  if (kind == "Triangle" || kind == "Triangles") return *k = AddKind::triangle, 3;
+  if (kind == "Quad" || kind == "Quads") return *k = AddKind::quad, 4;
+  if (kind == "Tetrahedron" || kind == "Tetrahedra") return *k = AddKind::tetrahedron, 4;
+  if (kind == "Hexahedron" || kind == "Hexahedra") return *k = AddKind::hexahedron, 8;
+  if (kind == "PointInTriangle" || kind == "PointsInTriangle") return 0;
   return -1;
 }
 }  // namespace
@@ -120,7 +123,8 @@ bool TopologicalChangeProcessor::parse_add(std::size_t line, AddCommand* out, st
   std::istringstream s(lines_[line]);
   std::string tok, kind;
   s >> tok >> kind;
-  const int arity = add_kind_arity(kind);
+  AddKind add_kind = AddKind::edge;
+  const int arity = add_kind_arity(kind, &add_kind);
   if (arity < 0) {
     *why = "ADD= of unknown kind '" + kind + "'";
     return false;
@@ -136,9 +140,10 @@ bool TopologicalChangeProcessor::parse_add(std::size_t line, AddCommand* out, st
   }
   AddCommand cmd;
   cmd.arity = static_cast<unsigned>(arity);
+  cmd.kind = add_kind;
   std::string word;
   if (s >> word) {
-    if (arity != 3 || (word != "Ancestor" && word != "Ancestors")) {
+    if (add_kind != AddKind::triangle || (word != "Ancestor" && word != "Ancestors")) {
       *why = "unexpected '" + word + "' after the count (only triangles take Ancestors)";
       return false;
     }
@@ -172,14 +177,20 @@ bool TopologicalChangeProcessor::parse_add(std::size_t line, AddCommand* out, st
   if (!t && node()) t = node()->get_mesh_topology_link();
   Node* from = t ? t->node() : nullptr;
   if (from) {
-    if (arity == 2) mod = from->find_up<EdgeSetTopologyModifier>();
-    if (arity == 3) mod = from->find_up<TriangleSetTopologyModifier>();
-    if (arity == 4) mod = from->find_up<TetrahedronSetTopologyModifier>();
+    switch (add_kind) {
+      case AddKind::edge: mod = from->find_up<EdgeSetTopologyModifier>(); break;
+      case AddKind::triangle: mod = from->find_up<TriangleSetTopologyModifier>(); break;
+      case AddKind::quad: mod = from->find_up<QuadSetTopologyModifier>(); break;
+      case AddKind::tetrahedron: mod = from->find_up<TetrahedronSetTopologyModifier>(); break;
+      case AddKind::hexahedron: mod = from->find_up<HexahedronSetTopologyModifier>(); break;
+    }
   }
   if (!mod) {
-    static const char* names[] = {"", "", "EdgeSetTopologyModifier", "TriangleSetTopologyModifier",
-                                  "TetrahedronSetTopologyModifier"};
-    *why = "ADD= " + kind + " needs a " + names[arity] + " in the topology's node or its ancestors";
+    static const char* names[] = {"EdgeSetTopologyModifier", "TriangleSetTopologyModifier",
+                                  "QuadSetTopologyModifier", "TetrahedronSetTopologyModifier",
+                                  "HexahedronSetTopologyModifier"};
+    *why = "ADD= " + kind + " needs a " + names[static_cast<int>(add_kind)] +
+           " in the topology's node or its ancestors";
     return false;
   }
   cmd.modifier = mod;
@@ -189,19 +200,32 @@ bool TopologicalChangeProcessor::parse_add(std::size_t line, AddCommand* out, st
 
 void TopologicalChangeProcessor::apply_add(const AddCommand& a) {
   const std::size_t n = a.vertices.size() / a.arity;
-  if (a.arity == 2) {
-    std::vector<Edge> items(n);
-    for (std::size_t i = 0; i < n; ++i) items[i] = {a.vertices[2 * i], a.vertices[2 * i + 1]};
-    static_cast<EdgeSetTopologyModifier*>(a.modifier)->add_edges(items);
-  } else if (a.arity == 3) {
-    std::vector<Triangle> items(n);
-    for (std::size_t i = 0; i < n; ++i) items[i] = {a.vertices[3 * i], a.vertices[3 * i + 1], a.vertices[3 * i + 2]};
-    static_cast<TriangleSetTopologyModifier*>(a.modifier)->add_triangles(items, a.ancestors);
-  } else if (a.arity == 4) {
-    std::vector<Tetra> items(n);
+  // The n elements of `a`, N vertex indices each, in file order.
+  auto items = [&]<std::size_t N>(std::integral_constant<std::size_t, N>) {
+    std::vector<std::array<unsigned, N>> out(n);
     for (std::size_t i = 0; i < n; ++i)
-      items[i] = {a.vertices[4 * i], a.vertices[4 * i + 1], a.vertices[4 * i + 2], a.vertices[4 * i + 3]};
-    static_cast<TetrahedronSetTopologyModifier*>(a.modifier)->add_tetrahedra(items);
+      for (std::size_t c = 0; c < N; ++c) out[i][c] = a.vertices[N * i + c];
+    return out;
+  };
+  switch (a.kind) {
+    case AddKind::edge:
+      static_cast<EdgeSetTopologyModifier*>(a.modifier)->add_edges(items(std::integral_constant<std::size_t, 2>{}));
+      break;
+    case AddKind::triangle:
+      static_cast<TriangleSetTopologyModifier*>(a.modifier)
+          ->add_triangles(items(std::integral_constant<std::size_t, 3>{}), a.ancestors);
+      break;
+    case AddKind::quad:  // SOFA passes no ancestors for quads and hexahedra
+      static_cast<QuadSetTopologyModifier*>(a.modifier)->add_quads(items(std::integral_constant<std::size_t, 4>{}));
+      break;
+    case AddKind::tetrahedron:
+      static_cast<TetrahedronSetTopologyModifier*>(a.modifier)
+          ->add_tetrahedra(items(std::integral_constant<std::size_t, 4>{}));
+      break;
+    case AddKind::hexahedron:
+      static_cast<HexahedronSetTopologyModifier*>(a.modifier)
+          ->add_hexahedra(items(std::integral_constant<std::size_t, 8>{}));
+      break;
   }
 }
 

@@ -8,8 +8,8 @@
 // modifier found from the topology's node upwards; an `ADD= Kind n [Ancestor(s)
 // a1 … an]` line with its vertex line adds n elements through the first modifier
 // of that kind found the same way: Edge(s) → addEdges, Triangle(s) →
-// addTriangles (one ancestor per triangle when given), Tetrahedron/Tetrahedra →
-// addTetrahedra.
+// addTriangles (one ancestor per triangle when given), Quad(s) → addQuads,
+// Tetrahedron/Tetrahedra → addTetrahedra, Hexahedron/Hexahedra → addHexahedra.
 // `ADD= PointInTriangle(s) n` adds points interpolated in triangles (addPoints
 // with ancestors and coefficients). With `useDataInputs` the file is not read:
 // the *ToRemove lists are removed once time passes timeToRemove (then every
@@ -17,9 +17,8 @@
 // `INCISE=` blocks are checked at init (count and coordinate line) and warned
 // about; the incision algorithm is not written, so a due block is an error
 // naming its line and nothing is cut.
-// Refused at init with an error naming file:line: ADD= lines of other kinds
-// (Quad, Hexahedron) or malformed (count, vertex line, missing modifier), and
-// malformed INCISE= blocks.
+// Refused at init with an error naming file:line: ADD= lines of other kinds or
+// malformed (count, vertex line, missing modifier), and malformed INCISE= blocks.
 #pragma once
 
 #include <array>
@@ -68,13 +67,17 @@ class TopologicalChangeProcessor : public Component {
   // by `interval`, or to 2^32 − 1 (never again) when interval is 0. Public for tests.
   void process_data_inputs(double time);
 
+  // The element kinds an ADD= line adds.
+  enum class AddKind { edge, triangle, quad, tetrahedron, hexahedron };
+
  private:
   // SOFA's readNext: the lines of the last due block (T= lines included).
   std::vector<std::size_t> read_due(double t);
   std::string where(std::size_t line) const;
   // One ADD= line (at `line`) with its vertex line (the next one).
   struct AddCommand {
-    unsigned arity = 0;              // vertices per element: 2, 3 or 4
+    AddKind kind = AddKind::edge;
+    unsigned arity = 0;              // vertices per element: 2, 3, 4 or 8
     std::vector<unsigned> vertices;  // n * arity
     std::vector<std::vector<unsigned>> ancestors;  // empty, or one row per element
     PointSetTopologyModifier* modifier = nullptr;  // of the kind's modifier class
