@@ -159,6 +159,7 @@ template <> struct TypeName<std::vector<double>> { static std::string get() { re
 template <> struct TypeName<std::vector<int>> { static std::string get() { return "vector<int>"; } };
 template <> struct TypeName<std::vector<unsigned>> { static std::string get() { return "index list"; } };
 template <> struct TypeName<std::vector<std::string>> { static std::string get() { return "vector<string>"; } };
+template <> struct TypeName<Mat3> { static std::string get() { return "Mat3x3d"; } };
 template <int N> struct TypeName<VecN<N>> { static std::string get() { return "Vec" + std::to_string(N) + "d"; } };
 template <int N> struct TypeName<VecNi<N>> { static std::string get() { return "Vec" + std::to_string(N) + "i"; } };
 template <int N> struct TypeName<std::vector<VecN<N>>> { static std::string get() { return "vector<Vec" + std::to_string(N) + "d>"; } };

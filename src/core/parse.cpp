@@ -270,25 +270,27 @@ bool read_flat(std::string_view text, int width, std::vector<double>& v) {
   return ok;
 }
 
-bool read_rigid3_mass(std::string_view text, std::vector<double>& v) {
-  v.clear();
-  std::size_t i = 0;
+namespace {
+// `std::istream >> double` from position i of `text`: 1 read (appended to v), 0 at the end of
+// the text, −1 on a non-number.
+int stream_number(std::string_view text, std::size_t& i, std::vector<double>& v) {
   const std::size_t n = text.size();
-  // One `istream >> double`: 1 read, 0 at the end of the text, −1 on a non-number.
-  auto number = [&]() -> int {
-    while (i < n && is_space(text[i])) ++i;
-    if (i == n) return 0;
-    const std::size_t len = number_prefix(text.substr(i), true);
-    if (len == 0) return -1;
-    double x = 0;
-    read_double(text.substr(i, len), x);
-    v.push_back(x);
-    i += len;
-    return 1;
-  };
-  for (int k = 0; k < 2; ++k)
-    if (const int r = number(); r <= 0) return r == 0;
-  // The matrix: blanks and at most one '[' before the first row; blanks or commas between rows.
+  while (i < n && is_space(text[i])) ++i;
+  if (i == n) return 0;
+  const std::size_t len = number_prefix(text.substr(i), true);
+  if (len == 0) return -1;
+  double x = 0;
+  read_double(text.substr(i, len), x);
+  v.push_back(x);
+  i += len;
+  return 1;
+}
+
+// SOFA's `istream >> Mat<3,3>` from position i: blanks and at most one '[' before the first
+// row; blanks or commas between rows; each row three numbers. Same return as stream_number
+// for the first number that could not be read, 1 when all nine were.
+int stream_mat3(std::string_view text, std::size_t& i, std::vector<double>& v) {
+  const std::size_t n = text.size();
   while (i < n && (text[i] == ' ' || text[i] == '\n' || text[i] == '[')) {
     if (text[i++] == '[') break;
   }
@@ -296,9 +298,39 @@ bool read_rigid3_mass(std::string_view text, std::vector<double>& v) {
     if (row > 0)
       while (i < n && (text[i] == ' ' || text[i] == ',')) ++i;
     for (int c = 0; c < 3; ++c)
-      if (const int r = number(); r <= 0) return r == 0;
+      if (const int r = stream_number(text, i, v); r <= 0) return r;
   }
-  return true;  // a closing ']' and anything after it are not read
+  return 1;
+}
+}  // namespace
+
+bool read_rigid3_mass(std::string_view text, std::vector<double>& v) {
+  v.clear();
+  std::size_t i = 0;
+  for (int k = 0; k < 2; ++k)
+    if (const int r = stream_number(text, i, v); r <= 0) return r == 0;
+  return stream_mat3(text, i, v) >= 0;  // a closing ']' and anything after it are not read
+}
+
+bool read(std::string_view text, Mat3& m) {
+  std::vector<double> v;
+  std::size_t i = 0;
+  const int r = stream_mat3(text, i, v);
+  // Entries read so far replace the old ones (row by row); the others are kept.
+  for (std::size_t k = 0; k < v.size(); ++k) m(static_cast<int>(k / 3), static_cast<int>(k % 3)) = v[k];
+  return r == 1;
+}
+
+std::string to_text(const Mat3& m) {
+  std::string s = "[";
+  for (int r = 0; r < 3; ++r) {
+    if (r > 0) s += ',';
+    for (int c = 0; c < 3; ++c) {
+      if (c > 0) s += ' ';
+      s += format_double(m(r, c));
+    }
+  }
+  return s + "]";
 }
 
 template <int N>

@@ -62,6 +62,12 @@ bool read(std::string_view text, std::vector<std::array<unsigned, N>>& v);
 // number stands where a number is expected (`v` keeps the values read before).
 bool read_rigid3_mass(std::string_view text, std::vector<double>& v);
 
+// A 3×3 matrix as SOFA's Mat stream reader takes it: rows of three numbers,
+// optionally wrapped in "[" "]" with rows separated by commas
+// ("[0.7 -0.7 0,0.7 0.7 0,0 0 1]" or "1 0 0 0 1 0 0 0 1"). Entries not read keep their value.
+bool read(std::string_view text, Mat3& m);
+std::string to_text(const Mat3& m);  // "[a b c,d e f,g h i]", as SOFA writes it
+
 // Reads a flat list of doubles in groups of `width`; the trailing incomplete
 // group is dropped. Used for state vectors whose element width is dynamic.
 bool read_flat(std::string_view text, int width, std::vector<double>& v);

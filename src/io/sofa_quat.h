@@ -75,6 +75,29 @@ struct SQuat {
   }
 };
 
+// SOFA's Quat::operator+ (a + b): the product with b applied first — xyz = a.xyz·b.w +
+// b.xyz·a.w + b.xyz × a.xyz, w = a.w·b.w − a.xyz·b.xyz — then SOFA's normalize (only when the
+// squared norm is more than 1e-10 away from 1; a zero quaternion becomes w = 1).
+inline SQuat sofa_add(const SQuat& a, const SQuat& b) {
+  const auto& p = a.q;
+  const auto& q = b.q;
+  SQuat r;
+  r.q[0] = p[0] * q[3] + q[0] * p[3] + ((q[1] * p[2]) - (q[2] * p[1]));
+  r.q[1] = p[1] * q[3] + q[1] * p[3] + ((q[2] * p[0]) - (q[0] * p[2]));
+  r.q[2] = p[2] * q[3] + q[2] * p[3] + ((q[0] * p[1]) - (q[1] * p[0]));
+  r.q[3] = p[3] * q[3] - (p[0] * q[0] + p[1] * q[1] + p[2] * q[2]);
+  const double mag = r.q[0] * r.q[0] + r.q[1] * r.q[1] + r.q[2] * r.q[2] + r.q[3] * r.q[3];
+  if (std::abs(mag - 1.0) > 1.0e-10) {
+    if (mag != 0) {
+      const double s = 1.0 / std::sqrt(mag);
+      for (double& c : r.q) c *= s;
+    } else {
+      r.q[3] = 1;
+    }
+  }
+  return r;
+}
+
 // SOFA's Quat::slerp2: a.slerp2(b, t). Equal (or opposite) quaternions give
 // a; a half-angle whose sine is below 1e-3 gives the mean of a and b; no
 // shortest-path flip and no renormalisation.

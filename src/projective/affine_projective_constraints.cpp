@@ -4,11 +4,19 @@
 // velocities are multiplied by a 3×3 projector per DoF (n·nᵀ for a line,
 // I − n·nᵀ for a plane, 0 for a point) and positions are projected after
 // each step. Vec3d only, as the scenes use them.
+//
+// Point removals (SOFA's TopologySubsetIndices on `indices`): the positions
+// follow the renumbered list; so do the responses of the point and line
+// constraints (SOFA's point reads the list, its line rebuilds its matrix when
+// the state size changed), while the plane keeps projecting the DoF numbers of
+// init (SOFA's plane never rebuilds its matrix).
 #include <algorithm>
 #include <cmath>
 
 #include "core/registry.h"
+#include "core/node.h"
 #include "core/roles.h"
+#include "projective/subset_indices.h"
 
 namespace sinew {
 
@@ -34,6 +42,10 @@ class IndexedProjection : public ProjectiveConstraint {
       }
       active_.push_back(i);
     }
+    placed_ = active_;
+    if (renumbers_response()) follow_.bind(&indices, {&active_, &placed_});
+    else follow_.bind(&indices, {&placed_});
+    follow_.attach(topology.get() ? topology.get() : node()->get_mesh_topology_link());
     reinit();
   }
 
@@ -42,11 +54,16 @@ class IndexedProjection : public ProjectiveConstraint {
   void project(int id, const Mat3& P) {
     auto v = as_vec3(mstate->write(id));
     for (unsigned i : active_) {
+      if (i >= v.size()) continue;  // numbered before points were removed
       const Vec3 in = v[i];
       for (int r = 0; r < 3; ++r) v[i][r] = P(r, 0) * in[0] + P(r, 1) * in[1] + P(r, 2) * in[2];
     }
   }
-  std::vector<unsigned> active_;
+  // Whether the response follows point removals (else it keeps the DoF numbers of init).
+  virtual bool renumbers_response() const { return true; }
+  std::vector<unsigned> active_;  // DoFs whose responses are projected
+  std::vector<unsigned> placed_;  // DoFs whose positions are projected (the renumbered list)
+  SubsetIndicesFollower follow_;
   // SOFA's line and plane projections do not project constraint rows: they say so and keep them.
   void rows_not_projected(const ConstraintMatrix& J) {
     if (J.empty() || warned_rows_) return;
@@ -66,7 +83,8 @@ class PointProjectiveConstraint final : public IndexedProjection {
     if (fix_all.value()) {
       for (Vec3& x : v) x.setZero();
     } else {
-      for (unsigned i : active_) v[i].setZero();
+      for (unsigned i : active_)
+        if (i < v.size()) v[i].setZero();
     }
   }
   void project_velocity(int v, double) override { project_response(v); }
@@ -79,7 +97,8 @@ class PointProjectiveConstraint final : public IndexedProjection {
     if (fix_all.value()) {
       for (Vec3& q : p) q = point.value();
     } else {
-      for (unsigned i : active_) p[i] = point.value();
+      for (unsigned i : active_)
+        if (i < p.size()) p[i] = point.value();
     }
   }
   bool dirichlet_indices(std::vector<std::size_t>& out) override {
@@ -113,7 +132,8 @@ class LineProjectiveConstraint final : public IndexedProjection {
   void project_position(int x, double) override {
     auto p = as_vec3(mstate->write(x));
     const Vec3 n = direction.value(), o = origin.value();
-    for (unsigned i : active_) {
+    for (unsigned i : placed_) {
+      if (i >= p.size()) continue;
       const Vec3 d = p[i] - o;
       p[i] = o + n * (d[0] * n[0] + d[1] * n[1] + d[2] * n[2]);
     }
@@ -139,10 +159,12 @@ class PlaneProjectiveConstraint final : public IndexedProjection {
   void project_response(int dx) override { project(dx, P_); }
   void project_jacobian(ConstraintMatrix& J) override { rows_not_projected(J); }
   void project_velocity(int v, double) override { project(v, P_); }
+  bool renumbers_response() const override { return false; }
   void project_position(int x, double) override {
     auto p = as_vec3(mstate->write(x));
     const Vec3 n = normal.value(), o = origin.value();
-    for (unsigned i : active_) {
+    for (unsigned i : placed_) {
+      if (i >= p.size()) continue;
       const Vec3 d = p[i] - o;
       p[i] = p[i] - n * (d[0] * n[0] + d[1] * n[1] + d[2] * n[2]);
     }

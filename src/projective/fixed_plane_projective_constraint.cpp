@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "core/node.h"
 #include "core/registry.h"
 #include "projective/indices_in_state.h"
 
@@ -51,6 +52,8 @@ void FixedPlaneProjectiveConstraint::init() {
     if (added > 0 && !indices.parent() && !indices.producer()) indices.set(all);
   }
   keep_indices_in_state(*this, all, mstate->size(), active_);
+  follow_.bind(&indices, {&active_});
+  follow_.attach(topology.get() ? topology.get() : node()->get_mesh_topology_link());
 }
 
 void FixedPlaneProjectiveConstraint::project_response(int dx) {

@@ -16,11 +16,14 @@
 // - Rigid3d: only the translation is projected; its direction is a Rigid
 //   coordinate (centre, then quaternion) whose first 6 entries flag the
 //   assembled rows.
+// `indices` (with the selected points appended) follows point removals, as
+// SOFA's TopologySubsetIndices.
 #pragma once
 
 #include <vector>
 
 #include "core/roles.h"
+#include "projective/subset_indices.h"
 
 namespace sinew {
 
@@ -47,6 +50,7 @@ class FixedPlaneProjectiveConstraint final : public ProjectiveConstraint {
   std::vector<double> dir_;   // direction padded to the coordinate width
   int projected_ = 0;         // leading derivative components projected (3 for rigids)
   std::vector<unsigned> active_;
+  SubsetIndicesFollower follow_;
 };
 
 }  // namespace sinew

@@ -14,38 +14,8 @@ void FixedProjectiveConstraint::init() {
   ProjectiveConstraint::init();
   if (state() != ComponentState::valid) return;
   keep_indices_in_state(*this, indices.get(), mstate->size(), active_);
-  follow_.owner = this;
+  follow_.bind(&indices, {&active_});
   follow_.attach(topology.get() ? topology.get() : node()->get_mesh_topology_link());
-}
-
-namespace {
-void renumber_subset(std::vector<unsigned>& subset, unsigned removed, unsigned last) {
-  for (std::size_t k = 0; k < subset.size();) {
-    if (subset[k] == removed) {
-      subset[k] = subset.back();
-      subset.pop_back();
-    } else {
-      ++k;
-    }
-  }
-  if (removed != last)
-    for (unsigned& v : subset)
-      if (v == last) v = removed;
-}
-}  // namespace
-
-void FixedProjectiveConstraint::Follow::apply(const MeshTopologyBase& t, const TopologyChange& c) {
-  if (c.type != TopologyChangeType::points_removed) return;
-  std::vector<unsigned> idx = owner->indices.get();
-  if (owner->indices.parent()) owner->indices.set_parent(nullptr);
-  auto n = static_cast<unsigned>(t.nb_points());
-  for (unsigned r : c.indices) {
-    if (n == 0) break;
-    renumber_subset(idx, r, n - 1);
-    renumber_subset(owner->active_, r, n - 1);
-    --n;
-  }
-  owner->indices.set(std::move(idx));
 }
 
 void FixedProjectiveConstraint::zero(int id) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/roles.h"
+#include "projective/subset_indices.h"
 
 namespace sinew {
 
@@ -28,12 +29,8 @@ class FixedProjectiveConstraint final : public ProjectiveConstraint {
  private:
   void zero(int id);
   std::vector<unsigned> active_;
-  // Point removals (SOFA's TopologySubsetIndices): a removed point leaves the lists (its
-  // entry takes the list's last entry), then the last point's index becomes the slot's.
-  struct Follow final : TopologyHandler {
-    FixedProjectiveConstraint* owner = nullptr;
-    void apply(const MeshTopologyBase& t, const TopologyChange& c) override;
-  } follow_;
+  // Point removals (SOFA's TopologySubsetIndices): `indices` and the in-state subset follow.
+  SubsetIndicesFollower follow_;
 };
 
 }  // namespace sinew

@@ -50,6 +50,8 @@ void LinearMovementProjectiveConstraint::init() {
     if (i >= mstate->size())
       msg_warning("index " + std::to_string(i) + " is out of range (the state has " +
                   std::to_string(mstate->size()) + " DoFs); ignored");
+  follow_.bind(&indices);
+  follow_.attach(topology.get() ? topology.get() : node()->get_mesh_topology_link());
   x0_.clear();
   have_x0_ = false;
   prev_m_.assign(static_cast<std::size_t>(w_), 0.0);

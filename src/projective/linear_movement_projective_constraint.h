@@ -14,12 +14,15 @@
 //   response  dx_i = 0.
 // Before the first key and from the last key on it does nothing (the DoFs are
 // free again). Assembled systems always get Dirichlet rows for the indices,
-// as SOFA's applyConstraint.
+// as SOFA's applyConstraint. `indices` follows point removals (SOFA's
+// TopologySubsetIndices); x0 keeps the slots of the first projection, so a
+// renumbered DoF reads the x0 of its new index, as in SOFA.
 #pragma once
 
 #include <vector>
 
 #include "core/roles.h"
+#include "projective/subset_indices.h"
 
 namespace sinew {
 
@@ -65,6 +68,7 @@ class LinearMovementProjectiveConstraint final : public ProjectiveConstraint {
   std::vector<double> prev_m_, next_m_;
   double prev_t_ = 0.0, next_t_ = 0.0;
   bool found_next_ = false;
+  SubsetIndicesFollower follow_;
 };
 
 }  // namespace sinew
