@@ -174,3 +174,39 @@ TEST(TopologyIncision, ProcessorIncisesAlongAPolyline) {
     std::filesystem::remove(file);
   }
 }
+
+// SnapAlongPath: along y = 1.05 from (0.5, 1.05) to (1.6, 1.05) the path crosses the edge
+// (6, 11) and the diagonal (6, 12) both 0.05 from vertex 6 = (1, 1) (< epsilonSnapPath 0.1): the
+// two crossings become vertex 6, which then moves to their mean (1.025, 1.05) between the path's
+// new points 25 (0.5, 1.05) and 26 (1.6, 1.05). Path triangle 8, point 6, triangle 10: 2 new points,
+// 3 + 3 triangles for the 2 split ones (36), 62 edges; the incision duplicates 6 (point 27):
+// 28 points, 64 edges, mass and area unchanged (the move stays in the plane).
+TEST(TopologyIncision, PathSnapsOntoACloseVertexWhichMoves) {
+  auto s = load(grid_scene());
+  incision::Mesh m = mesh_of(*s.root);
+  Vec3 a(0.5, 1.05, 0), b(1.6, 1.05, 0);
+  unsigned ta = incision::find_element_index(m, a, incision::kInvalid);
+  unsigned tb = incision::find_element_index(m, b, incision::kInvalid);
+  ASSERT_EQ(ta, 8u);
+  ASSERT_EQ(tb, 10u);
+  incision::Path path;
+  std::string why;
+  ASSERT_TRUE(incision::intersected_objects_list(m, incision::kInvalid, a, b, ta, tb, path, &why)) << why;
+  ASSERT_EQ(path.kinds.size(), 4u);
+  std::vector<unsigned> new_edges;
+  ASSERT_EQ(incision::split_along_path(m, incision::kInvalid, a, incision::kInvalid, b, path, new_edges, 0.1, 0.0,
+                                       &why), 2) << why;
+  ASSERT_EQ(path.kinds.size(), 3u);
+  EXPECT_EQ(path.kinds[1], incision::Elem::point);
+  EXPECT_EQ(path.indices[1], 6u);
+  EXPECT_EQ(new_edges.size(), 2u);
+  const auto& x = get<MechanicalObject>(*s.root, "dofs")->read(kPosition);
+  EXPECT_NEAR(x[3 * 6], 1.025, 1e-15);
+  EXPECT_NEAR(x[3 * 6 + 1], 1.05, 1e-15);
+  EXPECT_EQ(x[3 * 6 + 2], 0.0);
+  std::vector<unsigned> new_points, end_points;
+  bool border = false;
+  ASSERT_TRUE(incision::incise_along_edge_list(m, new_edges, new_points, end_points, border, &why)) << why;
+  EXPECT_EQ(new_points, (std::vector<unsigned>{27}));
+  expect_cut(*s.root, 28, 36, 64, 1);
+}

@@ -17,8 +17,8 @@
 // Numbering (new points, edges, triangles, removal order) follows SOFA's, since the
 // states, masses and force fields that follow depend on it.
 //
-// Not done (SOFA does it): the snapping of path points onto close vertices
-// (SnapAlongPath, epsilonSnapPath: it moves mesh vertices); the caller says so.
+// The snapped vertices move in the states only (as SOFA's movePointsProcess); the masses do not
+// follow the move (see PointSetTopologyModifier::move_points).
 #pragma once
 
 #include <string>
@@ -51,6 +51,8 @@ struct Mesh {
 // SOFA's computeTriangleBarycoefs (compute3PointsBarycoefs on the current positions): (1/3, 1/3,
 // 1/3) for a flat triangle.
 Vec3 triangle_barycoefs(const Mesh& m, unsigned tri, const Vec3& p);
+// The same for the triangle of points i0, i1, i2 (SOFA's compute3PointsBarycoefs).
+Vec3 barycoefs_of_points(const Mesh& m, const Vec3& p, unsigned i0, unsigned i1, unsigned i2);
 // SOFA's isPointInsideTriangle without the neighbour search: strictly inside up to -1e-12.
 bool is_point_inside_triangle(const Mesh& m, unsigned tri, const Vec3& p);
 // TopologicalChangeProcessor::findElementIndex: the triangle holding `p` (AABB then inside test;
@@ -68,14 +70,19 @@ struct Path {
 bool intersected_objects_list(const Mesh& m, unsigned last_point, const Vec3& a, const Vec3& b, unsigned& tri_a,
                               unsigned& tri_b, Path& path, std::string* why);
 
+// SOFA's SnapAlongPath: the vertices (not on the border) that two or more path objects lie
+// within `eps` of replace them in the path; `points2snap` gets one row per such vertex: (vertex,
+// x, y, z of the mean position it will move to).
+void snap_along_path(const Mesh& m, Path& path, std::vector<std::vector<double>>& points2snap, double eps);
+
 // SOFA's SnapBorderPath: the ends of `path` that are triangles (not `pa`/`pb` when `snapped`
 // lists them) snap onto a close vertex or border edge (epsilon: epsilonSnapBorder). May shorten
 // the path and move `a`.
 void snap_border_path(const Mesh& m, unsigned pa, Vec3& a, unsigned pb, Vec3& b, Path& path,
                       const std::vector<unsigned>& snapped, double eps);
 
-// SOFA's SplitAlongPath: snaps the ends (snap_border_path when `eps_border` ≠ 0; the snapping
-// along the path, `eps_path`, is not done), then splits. `new_edges`: the edges making the path,
+// SOFA's SplitAlongPath: snaps the path (snap_along_path when `eps_path` ≠ 0, then
+// snap_border_path when `eps_border` ≠ 0), splits, then moves the snapped vertices onto the path. `new_edges`: the edges making the path,
 // in path order. Returns the number of points the path created, or -1 on an inconsistent path
 // (`why`).
 int split_along_path(Mesh& m, unsigned ind_a, Vec3& a, unsigned ind_b, Vec3& b, Path& path,

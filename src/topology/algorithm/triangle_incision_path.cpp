@@ -196,7 +196,11 @@ bool intersected_points_list(const Mesh& m, unsigned last_point, const Vec3& a, 
 
 Vec3 triangle_barycoefs(const Mesh& m, unsigned tri, const Vec3& p) {
   const Triangle& t = m.topology->triangles()[tri];
-  const Vec3 a = m.position(t[0]), b = m.position(t[1]), c = m.position(t[2]);
+  return barycoefs_of_points(m, p, t[0], t[1], t[2]);
+}
+
+Vec3 barycoefs_of_points(const Mesh& m, const Vec3& p, unsigned i0, unsigned i1, unsigned i2) {
+  const Vec3 a = m.position(i0), b = m.position(i1), c = m.position(i2);
   const Vec3 n = (b - a).cross(c - a);
   const double norm2 = n.dot(n);
   if (norm2 < 1e-12) {

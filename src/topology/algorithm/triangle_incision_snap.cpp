@@ -1,9 +1,14 @@
-// Snapping the ends of an incision path (SOFA's SnapBorderPath, triangle_incision.h): an end
+// Snapping an incision path (triangle_incision.h). SOFA's SnapAlongPath: a mesh vertex the path
+// passes within epsilonSnapPath of (on two or more of its objects) replaces them, and later moves
+// to their mean position, instead of the path making slivers around it. SOFA's SnapBorderPath: an end
 // inside a triangle close to one of its edges (a coefficient below epsilonSnapBorder) moves onto
 // that triangle's vertex when the edge is inner and a coefficient exceeds 1 − epsilon, or onto
 // the edge itself (projection) when the edge is on the border — so that a cut ending near the
 // border reaches it and one ending near a vertex ends on it instead of making a sliver.
 #include <Eigen/Geometry>  // cross products
+
+#include <algorithm>
+#include <map>
 
 #include "core/roles.h"
 #include "topology/algorithm/triangle_incision.h"
@@ -98,6 +103,83 @@ void snap_end(const Mesh& m, bool back, Vec3& a, const Vec3& end_point, Path& pa
 }
 
 }  // namespace
+
+void snap_along_path(const Mesh& m, Path& path, std::vector<std::vector<double>>& points2snap, double eps) {
+  const auto& topo = *m.topology;
+  const auto& tris = topo.triangles();
+  const auto& edges = topo.edges();
+  // 1. The vertices the path passes close to: an edge crossing within eps of an end, an end
+  //    triangle with a coefficient above 1 − eps.
+  std::map<unsigned, std::vector<unsigned>> near;  // vertex → path positions close to it
+  std::map<unsigned, Vec3> sum;                    // vertex → sum of those positions
+  for (std::size_t i = 0; i < path.kinds.size(); ++i) {
+    const Vec3& c = path.barycoefs[i];
+    if (path.kinds[i] == Elem::edge) {
+      if (c[0] < eps) near[edges[path.indices[i]][0]];
+      else if (c[0] > 1.0 - eps) near[edges[path.indices[i]][1]];
+    } else if (path.kinds[i] == Elem::triangle) {
+      for (int j = 0; j < 3; ++j)
+        if (c[j] > 1.0 - eps) {
+          near[tris[path.indices[i]][j]];
+          break;
+        }
+    }
+  }
+  if (near.empty()) return;
+  for (auto& [v, s] : near) sum[v] = Vec3::Zero();
+  // 2. Every path object touching such a vertex (a point on it, an edge having it, an end
+  //    triangle close to it), with its position.
+  for (std::size_t i = 0; i < path.kinds.size(); ++i) {
+    const unsigned id = path.indices[i];
+    if (path.kinds[i] == Elem::point) {
+      if (near.count(id)) {
+        near[id].push_back(static_cast<unsigned>(i));
+        sum[id] += m.position(id);
+      }
+    } else if (path.kinds[i] == Elem::edge) {
+      const Edge& e = edges[id];
+      for (int k = 0; k < 2; ++k)
+        if (near.count(e[k])) {
+          near[e[k]].push_back(static_cast<unsigned>(i));
+          sum[e[k]] += m.position(e[0]) * (1 - path.barycoefs[i][0]) + m.position(e[1]) * path.barycoefs[i][0];
+          break;
+        }
+    } else {
+      const Triangle& t = tris[id];
+      for (int k = 0; k < 3; ++k)
+        if (near.count(t[k]) && path.barycoefs[i][k] > 1 - eps) {
+          near[t[k]].push_back(static_cast<unsigned>(i));
+          const Vec3& c = path.barycoefs[i];
+          sum[t[k]] += m.position(t[0]) * c[0] + m.position(t[1]) * c[1] + m.position(t[2]) * c[2];
+          break;
+        }
+    }
+  }
+  // 3. Border vertices are not snapped (moving them would change the outline).
+  for (auto it = near.begin(); it != near.end();) {
+    bool border = false;
+    for (unsigned e : topo.edges_around_vertex()[it->first])
+      if (topo.triangles_around_edge()[e].size() == 1) {
+        border = true;
+        break;
+      }
+    it = border ? near.erase(it) : std::next(it);
+  }
+  // 4. A vertex close to two or more path objects replaces them (the first becomes the vertex,
+  //    the others leave the path) and will move to their mean position; one alone is left.
+  std::vector<unsigned> drop;
+  for (const auto& [v, at] : near) {
+    if (at.size() == 1) continue;  // border case or re-incision
+    const Vec3 mean = sum[v] / static_cast<double>(at.size());
+    points2snap.push_back({static_cast<double>(v), mean[0], mean[1], mean[2]});
+    path.kinds[at[0]] = Elem::point;
+    path.indices[at[0]] = v;
+    path.barycoefs[at[0]][0] = -1.0;
+    drop.insert(drop.end(), at.begin() + 1, at.end());
+  }
+  std::sort(drop.begin(), drop.end());
+  for (auto it = drop.rbegin(); it != drop.rend(); ++it) erase_at(path, *it);
+}
 
 void snap_border_path(const Mesh& m, unsigned pa, Vec3& a, unsigned pb, Vec3& b, Path& path,
                       const std::vector<unsigned>& snapped, double eps) {

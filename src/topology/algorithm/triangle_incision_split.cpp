@@ -65,8 +65,13 @@ struct Source {
 int split_along_path(Mesh& m, unsigned ind_a, Vec3& a, unsigned ind_b, Vec3& b, Path& path,
                      std::vector<unsigned>& new_edges, double eps_path, double eps_border, std::string* why) {
   if (path.indices.empty()) return 0;
-  (void)eps_path;  // SnapAlongPath not done: no point to snap
-  if (eps_border != 0.0) snap_border_path(m, ind_a, a, ind_b, b, path, {}, eps_border);
+  std::vector<std::vector<double>> snap;  // SOFA's points2Snap rows: vertex, x, y, z, ancestors…
+  if (eps_path != 0.0) snap_along_path(m, path, snap, eps_path);
+  if (eps_border != 0.0) {
+    std::vector<unsigned> snapped;
+    for (const auto& row : snap) snapped.push_back(static_cast<unsigned>(row[0]));
+    snap_border_path(m, ind_a, a, ind_b, b, path, snapped, eps_border);
+  }
   const std::size_t n = path.indices.size();
   if (n == 0) return 0;
   MeshTopologyBase& topo = *m.topology;
@@ -85,6 +90,27 @@ int split_along_path(Mesh& m, unsigned ind_a, Vec3& a, unsigned ind_b, Vec3& b, 
     switch (path.kinds[i]) {
       case Elem::point:
         path_points.push_back(id);
+        // A snapped vertex moves between the path points around it (the new points just before
+        // and after it, or the old points when those are path points too); at an end of the path
+        // (border snap) between up to three of its neighbours.
+        for (auto& row : snap) {
+          if (static_cast<unsigned>(row[0]) != id) continue;
+          if (i == 0 || i == n - 1) {
+            int found = 0;
+            for (unsigned e : topo.edges_around_vertex()[id]) {
+              const Edge& ed = edges[e];
+              row.push_back(ed[0] == id ? ed[1] : ed[0]);
+              if (++found == 3) break;
+            }
+            if (found != 3 && why) *why += "snapping vertex " + std::to_string(id) + ": fewer than 3 neighbours; ";
+            break;
+          }
+          row.push_back(next_point - 1.0);
+          row.push_back(next_point);
+          if (path.kinds[i - 1] == Elem::point) row[4] = path.indices[i - 1];
+          if (path.kinds[i + 1] == Elem::point) row[5] = path.indices[i + 1];
+          break;
+        }
         break;
       case Elem::edge:
         p_ancestors.push_back({edges[id][0], edges[id][1]});
@@ -248,6 +274,32 @@ int split_along_path(Mesh& m, unsigned ind_a, Vec3& a, unsigned ind_b, Vec3& b, 
   std::vector<std::vector<double>> tri_coefs(new_tris.size(), std::vector<double>{1.0});
   m.modifier->add_triangles(new_tris, tri_ancestors, tri_coefs);
   m.modifier->remove_triangles(removed, true, true);
+  // 4. The snapped vertices move onto the path: coefficients of their mean position with respect
+  //    to their ancestors (distances along the segment for two, barycentric for three).
+  if (!snap.empty()) {
+    std::vector<unsigned> ids;
+    std::vector<std::vector<unsigned>> anc;
+    std::vector<std::vector<double>> coefs;
+    for (const auto& row : snap) {
+      if (row.size() < 6) continue;  // SOFA would read past the row
+      const Vec3 p(row[1], row[2], row[3]);
+      const unsigned a0 = static_cast<unsigned>(row[4]), a1 = static_cast<unsigned>(row[5]);
+      ids.push_back(static_cast<unsigned>(row[0]));
+      if (row.size() == 7) {
+        const unsigned a2 = static_cast<unsigned>(row[6]);
+        anc.push_back({a0, a1, a2});
+        const Vec3 c = barycoefs_of_points(m, p, a0, a1, a2);
+        coefs.push_back({c[0], c[1], c[2]});
+      } else {
+        anc.push_back({a0, a1});
+        const Vec3 q0 = m.position(a0), q1 = m.position(a1);
+        const double d = (q1 - q0).norm();
+        if (d < 1e-6) coefs.push_back({0.5, 0.5});  // SOFA's EQUALITY_THRESHOLD
+        else coefs.push_back({(p - q1).norm() / d, (p - q0).norm() / d});
+      }
+    }
+    if (!ids.empty()) m.modifier->move_points(ids, anc, coefs);
+  }
   m.modifier->notify_ending_event();
   // The edges joining consecutive path points: the path, now made of edges.
   for (std::size_t i = 0; i + 1 < path_points.size(); ++i) {

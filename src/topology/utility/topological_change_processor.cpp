@@ -77,11 +77,8 @@ void TopologicalChangeProcessor::init() {
       if (!check_incise(i, &why)) {
         msg_error(where(i) + why);
         ok = false;
-      } else if (incisions_++ == 0 && (!save_indices_at_init.value() || epsilon_snap_path.value() != 0.0)) {
-        // SOFA moves a mesh vertex that the path passes close to onto the path (SnapAlongPath);
-        // not done here (without saved indices SOFA always uses 0.1).
-        msg_warning(where(i) + "INCISE=: the snapping of incision paths onto close vertices (epsilonSnapPath) is "
-                    "not implemented; paths are cut where they fall");
+      } else {
+        ++incisions_;
       }
     } else if (tok == "ADD=" && is_points_in_triangle(lines_[i])) {
       std::string why;

@@ -17,7 +17,7 @@
 // `INCISE= n` with its line of n points ("triangle x y z" or "x y z" each) cuts
 // the triangle surface along the polyline they make (SOFA's incision: split along
 // the path, then the path's points duplicated), with saveIndicesAtInit as SOFA.
-// The snapping of the path (epsilonSnapPath, epsilonSnapBorder) is not done.
+// The path snaps onto close vertices and the border (epsilonSnapPath, epsilonSnapBorder).
 // Refused at init with an error naming file:line: ADD= lines of other kinds
 // (Quad, Hexahedron) or malformed (count, vertex line, missing modifier), and
 // malformed INCISE= blocks.
