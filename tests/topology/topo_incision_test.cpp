@@ -11,7 +11,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <map>
+#include <random>
 #include <set>
 #include <sstream>
 
@@ -19,6 +21,7 @@
 #include "state/mechanical_object.h"
 #include "test_scene.h"
 #include "topology/algorithm/triangle_incision.h"
+#include "topology/dynamic/element_removal.h"
 #include "topology/dynamic/triangle_set_topology_container.h"
 #include "topology/dynamic/triangle_set_topology_modifier.h"
 #include "topology/utility/topological_change_processor.h"
@@ -209,4 +212,65 @@ TEST(TopologyIncision, PathSnapsOntoACloseVertexWhichMoves) {
   ASSERT_TRUE(incision::incise_along_edge_list(m, new_edges, new_points, end_points, border, &why)) << why;
   EXPECT_EQ(new_points, (std::vector<unsigned>{27}));
   expect_cut(*s.root, 28, 36, 64, 1);
+}
+
+// Soak: 300 random segments cut one after the other across the grid (ends anywhere, the same or
+// other triangles, crossing earlier cuts, on vertices now and then), with the border snapping.
+// Refused paths leave the mesh as it was; after every cut the arrays and shells agree, no edge has
+// more than two triangles, the state and the mass have one entry per point. Without the snapping
+// along the path every triangle keeps its orientation and the area is kept; with it (second run)
+// a snapped vertex moves to SOFA's distance-weighted point between its path neighbours, which
+// may fold a small neighbour triangle (as in SOFA), so only consistency is checked then.
+TEST(TopologyIncision, SoakRandomCutsKeepTheMeshConsistent) {
+  for (const double eps_path : {0.0, 0.1}) {
+    auto s = load(grid_scene());
+    incision::Mesh m = mesh_of(*s.root);
+    auto& topo = *get<TriangleSetTopologyContainer>(*s.root, "topo");
+    auto& mo = *get<MechanicalObject>(*s.root, "dofs");
+    auto& mass = *get<DiagonalMass>(*s.root, "mass");
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(0.05, 3.95);
+    int cut = 0, refused = 0;
+    for (int k = 0; k < 300; ++k) {
+      Vec3 a(u(rng), u(rng), 0), b(u(rng), u(rng), 0);
+      if (k % 7 == 0) b = Vec3(std::round(b[0]), std::round(b[1]), 0);  // on a vertex now and then
+      unsigned ta = incision::find_element_index(m, a, incision::kInvalid);
+      unsigned tb = incision::find_element_index(m, b, incision::kInvalid);
+      incision::Path path;
+      std::string why;
+      if (ta == incision::kInvalid || tb == incision::kInvalid ||
+          !incision::intersected_objects_list(m, incision::kInvalid, a, b, ta, tb, path, &why)) {
+        ++refused;
+        continue;
+      }
+      std::vector<unsigned> new_edges, new_points, end_points;
+      bool border = false;
+      if (incision::split_along_path(m, incision::kInvalid, a, incision::kInvalid, b, path, new_edges, eps_path,
+                                     0.25, &why) >= 0 &&
+          incision::incise_along_edge_list(m, new_edges, new_points, end_points, border, &why))
+        ++cut;
+      else
+        ++refused;
+      ASSERT_EQ(topo::check_dynamic_mesh(topo.begin_edit()), "") << "cut " << k;
+      ASSERT_EQ(mo.size(), topo.nb_points()) << "cut " << k;
+      ASSERT_EQ(mass.masses().size(), topo.nb_points()) << "cut " << k;
+      for (const auto& around : topo.triangles_around_edge()) ASSERT_LE(around.size(), 2u) << "cut " << k;
+      if (eps_path != 0.0) continue;
+      const auto& x = mo.read(kRestPosition);
+      double area = 0;
+      for (const Triangle& t : topo.triangles()) {
+        const double z = (x[3 * t[1]] - x[3 * t[0]]) * (x[3 * t[2] + 1] - x[3 * t[0] + 1]) -
+                         (x[3 * t[1] + 1] - x[3 * t[0] + 1]) * (x[3 * t[2]] - x[3 * t[0]]);
+        ASSERT_GT(z, 0.0) << "cut " << k;
+        area += z / 2;
+      }
+      ASSERT_NEAR(area, 16.0, 1e-9) << "cut " << k;
+      double total = 0;
+      for (double w : mass.masses()) total += w;
+      ASSERT_NEAR(total, 1.5 * 16.0, 1e-9) << "cut " << k;
+    }
+    EXPECT_GT(cut, 20);
+    std::printf("epsilonSnapPath %g: %d cuts made, %d refused; %zu points, %zu triangles\n", eps_path, cut, refused,
+                topo.nb_points(), topo.triangles().size());
+  }
 }
