@@ -120,7 +120,9 @@ int split_along_path(Mesh& m, unsigned ind_a, Vec3& a, unsigned ind_b, Vec3& b, 
         break;
       case Elem::triangle:
         p_ancestors.push_back({tris[id][0], tris[id][1], tris[id][2]});
-        p_coefs.push_back({c[0], c[1], c[2]});
+        // SOFA adds these points from their ancestor element and local coordinates (c1, c2): the
+        // first weight is recomputed as 1 − c1 − c2 (not c0), which rounds differently.
+        p_coefs.push_back({1 - c[1] - c[2], c[1], c[2]});
         sources.push_back({Elem::triangle, id});
         path_points.push_back(next_point++);
         break;
