@@ -82,9 +82,9 @@ void snap_border_path(const Mesh& m, unsigned pa, Vec3& a, unsigned pb, Vec3& b,
                       const std::vector<unsigned>& snapped, double eps);
 
 // SOFA's SplitAlongPath: snaps the path (snap_along_path when `eps_path` ≠ 0, then
-// snap_border_path when `eps_border` ≠ 0), splits, then moves the snapped vertices onto the path. `new_edges`: the edges making the path,
-// in path order. Returns the number of points the path created, or -1 on an inconsistent path
-// (`why`).
+// snap_border_path when `eps_border` ≠ 0), splits, then moves the snapped vertices onto the path.
+// `new_edges`: the edges making the path, in path order. Returns the number of points the path
+// created, or -1 on an inconsistent path (`why`).
 int split_along_path(Mesh& m, unsigned ind_a, Vec3& a, unsigned ind_b, Vec3& b, Path& path,
                      std::vector<unsigned>& new_edges, double eps_path, double eps_border, std::string* why);
 

@@ -119,7 +119,8 @@ bool intersected_points_list(const Mesh& m, unsigned last_point, const Vec3& a, 
       last_point < topo.triangles_around_vertex().size()) {
     const std::vector<unsigned> shell = topo.triangles_around_vertex()[last_point];
     for (unsigned s : shell) {
-      if (s != t_current) intersected = segment_triangle_intersection(m, false, p_current, b, s, indices, coord_t, coord_k);
+      if (s != t_current)
+        intersected = segment_triangle_intersection(m, false, p_current, b, s, indices, coord_t, coord_k);
       if (intersected && indices[0] != last_point && indices[1] != last_point) {
         t_current = s;
         tri_a = s;

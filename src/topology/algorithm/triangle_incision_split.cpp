@@ -159,7 +159,8 @@ int split_along_path(Mesh& m, unsigned ind_a, Vec3& a, unsigned ind_b, Vec3& b, 
                     " share no edge");
     } else if (k0 == Elem::point && k1 == Elem::edge) {
       unsigned tid;
-      if (!triangle_of_edge_with(o1, o0, tid)) return fail("no triangle of edge " + std::to_string(o1) + " holds point " + std::to_string(o0));
+      if (!triangle_of_edge_with(o1, o0, tid))
+        return fail("no triangle of edge " + std::to_string(o1) + " holds point " + std::to_string(o0));
       const Triangle tri = tris[tid];
       const int v = vertex_in_triangle(tri, o0);
       add(tri[v], path_points[i + 1], tri[(v + 2) % 3], tid);
@@ -173,7 +174,8 @@ int split_along_path(Mesh& m, unsigned ind_a, Vec3& a, unsigned ind_b, Vec3& b, 
       removed.push_back(o1);
     } else if (k0 == Elem::edge && k1 == Elem::point) {
       unsigned tid;
-      if (!triangle_of_edge_with(o0, o1, tid)) return fail("no triangle of edge " + std::to_string(o0) + " holds point " + std::to_string(o1));
+      if (!triangle_of_edge_with(o0, o1, tid))
+        return fail("no triangle of edge " + std::to_string(o0) + " holds point " + std::to_string(o1));
       const Triangle tri = tris[tid];
       const int v = vertex_in_triangle(tri, o1);
       const unsigned p1 = path_points[i];
@@ -184,8 +186,9 @@ int split_along_path(Mesh& m, unsigned ind_a, Vec3& a, unsigned ind_b, Vec3& b, 
       // The triangle holding both edges becomes the corner triangle plus a quad split by Delaunay.
       const unsigned p1 = path_points[i], p2 = path_points[i + 1];
       const Edge e1 = edges[o0], e2 = edges[o1];
-      const Vec3 pos1 = m.position(e1[0]) * (1 - path.barycoefs[i][0]) + m.position(e1[1]) * path.barycoefs[i][0];
-      const Vec3 pos2 = m.position(e2[0]) * (1 - path.barycoefs[i + 1][0]) + m.position(e2[1]) * path.barycoefs[i + 1][0];
+      const double c1 = path.barycoefs[i][0], c2 = path.barycoefs[i + 1][0];
+      const Vec3 pos1 = m.position(e1[0]) * (1 - c1) + m.position(e1[1]) * c1;
+      const Vec3 pos2 = m.position(e2[0]) * (1 - c2) + m.position(e2[1]) * c2;
       unsigned tid = kInvalid;
       bool found = false;
       for (unsigned s : topo.triangles_around_edge()[o0]) {
@@ -195,7 +198,8 @@ int split_along_path(Mesh& m, unsigned ind_a, Vec3& a, unsigned ind_b, Vec3& b, 
           break;
         }
       }
-      if (!found) return fail("edges " + std::to_string(o0) + " and " + std::to_string(o1) + " of the path share no triangle");
+      if (!found)
+        return fail("edges " + std::to_string(o0) + " and " + std::to_string(o1) + " of the path share no triangle");
       const Triangle tri = tris[tid];
       const int corner_in_e1 = (e1[0] == e2[0] || e1[0] == e2[1]) ? 0 : 1;
       const int v = vertex_in_triangle(tri, e1[corner_in_e1]);
@@ -307,7 +311,8 @@ int split_along_path(Mesh& m, unsigned ind_a, Vec3& a, unsigned ind_b, Vec3& b, 
   for (std::size_t i = 0; i + 1 < path_points.size(); ++i) {
     const unsigned e = edge_index(topo, path_points[i], path_points[i + 1]);
     if (e != kInvalid) new_edges.push_back(e);
-    else if (why) *why += "edge " + std::to_string(path_points[i]) + " - " + std::to_string(path_points[i + 1]) + " not found; ";
+    else if (why)
+      *why += "edge " + std::to_string(path_points[i]) + " - " + std::to_string(path_points[i + 1]) + " not found; ";
   }
   return static_cast<int>(sources.size());
 }
