@@ -149,18 +149,23 @@ void TopologicalChangeProcessor::incise_saved(double time) {
   for (auto& x : saved_)
     if (std::fabs(time - x.time) < 1e-10) s = &x;
   if (!s) {
-    std::string times;
-    for (const auto& x : saved_) times += std::to_string(x.time) + " ";
     // SOFA logs this as an error and runs on; here an error would stop the run, so it is a warning.
     // It happens in SOFA's own scene: accumulated time drifts past T= by one step (2.1 is first
     // due at 2.11), and the saved times are matched within 1e-10.
-    msg_warning("no saved incision at time " + std::to_string(time) + " (saved: " + times +
-                "); none made (SOFA: error, simulation goes on)");
+    const SavedIncision* nearest = nullptr;
+    for (const auto& x : saved_)
+      if (!nearest || std::fabs(x.time - time) < std::fabs(nearest->time - time)) nearest = &x;
+    std::ostringstream w;
+    w.precision(17);
+    w << "no saved incision at time " << time << " (" << saved_.size() << " saved";
+    if (nearest) w << ", nearest T= " << nearest->time << " (" << filename.value() << ":" << nearest->line + 1 << ")";
+    w << "); none made (SOFA: error, simulation goes on)";
+    msg_warning(w.str());
     return;
   }
   for (auto& x : saved_) compute_coordinates(m, x);
   if (s->triangles.empty()) {
-    msg_error(where(s->line) + "this incision has no point; none made");
+    msg_warning(where(s->line) + "this incision has no point (dropped at init); none made");
     return;
   }
   incise_points(m, s->line, s->triangles, s->coordinates, s);
