@@ -239,18 +239,26 @@ TEST(TopologicalChangeProcessor, UseDataInputsRemovesPointsAndSpringsFollow) {
 }
 
 // INCISE= blocks: malformed ones are refused at init naming the line; well-formed ones (both
-// forms) are accepted with a warning and, the incision not being written, reported as an error
-// when due, the mesh left unchanged.
-TEST(TopologicalChangeProcessor, InciseBlocksAreCheckedAndReportedWhenDue) {
+// forms) cut when due. The unit square's two triangles (0 1 2) (1 3 2), cut from (0.2, 0.2) to
+// (0.8, 0.6): triangle, diagonal (1, 2), triangle. Without saved indices SOFA snaps the ends with
+// epsilonSnapBorder 0.25: (0.2, 0.2) has coefficient 0.2 on vertex 1, so it moves onto the
+// opposite border edge x = 0, and (0.8, 0.6) (0.2 on vertex 2) onto x = 1: the cut crosses the
+// square (3 edge points, 6 triangles, 12 edges) and, both ends on the border, every path point is
+// duplicated: 10 points, 14 edges, two pieces. With saved indices and epsilonSnapBorder 0 the ends
+// stay inside: 3 new points, 8 triangles, 14 edges, then only the diagonal's point duplicated: 8
+// points, 16 edges. A point outside the mesh or both ends in one triangle: a warning naming the
+// line, nothing cut.
+TEST(TopologicalChangeProcessor, InciseBlocksAreCheckedAndApplied) {
   sinew::test::TempDir dir;
   const char* scene = R"(<Node>
+      <MechanicalObject name="dofs" position="0 0 0  1 0 0  0 1 0  1 1 0"/>
       <TriangleSetTopologyContainer name="topo" position="0 0 0  1 0 0  0 1 0  1 1 0" triangles="0 1 2  1 3 2"/>
       <TriangleSetTopologyModifier name="mod"/>
       <TopologicalChangeProcessor name="proc" filename="FILE"/>
     </Node>)";
-  auto with = [&](const std::string& file) {
+  auto with = [&](const std::string& file, const std::string& attributes = "") {
     std::string xml = scene;
-    xml.replace(xml.find("FILE"), 4, file);
+    xml.replace(xml.find("FILE\""), 5, file + "\" " + attributes);
     return xml;
   };
   {
@@ -261,18 +269,33 @@ TEST(TopologicalChangeProcessor, InciseBlocksAreCheckedAndReportedWhenDue) {
                                           "bad.txt:2: INCISE= 2: line 3 needs 6 (coordinates) or 8 (triangle and "
                                           "coordinates) numbers, has 4"));
   }
-  const std::string file =
-      dir.write("ok.txt", "T= 0.1\n\tINCISE= 2\n0.2 0.2 0 0.8 0.6 0\nT= 0.2\n\tINCISE= 2\n0 0.2 0.2 0 1 0.8 0.6 0\n");
-  auto s = load(with(file));
-  EXPECT_TRUE(sinew::test::any_contains(sinew::test::messages(s.root->diagnostics(), Severity::warning),
-                                        "ok.txt:2: INCISE= (incision along a path) is not supported yet"));
-  auto& proc = *get<TopologicalChangeProcessor>(*s.root, "proc");
-  auto& topo = *get<TriangleSetTopologyContainer>(*s.root, "topo");
-  proc.process(0.1);
-  proc.process(0.2);
-  const auto errors = sinew::test::messages(s.root->diagnostics(), Severity::error);
-  EXPECT_TRUE(sinew::test::any_contains(errors, "ok.txt:2: INCISE= is not supported yet: no incision made"));
-  EXPECT_TRUE(sinew::test::any_contains(errors, "ok.txt:5: INCISE= is not supported yet: no incision made"));
-  EXPECT_EQ(topo.triangles().size(), 2u);
-  EXPECT_EQ(topo.nb_points(), 4u);
+  struct Case {
+    const char* line;
+    const char* attributes;
+    std::size_t triangles, points, edges;
+  };
+  for (const Case& c : {Case{"0.2 0.2 0 0.8 0.6 0", "", 6, 10, 14}, Case{"0 0.2 0.2 0 1 0.8 0.6 0", "", 6, 10, 14},
+                        Case{"0.2 0.2 0 0.8 0.6 0", "saveIndicesAtInit=\"true\" epsilonSnapBorder=\"0\"", 8, 8, 16}}) {
+    const std::string file = dir.write("ok.txt", std::string("T= 0.1\n\tINCISE= 2\n") + c.line + "\n");
+    auto s = load(with(file, c.attributes));
+    auto& topo = *get<TriangleSetTopologyContainer>(*s.root, "topo");
+    animate(*s.root, 0.1);  // T= 0.1 is due at the second step (time 0.1, matched exactly)
+    animate(*s.root, 0.1);
+    EXPECT_TRUE(sinew::test::messages(s.root->diagnostics(), Severity::error).empty()) << c.line;
+    EXPECT_EQ(topo.triangles().size(), c.triangles) << c.line;
+    EXPECT_EQ(topo.nb_points(), c.points) << c.line;
+    EXPECT_EQ(topo.edges().size(), c.edges) << c.line;
+    EXPECT_EQ(get<MechanicalObject>(*s.root, "dofs")->size(), c.points) << c.line;
+  }
+  for (const char* line : {"0.2 0.2 0 3 3 0", "0.1 0.1 0 0.2 0.3 0"}) {
+    const std::string file = dir.write("out.txt", std::string("T= 0.1\n\tINCISE= 2\n") + line + "\n");
+    auto s = load(with(file));
+    get<TopologicalChangeProcessor>(*s.root, "proc")->process(0.1);
+    const auto warnings = sinew::test::messages(s.root->diagnostics(), Severity::warning);
+    EXPECT_TRUE(sinew::test::any_contains(warnings, "out.txt:2: invalid incision path from point 0 to point 1"))
+        << line;
+    auto& topo = *get<TriangleSetTopologyContainer>(*s.root, "topo");
+    EXPECT_EQ(topo.triangles().size(), 2u);
+    EXPECT_EQ(topo.nb_points(), 4u);
+  }
 }

@@ -115,6 +115,58 @@ bool PointSetTopologyModifier::add_points(unsigned n, std::vector<std::vector<un
   return true;
 }
 
+namespace {
+// SOFA's movePointsProcess on the states (POINTSMOVED state change): each moved DoF, in every
+// vector, becomes the weighted sum of its ancestors'. MechanicalState has no in-place move, so the
+// new values are appended (add_points interpolates every allocated vector) and the moved slots
+// removed: removal moves the last DoF into each slot in decreasing order, so appending in
+// increasing slot order puts each value in its slot.
+void visit_state_move(Node& n, bool root, MeshTopologyBase& source, const std::vector<unsigned>& increasing,
+                      const std::vector<std::vector<unsigned>>& ancestors,
+                      const std::vector<std::vector<double>>& coefficients) {
+  if (!root && n.mechanical_mapping && !n.mechanical_mapping->same_topology()) return;
+  if (n.mechanical_state && n.get_mesh_topology_link() == &source) {
+    n.mechanical_state->add_points(increasing.size(), ancestors, coefficients);
+    n.mechanical_state->remove_points(std::vector<unsigned>(increasing.rbegin(), increasing.rend()));
+  }
+  for (const auto& c : n.children()) visit_state_move(*c, false, source, increasing, ancestors, coefficients);
+}
+
+}  // namespace
+
+bool PointSetTopologyModifier::move_points(const std::vector<unsigned>& ids,
+                                           const std::vector<std::vector<unsigned>>& ancestors,
+                                           const std::vector<std::vector<double>>& coefficients) {
+  if (!container_ || ids.empty() || !node()) return false;
+  const std::size_t np = container_->nb_points();
+  if (ancestors.size() != ids.size() || coefficients.size() != ids.size()) {
+    msg_error("movePoints: one ancestor row and one coefficient row per moved point are needed; nothing moved");
+    return false;
+  }
+  std::vector<std::size_t> order(ids.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return ids[a] < ids[b]; });
+  std::vector<unsigned> increasing;
+  std::vector<std::vector<unsigned>> anc;
+  std::vector<std::vector<double>> coef;
+  for (std::size_t k : order) {
+    if (ids[k] >= np || (!increasing.empty() && increasing.back() == ids[k])) {
+      msg_error("movePoints: point " + std::to_string(ids[k]) + " is out of bounds or repeated; nothing moved");
+      return false;
+    }
+    for (unsigned a : ancestors[k])
+      if (a >= np) {
+        msg_error("movePoints: ancestor " + std::to_string(a) + " is out of bounds; nothing moved");
+        return false;
+      }
+    increasing.push_back(ids[k]);
+    anc.push_back(ancestors[k]);
+    coef.push_back(coefficients[k]);
+  }
+  visit_state_move(*node(), true, *container_, increasing, anc, coef);
+  return true;
+}
+
 void PointSetTopologyModifier::propagate_topological_changes() {
   auto& changes = container_->edit_topology_changes();
   if (changes.empty()) return;

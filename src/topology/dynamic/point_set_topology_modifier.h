@@ -45,6 +45,12 @@ class PointSetTopologyModifier : public TopologyObject {
   // error (nothing added).
   bool add_points(unsigned n, std::vector<std::vector<unsigned>> ancestors = {},
                   std::vector<std::vector<double>> coefficients = {}, bool add_dof = true);
+  // SOFA's movePointsProcess for the states: each point of `ids` (distinct) takes, in every vector
+  // of the states of the subtree using the container, Σ coefficient · ancestor value. No
+  // topological event: the elements are unchanged (SOFA's TrianglesMoved events are not relayed;
+  // force fields rebuilding on element changes read the moved rest positions then).
+  bool move_points(const std::vector<unsigned>& ids, const std::vector<std::vector<unsigned>>& ancestors,
+                   const std::vector<std::vector<double>>& coefficients);
   // Sends the queued events (plus the ending event) to handlers and the subtree, then clears them.
   void propagate_topological_changes();
   // SOFA's notifyEndingEvent: propagates a lone ending event (a topological mapping relays the

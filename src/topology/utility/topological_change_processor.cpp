@@ -10,6 +10,7 @@
 #include "core/node.h"
 #include "core/registry.h"
 #include "io/text_file.h"
+#include "topology/algorithm/triangle_incision.h"
 #include "topology/dynamic/point_set_topology_modifier.h"
 #include "topology/dynamic/hexahedron_set_topology_modifier.h"
 #include "topology/dynamic/quad_set_topology_modifier.h"
@@ -78,10 +79,8 @@ void TopologicalChangeProcessor::init() {
       if (!check_incise(i, &why)) {
         msg_error(where(i) + why);
         ok = false;
-      } else if (incisions_++ == 0) {
-        // The scene still runs; each incision is reported as an error when it comes due.
-        msg_warning(where(i) + "INCISE= (incision along a path) is not supported yet: the incisions of this "
-                    "file will not be applied");
+      } else {
+        ++incisions_;
       }
     } else if (tok == "ADD=" && is_points_in_triangle(lines_[i])) {
       std::string why;
@@ -97,11 +96,21 @@ void TopologicalChangeProcessor::init() {
       }
     }
   }
+  incision::Mesh mesh;
+  if (ok && incisions_ > 0 && !incision_mesh(&mesh)) {
+    msg_error("INCISE= needs a Vec3 MechanicalObject and a TriangleSetTopologyModifier with the topology");
+    ok = false;
+  }
   if (ok && !modifier_) {
     msg_error("no topology modifier found in the topology's node or its ancestors");
     ok = false;
   }
-  if (!ok) set_state(ComponentState::invalid);
+  if (!ok) {
+    set_state(ComponentState::invalid);
+    return;
+  }
+  saved_.clear();
+  if (incisions_ > 0 && save_indices_at_init.value()) save_incisions();
 }
 
 namespace {
@@ -303,7 +312,10 @@ void TopologicalChangeProcessor::process(double t) {
       continue;
     }
     if (tok == "INCISE=") {
-      msg_error(where(i) + "INCISE= is not supported yet: no incision made");
+      // SOFA: with saved indices the incision of the current time (not shifted); else the block's
+      // own line of points.
+      if (save_indices_at_init.value()) incise_saved(node() ? node()->time.value() : t);
+      else incise_from_file(i);
       if (k + 1 < valid.size() && valid[k + 1] == i + 1) ++k;  // its coordinate line
       continue;
     }

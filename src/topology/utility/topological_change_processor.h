@@ -14,11 +14,12 @@
 // with ancestors and coefficients). With `useDataInputs` the file is not read:
 // the *ToRemove lists are removed once time passes timeToRemove (then every
 // `interval`).
-// `INCISE=` blocks are checked at init (count and coordinate line) and warned
-// about; the incision algorithm is not written, so a due block is an error
-// naming its line and nothing is cut.
-// Refused at init with an error naming file:line: ADD= lines of other kinds or
-// malformed (count, vertex line, missing modifier), and malformed INCISE= blocks.
+// `INCISE= n` with its line of n points ("triangle x y z" or "x y z" each) cuts
+// the triangle surface along the polyline they make (SOFA's incision: split along
+// the path, then the path's points duplicated), with saveIndicesAtInit as SOFA.
+// The path snaps onto close vertices and the border (epsilonSnapPath, epsilonSnapBorder).
+// Refused at init with an error naming file:line: malformed ADD= lines (count,
+// vertex line, missing modifier) and malformed INCISE= blocks.
 #pragma once
 
 #include <array>
@@ -26,10 +27,14 @@
 #include <vector>
 
 #include "core/roles.h"
+#include "math/types.h"
 
 namespace sinew {
 
 class PointSetTopologyModifier;
+namespace incision {
+struct Mesh;
+}
 
 class TopologicalChangeProcessor : public Component {
  public:
@@ -97,10 +102,35 @@ class TopologicalChangeProcessor : public Component {
   bool parse_points_in_triangle(std::size_t line, PointsInTriangle* out, std::string* why) const;
   void apply_points_in_triangle(std::size_t line, const PointsInTriangle& p);
 
-  // `INCISE= n` with its line of points: checked at init (SOFA's value-count rules); the incision
-  // itself is not written yet, so a due block is reported as an error and skipped.
+  // `INCISE= n` with its line of points: checked at init (SOFA's value-count rules).
   bool check_incise(std::size_t line, std::string* why);
   std::size_t incisions_ = 0;
+
+  // Incisions (topological_change_processor_incise.cpp, SOFA's INCISE= branch). With
+  // saveIndicesAtInit the points of every INCISE= block are located at init (triangle and
+  // barycentric coefficients, SOFA's saveIndices) and the cut due at time t is the block whose
+  // T= equals t within 1e-10 (inciseWithSavedIndices); otherwise the block's points are read
+  // when due. Each pair of consecutive points is one cut: path, split, incision (triangle_incision.h).
+  struct SavedIncision {
+    double time = 0;
+    std::size_t line = 0;  // of its INCISE= line (messages)
+    std::vector<unsigned> triangles;
+    std::vector<Vec3> barycoefs;
+    std::vector<Vec3> coordinates;  // from the triangles' current positions (computeCoordinates)
+  };
+  std::vector<SavedIncision> saved_;
+  bool incision_mesh(incision::Mesh* m) const;
+  // SOFA's getValuesInLine: the numbers of the line (empty, with an error, when too few).
+  std::vector<double> incise_values(std::size_t line, std::size_t n);
+  void save_incisions();
+  void compute_coordinates(const incision::Mesh& m, SavedIncision& s) const;
+  void incise_saved(double time);
+  void incise_from_file(std::size_t line);
+  // One cut per pair of consecutive points; `saved`: SOFA's inciseWithSavedIndices (ending event
+  // and saved triangles updated after each cut).
+  void incise_points(incision::Mesh& m, std::size_t line, std::vector<unsigned> triangles,
+                     const std::vector<Vec3>& points, SavedIncision* saved);
+  void update_saved(const incision::Mesh& m);
 
   std::vector<std::string> lines_;  // as getline returns them; the last one reaches end of file
   std::size_t next_ = 0;            // next line to read
