@@ -162,6 +162,15 @@ const std::vector<ForceFieldCase> kCases = {
     // has no line: SOFA's tangent then lacks the edge-direction term, see the unit test.)
     {"TriangularBiquadraticSpringsForceField_Compressible",
      triangles(ff("TriangularBiquadraticSpringsForceField", kSoft)), kEnergy | kInternal, 0.1},
+    {"TriangularQuadraticSpringsForceField",
+     triangles(ff("TriangularQuadraticSpringsForceField", kSoft + "useAngularSprings='0'")), kEnergy | kInternal},
+    // With angular springs SOFA's tangent takes (c − s·l₀)/l³ for the edge-direction coefficient where
+    // the derivative has (c − s·l)/l³: exact at the rest shape, off by the strain elsewhere.
+    {"TriangularQuadraticSpringsForceField_Angular",
+     triangles(ff("TriangularQuadraticSpringsForceField", kSoft)), kEnergy | kInternal | kExactAtRest, 0.2},
+    // Linear in the displacement from the rest shape (not rotation invariant), symmetric tangent.
+    {"TriangularTensorMassForceField", triangles(ff("TriangularTensorMassForceField", kSoft)),
+     kEnergy | kStiffness | kNetForce},
     {"FastTriangularBendingSprings", triangles(ff("FastTriangularBendingSprings", "bendingStiffness='10'")),
      kEnergy | kInternal},
     {"RestShapeSpringsForceField", tetras(ff("RestShapeSpringsForceField", "stiffness='100 200 300 400 500'")),

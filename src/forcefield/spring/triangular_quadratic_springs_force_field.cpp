@@ -1,0 +1,324 @@
+#include "forcefield/spring/triangular_quadratic_springs_force_field.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/init_checks.h"
+#include "core/node.h"
+#include "core/registry.h"
+
+namespace sinew {
+
+namespace {
+// SOFA's Vec arithmetic, written out so that sums keep its left-to-right order.
+double dot(const Vec3& a, const Vec3& b) {
+  double r = a[0] * b[0];
+  r += a[1] * b[1];
+  r += a[2] * b[2];
+  return r;
+}
+Vec3 point(const double* x, unsigned i) { return Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]); }
+}  // namespace
+
+void TriangularQuadraticSpringsForceField::init() {
+  ForceField::init();
+  if (state() != ComponentState::valid) return;
+  if (!require_vec3_state(*this)) return;
+  if (!bind_node_topology(*this, topology, "a triangular mesh is required")) return;
+  if (topology->triangles().empty()) {
+    // SOFA: an error, the component then does nothing.
+    msg_error("the topology " + topology->describe() + " has no triangles (a triangular set topology is required)");
+    set_state(ComponentState::invalid);
+    return;
+  }
+  const double E = young_modulus.get(), nu = poisson_ratio.get();
+  lambda_ = E * nu / (1 - nu * nu);
+  mu_ = E * (1 - nu) / (1 - nu * nu);
+  if (!std::isfinite(lambda_) || !std::isfinite(mu_)) {
+    msg_error("poissonRatio " + std::to_string(nu) + " gives infinite Lamé coefficients (1 − ν² = 0)");
+    set_state(ComponentState::invalid);
+    return;
+  }
+  if (!element_points_in_state(*this, topology->triangles(), "triangle", mstate->size()) ||
+      !element_points_in_state(*this, topology->edges(), "edge", mstate->size())) {
+    set_state(ComponentState::invalid);
+    return;
+  }
+  if (topology->edges_in_triangle().size() != topology->triangles().size()) {
+    msg_error("the topology " + topology->describe() + " gives no edges of its triangles (a triangular set "
+              "topology or a mesh with triangles is required)");
+    set_state(ComponentState::invalid);
+    return;
+  }
+  if (initial_points.get().empty()) {
+    const std::vector<double>& r = mstate->read(kRestPosition);
+    std::vector<Vec3> p(r.size() / 3);
+    for (std::size_t i = 0; i < p.size(); ++i) p[i] = point(r.data(), static_cast<unsigned>(i));
+    initial_points.set(std::move(p));
+  }
+  if (!rebuild()) {
+    set_state(ComponentState::invalid);
+    return;
+  }
+  follow_.owner = this;
+  follow_.attach(topology.get());
+}
+
+// SOFA's init: every edge created, then every triangle (adding its stiffness to its edges).
+bool TriangularQuadraticSpringsForceField::rebuild() {
+  const MeshTopologyBase& t = *topology;
+  edge_info_.assign(t.edges().size(), EdgeInfo{});
+  tri_info_.assign(t.triangles().size(), TriangleInfo{});
+  for (unsigned e = 0; e < edge_info_.size(); ++e) create_edge(e, t);
+  bool ok = true;
+  for (unsigned i = 0; i < tri_info_.size(); ++i) ok = create_triangle(i, t) && ok;
+  update_matrix_ = true;
+  return ok;
+}
+
+void TriangularQuadraticSpringsForceField::create_edge(unsigned e, const MeshTopologyBase& t) {
+  const double* x0 = mstate->read(kRestPosition).data();
+  const Edge& ed = t.edges()[e];
+  const Vec3 d = point(x0, ed[1]) - point(x0, ed[0]);
+  EdgeInfo& ei = edge_info_[e];
+  ei.rest_length = std::sqrt(dot(d, d));
+  ei.stiffness = 0;
+}
+
+// False (with an error naming the triangle) for a triangle of zero rest area: its constants stay 0.
+bool TriangularQuadraticSpringsForceField::create_triangle(unsigned i, const MeshTopologyBase& t) {
+  const auto& te = t.edges_in_triangle()[i];
+  TriangleInfo& ti = tri_info_[i];
+  double l[3], rs[3], cot[3];
+  for (int j = 0; j < 3; ++j) {
+    l[j] = edge_info_[te[j]].rest_length;
+    rs[j] = l[j] * l[j];
+  }
+  // Heron's formula on the squared lengths.
+  double area = 0;
+  for (int j = 0; j < 3; ++j) area += rs[j] * (rs[(j + 1) % 3] + rs[(j + 2) % 3] - rs[j]);
+  area = std::sqrt(area) / 4;
+  if (!(area > 0) || !std::isfinite(area)) {
+    const Triangle& tri = t.triangles()[i];
+    msg_error("triangle " + std::to_string(i) + " (" + std::to_string(tri[0]) + " " + std::to_string(tri[1]) + " " +
+              std::to_string(tri[2]) + ") is degenerate: its rest area is 0");
+    ti = TriangleInfo{};
+    return false;
+  }
+  for (int j = 0; j < 3; ++j) cot[j] = (rs[(j + 1) % 3] + rs[(j + 2) % 3] - rs[j]) / (4 * area);
+  for (int j = 0; j < 3; ++j) {
+    const int k = (j + 1) % 3, m = (j + 2) % 3;
+    ti.gamma[j] = l[k] * l[m] * (2 * cot[k] * cot[m] * (lambda_ + mu_) - mu_) / (8 * area);
+    ti.stiffness[j] = l[j] * l[j] * (2 * cot[j] * cot[j] * (lambda_ + mu_) + mu_) / (8 * area);
+    edge_info_[te[j]].stiffness += ti.stiffness[j];
+  }
+  return true;
+}
+
+// SOFA's edge and triangle data: removals before the lists change, additions after.
+void TriangularQuadraticSpringsForceField::Follow::apply(const MeshTopologyBase& t, const TopologyChange& c) {
+  auto& o = *owner;
+  switch (c.type) {
+    case TopologyChangeType::triangles_removed:
+      // A removed triangle takes its stiffness back from its edges, then the last one moves in.
+      for (unsigned r : c.indices) {
+        if (r >= o.tri_info_.size() || r >= t.edges_in_triangle().size()) continue;
+        const auto& te = t.edges_in_triangle()[r];
+        for (int j = 0; j < 3; ++j)
+          if (te[j] < o.edge_info_.size()) o.edge_info_[te[j]].stiffness -= o.tri_info_[r].stiffness[j];
+      }
+      remove_swap_last(o.tri_info_, c.indices);
+      break;
+    case TopologyChangeType::edges_removed:
+      remove_swap_last(o.edge_info_, c.indices);
+      break;
+    case TopologyChangeType::edges_added:
+      for (unsigned e : c.indices) {
+        if (e >= t.edges().size()) continue;
+        if (e >= o.edge_info_.size()) o.edge_info_.resize(e + 1);
+        o.create_edge(e, t);
+      }
+      break;
+    case TopologyChangeType::triangles_added:
+      for (unsigned i : c.indices) {
+        if (i >= t.triangles().size()) continue;
+        if (i >= o.tri_info_.size()) o.tri_info_.resize(i + 1);
+        o.create_triangle(i, t);
+      }
+      break;
+    default:
+      break;
+  }
+}
+
+bool TriangularQuadraticSpringsForceField::lists_match() const {
+  return tri_info_.size() == topology->triangles().size() && edge_info_.size() == topology->edges().size();
+}
+
+void TriangularQuadraticSpringsForceField::add_force(const MechParams& p) {
+  if (state() != ComponentState::valid) return;
+  if (!lists_match()) {
+    // Lists changed without events (a topology that does not propagate them): start again.
+    msg_warning("the topology's lists changed without topological events; the springs are rebuilt from the rest "
+                "positions");
+    rebuild();
+  }
+  MechanicalState& s = *mstate;
+  const double* x = s.read(p.x).data();
+  const double* v = s.read(p.v).data();
+  double* f = s.write(p.f).data();
+  const auto& edges = topology->edges();
+  const auto& tris = topology->triangles();
+  const auto& eit = topology->edges_in_triangle();
+  const double damping = damping_ratio.value();
+  double energy = 0;
+
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    EdgeInfo& ei = edge_info_[i];
+    const unsigned v0 = edges[i][0], v1 = edges[i][1];
+    const Vec3 dp = point(x, v0) - point(x, v1);
+    const Vec3 dv = point(v, v0) - point(v, v1);
+    const double L = ei.current_length = std::sqrt(dot(dp, dp));
+    const double geometric = ei.current_length - ei.rest_length;
+    ei.dl = geometric + damping * dot(dv, dp) / L;
+    energy += 0.5 * ei.stiffness * geometric * geometric;
+    const double val = ei.stiffness * ei.dl / L;
+    for (int c = 0; c < 3; ++c) {
+      const double fc = dp[c] * val;
+      f[3 * v1 + c] += fc;
+      f[3 * v0 + c] -= fc;
+    }
+  }
+  if (use_angular_springs.value()) {
+    for (std::size_t i = 0; i < tris.size(); ++i) {
+      const TriangleInfo& ti = tri_info_[i];
+      const auto& tea = eit[i];
+      const Triangle& ta = tris[i];
+      for (int j = 0; j < 3; ++j) {
+        const int k = (j + 1) % 3, l = (j + 2) % 3;
+        const EdgeInfo &ek = edge_info_[tea[k]], &el = edge_info_[tea[l]];
+        const double coef = (ek.dl * ti.gamma[l] + el.dl * ti.gamma[k]) / edge_info_[tea[j]].current_length;
+        energy += ti.gamma[j] * (ek.current_length - ek.rest_length) * (el.current_length - el.rest_length);
+        for (int c = 0; c < 3; ++c) {
+          const double fc = (x[3 * ta[k] + c] - x[3 * ta[l] + c]) * coef;
+          f[3 * ta[l] + c] += fc;
+          f[3 * ta[k] + c] -= fc;
+        }
+      }
+    }
+  }
+  energy_ = energy;
+  update_matrix_ = true;
+}
+
+// The per-triangle blocks DfDx[k], for the edge opposite vertex k, from the last add_force's edge
+// lengths and the current positions (SOFA reads the state's position here).
+void TriangularQuadraticSpringsForceField::update_matrix() {
+  update_matrix_ = false;
+  const double* x = mstate->read(kPosition).data();
+  const auto& tris = topology->triangles();
+  const auto& eit = topology->edges_in_triangle();
+  const bool angular = use_angular_springs.value();
+  const std::size_t nt = std::min(tris.size(), tri_info_.size());
+  for (std::size_t t = 0; t < nt; ++t) {
+    TriangleInfo& ti = tri_info_[t];
+    const auto& tea = eit[t];
+    const Triangle& ta = tris[t];
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      Mat3& m = ti.dfdx[k];
+      const Vec3 dpk = point(x, ta[i]) - point(x, ta[j]);
+      const EdgeInfo &ek = edge_info_[tea[k]], &ei = edge_info_[tea[i]], &ej = edge_info_[tea[j]];
+      if (!angular) {
+        double val1 = -ti.stiffness[k] * ek.dl;
+        val1 /= ek.current_length;
+        double val2 = -ti.stiffness[k] * ek.rest_length;
+        val2 /= ek.current_length * ek.current_length * ek.current_length;
+        for (int u = 0; u < 3; ++u) {
+          for (int w = 0; w < 3; ++w) m(u, w) = dpk[u] * dpk[w] * val2;
+          m(u, u) += val1;
+        }
+      } else {
+        const Vec3 dpj = point(x, ta[i]) - point(x, ta[k]);
+        const Vec3 dpi = point(x, ta[j]) - point(x, ta[k]);
+        double val1 = -(ti.stiffness[k] * ek.dl + ti.gamma[i] * ej.dl + ti.gamma[j] * ei.dl);
+        // SOFA's edge-direction coefficient: the rest length where the derivative has the current one.
+        double val2 = -val1 - ti.stiffness[k] * ek.rest_length;
+        val1 /= ek.current_length;
+        val2 /= ek.current_length * ek.current_length * ek.current_length;
+        const double valk = ti.gamma[k] / (ej.current_length * ei.current_length);
+        const double vali = ti.gamma[i] / (ej.current_length * ek.current_length);
+        const double valj = ti.gamma[j] / (ek.current_length * ei.current_length);
+        for (int u = 0; u < 3; ++u) {
+          for (int w = 0; w < 3; ++w)
+            m(u, w) = dpk[u] * dpk[w] * val2 + dpj[u] * dpi[w] * valk - dpj[u] * dpk[w] * vali +
+                      dpk[u] * dpi[w] * valj;
+          m(u, u) += val1;
+        }
+      }
+    }
+  }
+}
+
+void TriangularQuadraticSpringsForceField::add_dforce(const MechParams& p, double kfactor) {
+  if (state() != ComponentState::valid) return;
+  if (update_matrix_) update_matrix();
+  MechanicalState& s = *mstate;
+  const double* dx = s.read(p.dx).data();
+  double* df = s.write(p.df).data();
+  const auto& tris = topology->triangles();
+  const std::size_t nt = std::min(tris.size(), tri_info_.size());
+  for (std::size_t l = 0; l < nt; ++l) {
+    const TriangleInfo& ti = tri_info_[l];
+    const Triangle& ta = tris[l];
+    for (int k = 0; k < 3; ++k) {
+      const unsigned a = ta[(k + 1) % 3], b = ta[(k + 2) % 3];
+      const Vec3 d = point(dx, a) - point(dx, b);
+      const Mat3& m = ti.dfdx[k];
+      for (int u = 0; u < 3; ++u) {
+        double r = m(u, 0) * d[0];  // row · d
+        r += m(u, 1) * d[1];
+        r += m(u, 2) * d[2];
+        double t = d[0] * m(0, u) + d[1] * m(1, u) + d[2] * m(2, u);  // column · d
+        df[3 * a + u] += r * kfactor;
+        df[3 * b + u] -= t * kfactor;
+      }
+    }
+  }
+}
+
+// K as add_dforce applies it: per triangle and k, +M on (a, a), −M on (a, b), −Mᵀ on (b, a), +Mᵀ on (b, b).
+// SOFA has no assembled form of this force field; this one is the matrix its addDForce uses.
+bool TriangularQuadraticSpringsForceField::build_stiffness(MatrixSink& K) {
+  if (state() != ComponentState::valid) return true;
+  if (update_matrix_) update_matrix();
+  const MechanicalState* s = mstate.get();
+  const auto& tris = topology->triangles();
+  const std::size_t nt = std::min(tris.size(), tri_info_.size());
+  for (std::size_t l = 0; l < nt; ++l)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t a = tris[l][(k + 1) % 3], b = tris[l][(k + 2) % 3];
+      const Mat3& m = tri_info_[l].dfdx[k];
+      const Mat3 mt = m.transpose();
+      K.add_block(s, 3 * a, s, 3 * a, m);
+      K.add_block(s, 3 * a, s, 3 * b, -m);
+      K.add_block(s, 3 * b, s, 3 * a, -mt);
+      K.add_block(s, 3 * b, s, 3 * b, mt);
+    }
+  return true;
+}
+
+void register_triangular_quadratic_springs_force_field(Registry& r) {
+  ComponentInfo info;
+  info.name = "TriangularQuadraticSpringsForceField";
+  info.category = "ForceField/Spring";
+  info.description = "quadratic springs on the edges of a triangle mesh, with angular springs";
+  info.templates = {"Vec3d"};
+  info.default_template = "Vec3d";
+  info.requirement = Requirement::state;
+  info.create = creator<TriangularQuadraticSpringsForceField>();
+  r.add(std::move(info));
+}
+
+}  // namespace sinew
