@@ -186,11 +186,17 @@ class Builder {
 
   void resolve_pending_links() {
     // Data links to objects declared later, then object links (SOFA's UpdateLinks).
+    // SOFA warns about a data link it cannot resolve and goes on with the field unset (its
+    // default, and components then fall back as for an absent attribute); some of SOFA's own
+    // examples hold such links, so Sinew does the same, loudly.
     for (auto& [c, f] : pending_) {
       std::string why;
-      if (!try_field_link(*c, *f, &why))
-        diag_->error(c->where, c->describe() + ": cannot resolve link " + f->name() + "=" +
-                                   quote_value(f->link_path()) + ": " + why);
+      if (try_field_link(*c, *f, &why)) continue;
+      diag_->warning(c->where, c->describe() + ": cannot resolve link " + f->name() + "=" +
+                                   quote_value(f->link_path()) + ": " + why + "; '" + f->name() +
+                                   "' keeps its default, as if not given (as in SOFA)");
+      f->set_link_path({});
+      f->unset();
     }
     for_each_node(*out_.root, [&](Node& n) {
       for (auto& o : n.objects())
