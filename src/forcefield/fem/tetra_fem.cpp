@@ -12,6 +12,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "core/topology_change.h"
 #include "forcefield/fem/sofa_mat3.h"
 #include "math/decompose.h"
 
@@ -372,6 +373,42 @@ std::vector<TetraIssue> TetraFEM::init(std::span<const Vec3> X, std::span<const 
   if (index_out_of_range) tetra.clear();
   build_incidence(X.size());
   return issues;
+}
+
+void TetraFEM::remove_elements(const std::vector<unsigned>& decreasing) {
+  remove_swap_last(tetra, decreasing);
+  remove_swap_last(J, decreasing);
+  remove_swap_last(K, decreasing);
+  remove_swap_last(rot, decreasing);
+  remove_swap_last(rot0, decreasing);
+  remove_swap_last(rest, decreasing);
+  remove_swap_last(plastic, decreasing);
+  remove_swap_last(T0, decreasing);
+  // Kept per element only within one step or for outputs: rebuilt on next use.
+  sr_cache.clear();
+  jkjt_cache.clear();
+  touch(true);
+}
+
+void TetraFEM::remove_points(const std::vector<unsigned>& decreasing) {
+  std::size_t n = X0.size();
+  for (unsigned i : decreasing) {
+    if (i >= n) continue;
+    const auto last = static_cast<int>(n - 1);
+    if (static_cast<int>(i) != last)
+      for (auto& t : tetra)
+        for (int& v : t)
+          if (v == last) v = static_cast<int>(i);
+    --n;
+  }
+  remove_swap_last(X0, decreasing);
+  touch(true);
+}
+
+void TetraFEM::end_change() {
+  rest_volume = 0;
+  for (const auto& t : tetra) rest_volume += std::abs(tetra_signed_volume(X0[t[0]], X0[t[1]], X0[t[2]], X0[t[3]]));
+  build_incidence(X0.size());
 }
 
 void TetraFEM::reset_plasticity() {

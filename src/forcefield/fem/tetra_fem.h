@@ -119,6 +119,15 @@ struct TetraFEM {
   std::size_t size() const { return tetra.size(); }
   void reset_plasticity();
 
+  // Topological changes (core/topology_change.h), element by element as SOFA's per-element
+  // data: the same arrays init would build from the changed lists, without rebuilding them.
+  // Elements `decreasing` leave by swap-with-last; points `decreasing` leave the same way
+  // (the last point's index renamed in the elements); end_change then rebuilds the
+  // point incidence and the sums (O(elements), no element data recomputed).
+  void remove_elements(const std::vector<unsigned>& decreasing);
+  void remove_points(const std::vector<unsigned>& decreasing);
+  void end_change();
+
   // f += element forces in element order; updates rot (and J when
   // update_stiffness_matrix), and the plastic strains.
   void add_force(std::span<const Vec3> x, std::span<Vec3> f);

@@ -1,5 +1,8 @@
 #include "forcefield/fem/tetrahedral_corotational_fem_force_field.h"
 
+#include <algorithm>
+
+#include "core/assert.h"
 #include "core/node.h"
 #include "core/registry.h"
 #include "forcefield/fem/tetra_fem_setup.h"
@@ -32,13 +35,56 @@ void TetrahedralCorotationalFEMForceField::init() {
     return;
   }
   if (topology) tetra_version_ = topology->elements_version(MeshTopologyBase::Elements::tetrahedra);
+  per_element_ = topology && young_modulus.get().size() <= 1 && poisson_ratio.get().size() <= 1 &&
+                 local_stiffness_factor.get().empty() && !compute_von_mises_stress.get() &&
+                 fem_.size() == topology->tetrahedra().size();
+  needs_init_ = false;
+  changed_ = false;
+  follower_.attach(per_element_ ? topology.get() : nullptr);
   if (!fem_.forces_supported())
     msg_error("computeGlobalMatrix is not supported with method " + method.get() +
               ": this force field adds no force (as SOFA)");
 }
 
+void TetrahedralCorotationalFEMForceField::on_change(const TopologyChange& c) {
+  using T = TopologyChangeType;
+  if (needs_init_) return;
+  switch (c.type) {
+    case T::tetrahedra_removed:
+      fem_.remove_elements(c.indices);
+      changed_ = true;
+      break;
+    case T::points_removed:
+      fem_.remove_points(c.indices);
+      changed_ = true;
+      break;
+    case T::tetrahedra_added:
+    case T::points_added:
+      needs_init_ = true;
+      break;
+    case T::ending:
+      if (changed_) fem_.end_change();
+      changed_ = false;
+      break;
+    default:
+      break;
+  }
+}
+
 void TetrahedralCorotationalFEMForceField::follow_topology() {
   if (!topology || topology->elements_version(MeshTopologyBase::Elements::tetrahedra) == tetra_version_) return;
+  if (per_element_ && !needs_init_ && !changed_ && fem_.size() == topology->tetrahedra().size() &&
+      fem_.X0.size() == mstate->size()) {
+    // The follower kept the element data in step with the container.
+    SINEW_ASSERT(std::equal(fem_.tetra.begin(), fem_.tetra.end(), topology->tetrahedra().begin(),
+                            [](const std::array<int, 4>& a, const Tetra& b) {
+                              return std::equal(a.begin(), a.end(), b.begin(),
+                                                [](int x, unsigned y) { return static_cast<unsigned>(x) == y; });
+                            }),
+                 "the followed elements equal the container's");
+    tetra_version_ = topology->elements_version(MeshTopologyBase::Elements::tetrahedra);
+    return;
+  }
   if (topology->tetrahedra().empty()) {
     // Every element was removed: no force, no error.
     fem_ = fem::TetraFEM{};

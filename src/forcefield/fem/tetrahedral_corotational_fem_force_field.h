@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/roles.h"
+#include "core/topology_change.h"
 #include "forcefield/fem/tetra_fem.h"
 
 namespace sinew {
@@ -50,12 +51,27 @@ class TetrahedralCorotationalFEMForceField final : public ForceField {
   const fem::TetraFEM& kernel() const { return fem_; }
 
  private:
-  // Follows topological changes by rebuilding the element data from the rest positions (which
-  // the state keeps in step with the points) when the tetrahedron list moved: the same values a
-  // per-element handler would keep, at the cost of one re-initialisation per changed step.
+  // Topological changes. Removals are followed element by element (SOFA's per-element data:
+  // swap-with-last of the element arrays, points renamed) by a handler on the container, so a
+  // few removed elements do not cost a re-initialisation; anything else that moves the
+  // tetrahedron list (additions, per-element materials, von Mises outputs) rebuilds the
+  // element data from the rest positions, which follow the points: the same values.
+  class Follower final : public TopologyHandler {
+   public:
+    explicit Follower(TetrahedralCorotationalFEMForceField& ff) : ff_(ff) {}
+    void apply(const MeshTopologyBase& t, const TopologyChange& c) override { ff_.on_change(c); }
+
+   private:
+    TetrahedralCorotationalFEMForceField& ff_;
+  };
+  void on_change(const TopologyChange& c);
   void follow_topology();
   fem::TetraFEM fem_;
   std::uint64_t tetra_version_ = 0;
+  Follower follower_{*this};
+  bool per_element_ = false;   // removals followed element by element
+  bool needs_init_ = false;    // a change the follower cannot apply: rebuild at the next use
+  bool changed_ = false;       // removals applied since the last ending event
 };
 
 }  // namespace sinew
