@@ -154,8 +154,33 @@ void OglModel::from_topology() {
       }
     }
   }
-  triangles.set(t->triangles());
-  quads.set(t->quads());
+  take_elements(*t);
+  // A topology whose lists never change keeps its versions: following it costs two compares a step.
+  follows_topology_ = handle_dynamic_topology.value();
+}
+
+void OglModel::take_elements(const MeshTopologyBase& t) {
+  triangles.set(t.triangles());
+  quads.set(t.quads());
+  tri_version_ = t.elements_version(MeshTopologyBase::Elements::triangles);
+  quad_version_ = t.elements_version(MeshTopologyBase::Elements::quads);
+}
+
+void OglModel::handle_event(Event& e) {
+  if (e.kind == Event::Kind::animate_end) follow_topology();
+}
+
+void OglModel::follow_topology() {
+  const MeshTopologyBase* t = topology.get();
+  if (!follows_topology_ || !t) return;
+  if (t->elements_version(MeshTopologyBase::Elements::triangles) == tri_version_ &&
+      t->elements_version(MeshTopologyBase::Elements::quads) == quad_version_)
+    return;
+  take_elements(*t);
+  if (flip_) {
+    for (auto& tr : triangles.edit()) std::swap(tr[1], tr[2]);
+    for (auto& qd : quads.edit()) std::swap(qd[1], qd[3]);
+  }
 }
 
 void OglModel::init() {

@@ -95,12 +95,21 @@ class OglModel : public VisualState {
 
   void parse(AttributeMap& attrs, Diagnostics& diag) override;
   void init() override;
+  // handleDynamicTopology (SOFA's updateVisual: the mesh is recomputed when the topology's
+  // revision moved): after each step, a model whose elements come from a changing topology
+  // takes its triangles and quads again.
+  bool wants_events() const override { return Component::wants_events() || follows_topology_; }
+  void handle_event(Event& e) override;
+  void follow_topology();
 
  private:
   bool load_file();
   void from_topology();
+  void take_elements(const MeshTopologyBase& t);
   std::string color_;
   bool flip_ = false;
+  bool follows_topology_ = false;  // elements taken from a topology (handleDynamicTopology)
+  std::uint64_t tri_version_ = 0, quad_version_ = 0;
 };
 
 }  // namespace sinew

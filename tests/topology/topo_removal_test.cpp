@@ -7,6 +7,7 @@
 #include <random>
 
 #include "core/simulation.h"
+#include "forcefield/fem/tetrahedral_corotational_fem_force_field.h"
 #include "mass/diagonal_mass.h"
 #include "mass/mesh_geometry.h"
 #include "projective/fixed_projective_constraint.h"
@@ -18,7 +19,7 @@
 #include "topology/dynamic/triangle_set_topology_modifier.h"
 #include "topology/mapping/tetra2_triangle_topological_mapping.h"
 #include "topology/utility/topological_change_processor.h"
-#include "forcefield/fem/tetrahedral_corotational_fem_force_field.h"
+#include "visual/ogl_model.h"
 
 using namespace sinew;
 using sinew::test::get;
@@ -363,4 +364,36 @@ TEST(TopologyRemoval, CorotationalFemFollowsRemovalsAsARebuildWould) {
   EXPECT_EQ(get<MechanicalObject>(*a.root, "dofs")->read(kPosition),
             get<MechanicalObject>(*b.root, "dofs")->read(kPosition));
   EXPECT_DOUBLE_EQ(fem_a.kernel().rest_volume, fem_b.kernel().rest_volume);
+}
+
+// OglModel with handleDynamicTopology (default) takes its topology's triangles again after a
+// step in which they changed (SOFA's updateVisual on a new revision); its positions follow
+// through its mapping.
+TEST(TopologyRemoval, OglModelFollowsItsSurface) {
+  auto s = load(R"(<Node gravity="0 0 0" dt="0.01">
+    <RegularGridTopology name="grid" n="4 3 3" min="0 0 0" max="3 2 2"/>
+    <MechanicalObject name="dofs"/>
+    <TetrahedronSetTopologyContainer name="topo"/>
+    <TetrahedronSetTopologyModifier name="mod"/>
+    <Hexa2TetraTopologicalMapping input="@grid" output="@topo"/>
+    <Node name="surface">
+      <TriangleSetTopologyContainer name="skin"/>
+      <TriangleSetTopologyModifier/>
+      <Tetra2TriangleTopologicalMapping input="@../topo" output="@skin"/>
+      <Node name="visu">
+        <OglModel name="visual"/>
+        <IdentityMapping input="@../../dofs" output="@visual"/>
+      </Node>
+    </Node>
+  </Node>)");
+  Node& surface = *s.root->find_child_named("surface");
+  auto& skin = *get<TriangleSetTopologyContainer>(surface, "skin");
+  auto& visual = *get<OglModel>(*surface.find_child_named("visu"), "visual");
+  EXPECT_EQ(visual.triangles.value(), skin.triangles());
+  get<TetrahedronSetTopologyModifier>(*s.root, "mod")->remove_tetrahedra({0, 1, 2, 3, 4, 5, 40});
+  animate(*s.root);
+  EXPECT_EQ(visual.triangles.value(), skin.triangles());
+  EXPECT_EQ(visual.visual_size(), get<MechanicalObject>(*s.root, "dofs")->size());
+  for (const Triangle& t : visual.triangles.value())
+    for (unsigned v : t) EXPECT_LT(v, visual.visual_size());
 }
