@@ -7,6 +7,7 @@
 #include "core/init_checks.h"
 #include "core/node.h"
 #include "core/registry.h"
+#include "forcefield/spring/triangle_edge_blocks.h"
 
 namespace sinew {
 
@@ -311,47 +312,13 @@ void TriangularBiquadraticSpringsForceField::add_dforce(const MechParams& p, dou
   if (state() != ComponentState::valid) return;
   if (update_matrix_) update_matrix();
   MechanicalState& s = *mstate;
-  const double* dx = s.read(p.dx).data();
-  double* df = s.write(p.df).data();
-  const auto& tris = topology->triangles();
-  const std::size_t nt = std::min(tris.size(), tri_info_.size());
-  for (std::size_t l = 0; l < nt; ++l) {
-    const TriangleInfo& ti = tri_info_[l];
-    const Triangle& ta = tris[l];
-    for (int k = 0; k < 3; ++k) {
-      const unsigned a = ta[(k + 1) % 3], b = ta[(k + 2) % 3];
-      const Vec3 d = point(dx, a) - point(dx, b);
-      const Mat3& m = ti.dfdx[k];
-      for (int u = 0; u < 3; ++u) {
-        double r = m(u, 0) * d[0];  // row · d
-        r += m(u, 1) * d[1];
-        r += m(u, 2) * d[2];
-        double t = d[0] * m(0, u) + d[1] * m(1, u) + d[2] * m(2, u);  // column · d
-        df[3 * a + u] += r * kfactor;
-        df[3 * b + u] -= t * kfactor;
-      }
-    }
-  }
+  add_triangle_edge_dforce(topology->triangles(), tri_info_, s.read(p.dx).data(), s.write(p.df).data(), kfactor);
 }
 
-// K as add_dforce applies it: per triangle and k, +M on (a, a), −M on (a, b), −Mᵀ on (b, a), +Mᵀ on (b, b).
-// SOFA has no assembled form of this force field; this one is the matrix its addDForce uses.
 bool TriangularBiquadraticSpringsForceField::build_stiffness(MatrixSink& K) {
   if (state() != ComponentState::valid) return true;
   if (update_matrix_) update_matrix();
-  const MechanicalState* s = mstate.get();
-  const auto& tris = topology->triangles();
-  const std::size_t nt = std::min(tris.size(), tri_info_.size());
-  for (std::size_t l = 0; l < nt; ++l)
-    for (int k = 0; k < 3; ++k) {
-      const std::size_t a = tris[l][(k + 1) % 3], b = tris[l][(k + 2) % 3];
-      const Mat3& m = tri_info_[l].dfdx[k];
-      const Mat3 mt = m.transpose();
-      K.add_block(s, 3 * a, s, 3 * a, m);
-      K.add_block(s, 3 * a, s, 3 * b, -m);
-      K.add_block(s, 3 * b, s, 3 * a, -mt);
-      K.add_block(s, 3 * b, s, 3 * b, mt);
-    }
+  add_triangle_edge_stiffness(topology->triangles(), tri_info_, mstate.get(), K);
   return true;
 }
 
