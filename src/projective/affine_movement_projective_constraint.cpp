@@ -6,6 +6,7 @@
 #include "core/registry.h"
 #include "core/state_creator.h"
 #include "io/sofa_quat.h"
+#include "projective/indices_in_state.h"
 
 namespace sinew {
 
@@ -23,22 +24,7 @@ void AffineMovementProjectiveConstraint::init() {
   follow_.bind(&indices);
   follow_.attach(topology.get() ? topology.get() : node()->get_mesh_topology_link());
   // SOFA reports indices beyond the state and drops them from the list.
-  const std::size_t n = mstate->size();
-  std::vector<unsigned> kept;
-  bool dropped = false;
-  for (unsigned i : indices.get()) {
-    if (i < n) {
-      kept.push_back(i);
-      continue;
-    }
-    msg_error("index " + std::to_string(i) + " is not valid (the state has " + std::to_string(n) +
-              " DoFs); it is removed");
-    dropped = true;
-  }
-  if (dropped) {
-    if (indices.parent()) indices.set_parent(nullptr);
-    indices.set(std::move(kept));
-  }
+  drop_indices_beyond_state(*this, indices, mstate->size());
   if (end_time.get() <= begin_time.get())
     msg_warning("endConstraintTime (" + std::to_string(end_time.get()) + ") is not after beginConstraintTime (" +
                 std::to_string(begin_time.get()) + "): the points jump to their final positions after it");

@@ -7,6 +7,7 @@
 #include "core/node.h"
 #include "core/registry.h"
 #include "core/state_creator.h"
+#include "projective/indices_in_state.h"
 
 namespace sinew {
 
@@ -22,22 +23,7 @@ void DirectionProjectiveConstraint::init() {
   d_ = mstate->info().spatial_dim;
   follow_.bind(&indices);
   follow_.attach(topology.get() ? topology.get() : node()->get_mesh_topology_link());
-  const std::size_t n = mstate->size();
-  std::vector<unsigned> kept;
-  bool dropped = false;
-  for (unsigned i : indices.get()) {
-    if (i < n) {
-      kept.push_back(i);
-      continue;
-    }
-    msg_error("index " + std::to_string(i) + " is not valid (the state has " + std::to_string(n) +
-              " DoFs); it is removed");
-    dropped = true;
-  }
-  if (dropped) {
-    if (indices.parent()) indices.set_parent(nullptr);
-    indices.set(std::move(kept));
-  }
+  drop_indices_beyond_state(*this, indices, mstate->size());
   reinit();
 }
 

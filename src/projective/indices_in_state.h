@@ -1,6 +1,8 @@
-// Fixed and PartialFixed projective constraints read their `indices` the same
-// way: an index past the end of the state is skipped with a warning (SOFA
-// would write out of bounds), the others are kept in order.
+// How projective constraints read their `indices` against the state's size.
+// Fixed and PartialFixed: an index past the end of the state is skipped with a
+// warning (SOFA would write out of bounds), the others are kept in order.
+// AffineMovement and Direction: SOFA reports such an index and removes it from
+// the list itself (drop_indices_beyond_state).
 #pragma once
 
 #include <cstddef>
@@ -8,6 +10,7 @@
 #include <vector>
 
 #include "core/component.h"
+#include "core/field.h"
 
 namespace sinew {
 
@@ -23,6 +26,25 @@ inline void keep_indices_in_state(const Component& c, const std::vector<unsigned
     }
     active.push_back(i);
   }
+}
+
+// Removes from `indices` (unlinking it) the entries not below `n_dofs`, each with an error, as
+// SOFA's removeConstraint at init; the others keep their order.
+inline void drop_indices_beyond_state(const Component& c, Field<std::vector<unsigned>>& indices, std::size_t n_dofs) {
+  std::vector<unsigned> kept;
+  bool dropped = false;
+  for (unsigned i : indices.get()) {
+    if (i < n_dofs) {
+      kept.push_back(i);
+      continue;
+    }
+    c.msg_error("index " + std::to_string(i) + " is not valid (the state has " + std::to_string(n_dofs) +
+                " DoFs); it is removed");
+    dropped = true;
+  }
+  if (!dropped) return;
+  if (indices.parent()) indices.set_parent(nullptr);
+  indices.set(std::move(kept));
 }
 
 }  // namespace sinew
