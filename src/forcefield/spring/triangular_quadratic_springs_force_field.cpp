@@ -7,7 +7,7 @@
 #include "core/init_checks.h"
 #include "core/node.h"
 #include "core/registry.h"
-#include "forcefield/spring/triangle_edge_blocks.h"
+#include "forcefield/spring/triangle_edge_springs.h"
 
 namespace sinew {
 
@@ -120,37 +120,9 @@ bool TriangularQuadraticSpringsForceField::create_triangle(unsigned i, const Mes
 // SOFA's edge and triangle data: removals before the lists change, additions after.
 void TriangularQuadraticSpringsForceField::Follow::apply(const MeshTopologyBase& t, const TopologyChange& c) {
   auto& o = *owner;
-  switch (c.type) {
-    case TopologyChangeType::triangles_removed:
-      // A removed triangle takes its stiffness back from its edges, then the last one moves in.
-      for (unsigned r : c.indices) {
-        if (r >= o.tri_info_.size() || r >= t.edges_in_triangle().size()) continue;
-        const auto& te = t.edges_in_triangle()[r];
-        for (int j = 0; j < 3; ++j)
-          if (te[j] < o.edge_info_.size()) o.edge_info_[te[j]].stiffness -= o.tri_info_[r].stiffness[j];
-      }
-      remove_swap_last(o.tri_info_, c.indices);
-      break;
-    case TopologyChangeType::edges_removed:
-      remove_swap_last(o.edge_info_, c.indices);
-      break;
-    case TopologyChangeType::edges_added:
-      for (unsigned e : c.indices) {
-        if (e >= t.edges().size()) continue;
-        if (e >= o.edge_info_.size()) o.edge_info_.resize(e + 1);
-        o.create_edge(e, t);
-      }
-      break;
-    case TopologyChangeType::triangles_added:
-      for (unsigned i : c.indices) {
-        if (i >= t.triangles().size()) continue;
-        if (i >= o.tri_info_.size()) o.tri_info_.resize(i + 1);
-        o.create_triangle(i, t);
-      }
-      break;
-    default:
-      break;
-  }
+  follow_triangle_springs(
+      t, c, o.edge_info_, o.tri_info_, [&](unsigned e) { o.create_edge(e, t); },
+      [&](unsigned i) { o.create_triangle(i, t); });
 }
 
 bool TriangularQuadraticSpringsForceField::lists_match() const {
