@@ -11,6 +11,7 @@
 
 #include "core/node.h"
 #include "core/simulation.h"
+#include "badinput_helpers.h"
 #include "forcefield/spring/triangular_biquadratic_springs_force_field.h"
 #include "spring_helpers.h"
 #include "test_scene.h"
@@ -159,4 +160,23 @@ TEST(TriangularBiquadraticSprings, EdgeAndTriangleDataFollowRemovalAndAddition) 
     EXPECT_NEAR(ff.edge_info()[te1[j]].rest_square_length, d0 * d0 + d1 * d1, 1e-12);
   }
   EXPECT_GT(t1.rest_area, 0.0);
+}
+
+// ν = ±1 makes the Lamé pair of the triangle-edge force fields infinite: an error naming the
+// component, which is switched off (the three share triangle_edge_lame).
+TEST(TriangleEdgeForceFields, PoissonRatioOfOneIsAnError) {
+  using namespace sinew::test;
+  TempDir dir;
+  for (const char* cls : {"TriangularBiquadraticSpringsForceField", "TriangularQuadraticSpringsForceField",
+                          "TriangularTensorMassForceField"})
+    for (const char* nu : {"1", "-1"}) {
+      const Outcome o = run_xml(dir, std::string(R"(<Node name="root" gravity="0 -9.81 0" dt="0.01">
+        <DefaultAnimationLoop/><EulerImplicitSolver/><CGLinearSolver iterations="50" tolerance="1e-9" threshold="1e-12"/>
+        <MechanicalObject position="0 0 0  1 0 0  0 1 0"/>
+        <TriangleSetTopologyContainer triangles="0 1 2"/>
+        <UniformMass totalMass="1"/>
+        <)") + cls + R"( name="ff" poissonRatio=")" + nu + R"("/></Node>)");
+      EXPECT_TRUE(any_contains_all(o.errors, {"'ff'", cls, "infinite Lamé"})) << cls << " ν=" << nu << o.all();
+      EXPECT_FALSE(o.init_ok) << cls;
+    }
 }

@@ -7,6 +7,7 @@
 #include "core/init_checks.h"
 #include "core/node.h"
 #include "core/registry.h"
+#include "forcefield/triangle_edge_setup.h"
 #include "forcefield/spring/triangle_edge_springs.h"
 
 namespace sinew {
@@ -34,20 +35,8 @@ void TriangularBiquadraticSpringsForceField::init() {
   if (compressible.get() && !use_angular_springs.get())
     msg_warning("compressible is only computed with useAngularSprings; without it the compression term is left "
                 "out (SOFA's stiffness then reads areas it never computed)");
-  const double E = young_modulus.get(), nu = poisson_ratio.get();
-  lambda_ = E * nu / (1 - nu * nu);
-  mu_ = E * (1 - nu) / (1 - nu * nu);
-  if (!element_points_in_state(*this, topology->triangles(), "triangle", mstate->size()) ||
-      !element_points_in_state(*this, topology->edges(), "edge", mstate->size())) {
-    set_state(ComponentState::invalid);
-    return;
-  }
-  if (topology->edges_in_triangle().size() != topology->triangles().size()) {
-    msg_error("the topology " + topology->describe() + " gives no edges of its triangles (a triangular set "
-              "topology or a mesh with triangles is required)");
-    set_state(ComponentState::invalid);
-    return;
-  }
+  if (!triangle_edge_lame(*this, young_modulus.get(), poisson_ratio.get(), lambda_, mu_)) return;
+  if (!triangle_edges_ready(*this, *topology)) return;
   if (initial_points.get().empty()) {
     const std::vector<double>& r = mstate->read(kRestPosition);
     std::vector<Vec3> p(r.size() / 3);
