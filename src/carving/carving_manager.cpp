@@ -1,6 +1,7 @@
 #include "carving/carving_manager.h"
 
 #include <algorithm>
+#include <memory>
 
 #include "carving/remove_from_collision_model.h"
 #include "core/node.h"
@@ -72,13 +73,64 @@ bool CarvingManager::is_surface(const CollisionModelBase* m) const {
   return has_tag(*m, "CarvingSurface") || std::find(surfaces_.begin(), surfaces_.end(), m) != surfaces_.end();
 }
 
+namespace {
+
+// The elements one pair's contacts picked, kept naming the same elements while the removals of
+// the pairs before it renumber their topology: every removal event of their kind is applied to
+// them as the container applies it (removed ones leave, the last one takes the freed slot).
+class PickedElements final : public TopologyHandler {
+ public:
+  PickedElements(const CollisionModelBase& target, std::vector<unsigned> elements)
+      : target_(&target), elements_(std::move(elements)) {
+    switch (target.kind()) {
+      case CollisionModelBase::Kind::triangle: kind_ = TopologyChangeType::triangles_removed; break;
+      case CollisionModelBase::Kind::line: kind_ = TopologyChangeType::edges_removed; break;
+      default: kind_ = TopologyChangeType::points_removed; break;
+    }
+    attach(collision_topology(target));
+  }
+  const CollisionModelBase& target() const { return *target_; }
+  const std::vector<unsigned>& elements() const { return elements_; }
+
+  void apply(const MeshTopologyBase& t, const TopologyChange& c) override {
+    if (c.type != kind_) return;
+    // Removal events arrive before the container changes: the count is the one they apply to.
+    std::size_t n = kind_ == TopologyChangeType::triangles_removed ? t.triangles().size()
+                    : kind_ == TopologyChangeType::edges_removed   ? t.edges().size()
+                                                                   : t.nb_points();
+    for (unsigned r : c.indices) {
+      if (r >= n) continue;
+      const auto last = static_cast<unsigned>(n - 1);
+      for (unsigned& e : elements_) {
+        if (e == r) {
+          e = kGone;
+        } else if (e == last) {
+          e = r;
+        }
+      }
+      --n;
+    }
+    std::erase(elements_, kGone);
+  }
+
+ private:
+  static constexpr unsigned kGone = ~0u;
+  const CollisionModelBase* target_;
+  std::vector<unsigned> elements_;
+  TopologyChangeType kind_;
+};
+
+}  // namespace
+
 std::size_t CarvingManager::carve() {
   if (state() != ComponentState::valid) return 0;
   const CollisionModelBase* tool = tool_model.get();
   const double dist = carving_distance.value();
-  // Every pair is resolved on the topology as detected before anything is removed: a removal
-  // renumbers the elements the next pair's contacts name.
-  std::vector<RemovalRequest> requests;
+  // Picks of every pair first, then one removal per pair in the detection's order, as SOFA: a
+  // later pair is resolved on the topology the earlier removals left (the triangles around a
+  // touched point are then those of the new surface). Its indices are renamed along with the
+  // removals (PickedElements), where SOFA reads them unchanged.
+  std::vector<std::unique_ptr<PickedElements>> picks;
   for (const PairOutputs& p : narrow_phase->outputs()) {
     const CollisionModelBase* target = nullptr;
     bool tool_first = false;
@@ -90,28 +142,25 @@ std::size_t CarvingManager::carve() {
     } else {
       continue;
     }
-    picked_.clear();
+    std::vector<unsigned> picked;
     for (const DetectionOutput& o : p.outputs)
-      if (o.value < dist) picked_.push_back(tool_first ? o.elem2 : o.elem1);
-    if (picked_.empty()) continue;
-    RemovalRequest r;
-    std::string why;
-    if (!resolve_removal(*target, picked_, &r, &why)) {
-      msg_warning("carving " + target->describe() + " failed: " + why);
-      continue;
-    }
-    if (r.elements.empty()) {
-      msg_warning("carving failed: " + std::to_string(picked_.size()) + " elements of " + target->describe() +
-                  " were selected, but they belong to no element that can be removed");
-      continue;
-    }
-    merge_request(requests, std::move(r));
+      if (o.value < dist) picked.push_back(tool_first ? o.elem2 : o.elem1);
+    if (!picked.empty()) picks.push_back(std::make_unique<PickedElements>(*target, std::move(picked)));
   }
   std::size_t removed = 0;
-  for (const RemovalRequest& r : requests) {
+  for (auto& pick : picks) {
+    if (pick->elements().empty()) continue;  // all removed by the pairs before
+    RemovalRequest r;
     std::string why;
+    if (!resolve_removal(pick->target(), pick->elements(), &r, &why)) {
+      msg_warning("carving " + pick->target().describe() + " failed: " + why);
+      continue;
+    }
+    pick->attach(nullptr);
+    if (r.elements.empty()) continue;  // the volume elements under them are gone already
     const std::size_t n = apply_removal(r, &why);
-    if (n == 0) msg_warning("carving failed: " + why);
+    if (n == 0) msg_warning("carving failed: " + std::to_string(r.elements.size()) + " elements were selected, but " +
+                            (why.empty() ? std::string("none was removed") : why));
     removed += n;
   }
   return removed;

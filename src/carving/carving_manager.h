@@ -52,7 +52,6 @@ class CarvingManager final : public Component {
   bool is_surface(const CollisionModelBase* m) const;
 
   std::vector<CollisionModelBase*> surfaces_;
-  std::vector<unsigned> picked_;  // elements of one pair to carve (capacity kept)
 };
 
 }  // namespace sinew

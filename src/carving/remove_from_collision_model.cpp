@@ -1,7 +1,6 @@
 #include "carving/remove_from_collision_model.h"
 
 #include <algorithm>
-#include <functional>
 #include <set>
 
 #include "collision/collision_model.h"
@@ -15,20 +14,6 @@
 
 namespace sinew {
 namespace {
-
-// The topology a model's elements index: its `topology` link, else its node's (SOFA's
-// getCollisionTopology).
-MeshTopologyBase* collision_topology(const CollisionModelBase& m) {
-  MeshTopologyBase* t = nullptr;
-  switch (m.kind()) {
-    case CollisionModelBase::Kind::triangle: t = static_cast<const TriangleCollisionModel&>(m).topology.get(); break;
-    case CollisionModelBase::Kind::point: t = static_cast<const PointCollisionModel&>(m).topology.get(); break;
-    case CollisionModelBase::Kind::line: t = static_cast<const LineCollisionModel&>(m).topology.get(); break;
-    default: break;
-  }
-  if (!t && m.node()) t = m.node()->get_mesh_topology_link();
-  return t;
-}
 
 // The topological mapping of `topo`'s node whose output is `topo` (nullptr: none).
 TopologicalMapping* mapping_onto(const MeshTopologyBase& topo) {
@@ -66,6 +51,18 @@ void surface_owners(const MeshTopologyBase& topo, std::span<const unsigned> tris
 }
 
 }  // namespace
+
+MeshTopologyBase* collision_topology(const CollisionModelBase& m) {
+  MeshTopologyBase* t = nullptr;
+  switch (m.kind()) {
+    case CollisionModelBase::Kind::triangle: t = static_cast<const TriangleCollisionModel&>(m).topology.get(); break;
+    case CollisionModelBase::Kind::point: t = static_cast<const PointCollisionModel&>(m).topology.get(); break;
+    case CollisionModelBase::Kind::line: t = static_cast<const LineCollisionModel&>(m).topology.get(); break;
+    default: break;
+  }
+  if (!t && m.node()) t = m.node()->get_mesh_topology_link();
+  return t;
+}
 
 bool resolve_removal(const CollisionModelBase& model, std::span<const unsigned> elements, RemovalRequest* out,
                      std::string* why) {
@@ -142,19 +139,6 @@ bool resolve_removal(const CollisionModelBase& model, std::span<const unsigned> 
   out->modifier = mod;
   out->elements.assign(items.rbegin(), items.rend());
   return true;
-}
-
-void merge_request(std::vector<RemovalRequest>& requests, RemovalRequest r) {
-  for (RemovalRequest& q : requests) {
-    if (q.topology != r.topology) continue;
-    std::vector<unsigned> all(q.elements);
-    all.insert(all.end(), r.elements.begin(), r.elements.end());
-    std::sort(all.begin(), all.end(), std::greater<>());
-    all.erase(std::unique(all.begin(), all.end()), all.end());
-    q.elements = std::move(all);
-    return;
-  }
-  requests.push_back(std::move(r));
 }
 
 std::size_t apply_removal(const RemovalRequest& r, std::string* why) {

@@ -5,10 +5,8 @@
 // bound, points to the triangles around them — and that topology's modifier removes
 // those, the mappings then rebuilding the surface.
 //
-// Resolving and removing are split so that a caller with several models (the carving
-// manager's surface has a triangle and a point model) resolves every request on the
-// same, unchanged topology before anything is removed; SOFA removes per model and so
-// reads the later models' indices after the first removal renumbered them.
+// Resolving and removing are split so that a caller can keep element indices valid across
+// removals (the carving manager's PickedElements) before resolving them.
 #pragma once
 
 #include <span>
@@ -28,14 +26,15 @@ struct RemovalRequest {
   std::vector<unsigned> elements;  // of the topology's own kind, distinct, decreasing
 };
 
+// The topology a model's elements index: its `topology` link, else its node's (SOFA's
+// getCollisionTopology); nullptr when there is none.
+MeshTopologyBase* collision_topology(const CollisionModelBase& model);
+
 // Carries `elements` (indices in `model`) to the elements of the topology that owns
 // them. False with `why` when the model's elements cannot be removed (no dynamic
 // topology or modifier, a mapping that cannot say where its elements come from).
 bool resolve_removal(const CollisionModelBase& model, std::span<const unsigned> elements, RemovalRequest* out,
                      std::string* why);
-
-// Merges `r` into the request for the same topology in `requests`, or appends it.
-void merge_request(std::vector<RemovalRequest>& requests, RemovalRequest r);
 
 // Removes the request's elements (warn → propagate → process, then an ending event, as
 // SOFA's manager does); returns how many were handed to the modifier.
