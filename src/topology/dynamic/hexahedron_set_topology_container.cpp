@@ -5,6 +5,7 @@
 namespace sinew {
 
 void HexahedronSetTopologyContainer::create_lower_lists() {
+  drop_foreign_lists();
   // Edges first (sorted pairs), then the faces.
   if (edges_f.get().empty()) {
     if (edges_f.parent()) edges_f.set_parent(nullptr);

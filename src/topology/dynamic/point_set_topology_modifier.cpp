@@ -26,6 +26,17 @@ void PointSetTopologyModifier::init() {
   }
 }
 
+// After every init (the mappings that fill containers included): the container's neighbourhood
+// arrays become the live ones the removals edit, so that the first cut does not pay for building
+// and copying them (≈ 0.2 s on 100k tetrahedra). They are copies of the sorted cache: queries
+// answer the same until something changes.
+void PointSetTopologyModifier::bwd_init() {
+  PointSetTopologyContainer* c = container_ ? dynamic_container() : nullptr;
+  if (!c || state() != ComponentState::valid) return;
+  c->begin_edit();
+  c->end_edit(false, false, false);
+}
+
 bool PointSetTopologyModifier::accepts(const Component& c) const { return dynamic_cast<const PointSetTopologyContainer*>(&c) != nullptr; }
 
 PointSetTopologyContainer* PointSetTopologyModifier::dynamic_container() const {
@@ -217,6 +228,21 @@ void PointSetTopologyModifier::remove_points(std::vector<unsigned> ids, bool rem
 
 void PointSetTopologyModifier::cascade_isolated_points(std::vector<unsigned> points) {
   if (points.empty()) return;
+  // A point is isolated when no element of the container uses it. A removal finds candidates
+  // through its own kind's shells; lists of another kind the container also holds (a hexahedral
+  // container given a grid's triangles and diagonal edges by src=@grid, which SOFA never
+  // updates) may still use one: it stays, rather than leaving those elements dangling.
+  if (PointSetTopologyContainer* c = dynamic_container()) {
+    const topo::DynamicMesh& m = c->begin_edit();
+    auto used = [&](unsigned v) {
+      for (const auto* shells : {&m.edges_around_vertex, &m.triangles_around_vertex, &m.quads_around_vertex,
+                                 &m.tetrahedra_around_vertex, &m.hexahedra_around_vertex})
+        if (v < shells->size() && !(*shells)[v].empty()) return true;
+      return false;
+    };
+    std::erase_if(points, used);
+    if (points.empty()) return;
+  }
   std::sort(points.begin(), points.end(), std::greater<unsigned>());
   warn(TopologyChangeType::points_removed, points);
   propagate_topological_changes();

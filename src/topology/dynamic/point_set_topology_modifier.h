@@ -28,6 +28,7 @@ class PointSetTopologyModifier : public TopologyObject {
                                "Topology"};
 
   void init() override;
+  void bwd_init() override;
   // The container this modifier edits (first of the node, else of its ancestors).
   MeshContainer* container() const { return container_; }
 

@@ -4,7 +4,21 @@
 
 namespace sinew {
 
+void QuadSetTopologyContainer::drop_foreign_lists() {
+  // SOFA's quad and hexahedron containers have no triangle or tetrahedron lists: what src=@grid
+  // brings there is not theirs, and no change would keep it up to date (its points could be
+  // removed under it).
+  auto drop = [](auto& f) {
+    if (f.get().empty()) return;
+    if (f.parent()) f.set_parent(nullptr);
+    f.edit().clear();
+  };
+  drop(triangles_f);
+  drop(tetrahedra_f);
+}
+
 void QuadSetTopologyContainer::create_lower_lists() {
+  drop_foreign_lists();
   // Edges of the quads, (q[j+1], q[j+2]) stored with the smaller index first.
   if (edges_f.get().empty()) {
     if (edges_f.parent()) edges_f.set_parent(nullptr);

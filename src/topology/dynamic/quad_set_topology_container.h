@@ -12,6 +12,8 @@ class QuadSetTopologyContainer : public EdgeSetTopologyContainer {
 
  protected:
   void create_lower_lists() override;
+  // Clears the triangle and tetrahedron lists (not lists of this kind of container).
+  void drop_foreign_lists();
 };
 
 }  // namespace sinew
