@@ -397,3 +397,29 @@ TEST(TopologyRemoval, OglModelFollowsItsSurface) {
   for (const Triangle& t : visual.triangles.value())
     for (unsigned v : t) EXPECT_LT(v, visual.visual_size());
 }
+
+// TopologyBoundingTrasher: after each step, the elements of the highest kind whose barycentre
+// is outside the box go (with the points left unused); the rest stay.
+TEST(TopologyBoundingTrasher, RemovesTheElementsWhoseBarycentreLeftTheBox) {
+  auto s = load(R"(<Node gravity="0 0 0" dt="0.01">
+    <MechanicalObject name="dofs" position="0 0 0  1 0 0  0 1 0  5 0 0  6 0 0  5 1 0  0 0 1"/>
+    <TetrahedronSetTopologyContainer name="topo" tetrahedra="0 1 2 6  3 4 5 6"/>
+    <TetrahedronSetTopologyModifier/>
+    <TopologyBoundingTrasher name="trasher" box="-1 -1 -1 2.5 2 2" position="@dofs.position"/>
+  </Node>)");
+  auto& topo = *get<TetrahedronSetTopologyContainer>(*s.root, "topo");
+  ASSERT_EQ(topo.tetrahedra().size(), 2u);
+  animate(*s.root);
+  // Barycentres (0.25, 0.25, 0.25) inside, (4, 0.25, 0.25) outside: the second goes with its
+  // three own points; the last point (6) takes a freed slot.
+  ASSERT_EQ(topo.tetrahedra().size(), 1u);
+  EXPECT_EQ(topo.nb_points(), 4u);
+  EXPECT_EQ(get<MechanicalObject>(*s.root, "dofs")->size(), 4u);
+  for (unsigned v : topo.tetrahedra()[0]) EXPECT_LT(v, 4u);
+  // A box with the wrong number of values is refused.
+  auto bad = test::build(R"(<Node><MechanicalObject position="0 0 0  1 0 0  0 1 0"/>
+    <TriangleSetTopologyContainer triangles="0 1 2"/><TriangleSetTopologyModifier/>
+    <TopologyBoundingTrasher name="t" box="0 0 0 1"/></Node>)");
+  init_root(*bad.root);
+  EXPECT_TRUE(test::any_contains(test::messages(bad.root->diagnostics(), Severity::error), "box needs 6 values"));
+}

@@ -93,6 +93,29 @@ INSTANTIATE_TEST_SUITE_P(Sofa, TopologicalChangeExamples, ::testing::ValuesIn(kS
   return n;
 });
 
+// TopologyBoundingTrasher.scn: the square falls (gravity −1) out of its box; once its triangles'
+// barycentres cross y = −10 (≈ 4.5 s) they are removed, all of them by step 800.
+TEST(TopologicalChangeExamples, TopologyBoundingTrasherEmptiesTheFallenSquare) {
+  const std::string rel = "Component/Topology/Utility/TopologyBoundingTrasher.scn";
+  if (!fs::exists(kData / "examples" / rel)) GTEST_SKIP() << "SOFA data not found at " << kData;
+  runner::SessionOptions opts;
+  opts.data_paths = {(kData / "share").string(), (kData / "examples").string()};
+  runner::Session session((kData / "examples" / rel).string(), opts);
+  ASSERT_TRUE(session.ok());
+  auto* c = session.root().find_child_named("SquareGravity")->find_local<PointSetTopologyContainer>();
+  ASSERT_EQ(c->triangles().size(), 1450u);
+  std::size_t at_400 = 0;
+  for (int i = 0; i < 800; ++i) {
+    ASSERT_TRUE(session.step()) << "step " << i;
+    ASSERT_EQ(topo::check_dynamic_mesh(c->begin_edit()), "") << "after step " << i;
+    if (i == 399) at_400 = c->triangles().size();
+  }
+  EXPECT_EQ(at_400, 1450u);  // still inside at t = 4 s
+  EXPECT_EQ(c->triangles().size(), 0u);
+  EXPECT_EQ(c->nb_points(), 0u);
+  EXPECT_TRUE(test::messages(session.diagnostics(), Severity::error).empty());
+}
+
 // The list above is every example scene that uses the component.
 TEST(TopologicalChangeExamples, ListIsEveryExampleUsingTheProcessor) {
   if (!fs::exists(kData / "examples")) GTEST_SKIP() << "SOFA data not found at " << kData;
