@@ -36,4 +36,21 @@ inline bool triangle_edges_ready(ForceField& ff, const MeshTopologyBase& t) {
   return false;
 }
 
+// Rest area (Heron's formula on the squared edge lengths `rs`, SOFA's arithmetic) and the
+// cotangents of the angles (cot[j] at the vertex opposite edge j) of triangle `i`. False, with
+// an error naming the triangle, when the area is not positive (a degenerate triangle).
+inline bool triangle_rest_cotangents(const ForceField& ff, unsigned i, const Triangle& tri, const double rs[3],
+                                     double& area, double cot[3]) {
+  area = 0;
+  for (int j = 0; j < 3; ++j) area += rs[j] * (rs[(j + 1) % 3] + rs[(j + 2) % 3] - rs[j]);
+  area = std::sqrt(area) / 4;
+  if (!(area > 0) || !std::isfinite(area)) {
+    ff.msg_error("triangle " + std::to_string(i) + " (" + std::to_string(tri[0]) + " " + std::to_string(tri[1]) + " " +
+                 std::to_string(tri[2]) + ") is degenerate: its rest area is 0");
+    return false;
+  }
+  for (int j = 0; j < 3; ++j) cot[j] = (rs[(j + 1) % 3] + rs[(j + 2) % 3] - rs[j]) / (4 * area);
+  return true;
+}
+
 }  // namespace sinew

@@ -180,3 +180,20 @@ TEST(TriangleEdgeForceFields, PoissonRatioOfOneIsAnError) {
       EXPECT_FALSE(o.init_ok) << cls;
     }
 }
+
+// A triangle of zero rest area is an error naming it, for the three (triangle_rest_cotangents).
+TEST(TriangleEdgeForceFields, DegenerateTriangleIsAnErrorNamingIt) {
+  using namespace sinew::test;
+  TempDir dir;
+  for (const char* cls : {"TriangularBiquadraticSpringsForceField", "TriangularQuadraticSpringsForceField",
+                          "TriangularTensorMassForceField"}) {
+    const Outcome o = run_xml(dir, std::string(R"(<Node name="root" gravity="0 -9.81 0" dt="0.01">
+        <DefaultAnimationLoop/><EulerImplicitSolver/><CGLinearSolver iterations="50" tolerance="1e-9" threshold="1e-12"/>
+        <MechanicalObject position="0 0 0  1 0 0  0 1 0  2 0 0"/>
+        <TriangleSetTopologyContainer triangles="0 1 2  0 1 3"/>
+        <UniformMass totalMass="1"/>
+        <)") + cls + R"( name="ff"/></Node>)");
+    EXPECT_TRUE(any_contains_all(o.errors, {"'ff'", cls, "triangle 1", "degenerate"})) << cls << o.all();
+    EXPECT_FALSE(o.init_ok) << cls;
+  }
+}

@@ -64,17 +64,9 @@ bool TriangularTensorMassForceField::triangle_terms(unsigned i, const MeshTopolo
   double rs[3], cot[3];
   for (int j = 0; j < 3; ++j) p[j] = point(x0, tri[j]);
   for (int j = 0; j < 3; ++j) rs[j] = norm2(p[(j + 1) % 3] - p[(j + 2) % 3]);
-  // Heron's formula on the squared lengths.
   double area = 0;
-  for (int j = 0; j < 3; ++j) area += rs[j] * (rs[(j + 1) % 3] + rs[(j + 2) % 3] - rs[j]);
-  area = std::sqrt(area) / 4;
-  if (!(area > 0) || !std::isfinite(area)) {
-    msg_error("triangle " + std::to_string(i) + " (" + std::to_string(tri[0]) + " " + std::to_string(tri[1]) + " " +
-              std::to_string(tri[2]) + ") is degenerate: its rest area is 0");
-    return false;
-  }
+  if (!triangle_rest_cotangents(*this, i, tri, rs, area, cot)) return false;
   const double lambdastar = lambda_ / (4 * area), mustar = mu_ / (8 * area);
-  for (int j = 0; j < 3; ++j) cot[j] = (rs[(j + 1) % 3] + rs[(j + 2) % 3] - rs[j]) / (4 * area);
   for (int j = 0; j < 3; ++j) {
     const int k = (j + 1) % 3, l = (j + 2) % 3;
     if (te[j] >= edge_tensor_.size()) continue;

@@ -43,19 +43,24 @@ void TriangularBiquadraticSpringsForceField::init() {
     for (std::size_t i = 0; i < p.size(); ++i) p[i] = point(r.data(), static_cast<unsigned>(i));
     initial_points.set(std::move(p));
   }
-  rebuild();
+  if (!rebuild()) {
+    set_state(ComponentState::invalid);
+    return;
+  }
   follow_.owner = this;
   follow_.attach(topology.get());
 }
 
 // SOFA's init: every edge created, then every triangle (adding its stiffness to its edges).
-void TriangularBiquadraticSpringsForceField::rebuild() {
+bool TriangularBiquadraticSpringsForceField::rebuild() {
   const MeshTopologyBase& t = *topology;
   edge_info_.assign(t.edges().size(), EdgeInfo{});
   tri_info_.assign(t.triangles().size(), TriangleInfo{});
   for (unsigned e = 0; e < edge_info_.size(); ++e) create_edge(e, t);
-  for (unsigned i = 0; i < tri_info_.size(); ++i) create_triangle(i, t);
+  bool ok = true;
+  for (unsigned i = 0; i < tri_info_.size(); ++i) ok = create_triangle(i, t) && ok;
   update_matrix_ = true;
+  return ok;
 }
 
 void TriangularBiquadraticSpringsForceField::create_edge(unsigned e, const MeshTopologyBase& t) {
@@ -67,28 +72,29 @@ void TriangularBiquadraticSpringsForceField::create_edge(unsigned e, const MeshT
   ei.stiffness = 0;
 }
 
-void TriangularBiquadraticSpringsForceField::create_triangle(unsigned i, const MeshTopologyBase& t) {
+bool TriangularBiquadraticSpringsForceField::create_triangle(unsigned i, const MeshTopologyBase& t) {
   const double* x0 = mstate->read(kRestPosition).data();
   const Triangle& tri = t.triangles()[i];
   const auto& te = t.edges_in_triangle()[i];
   TriangleInfo& ti = tri_info_[i];
   double rs[3], cot[3];
   for (int j = 0; j < 3; ++j) rs[j] = edge_info_[te[j]].rest_square_length;
-  // Heron's formula on the squared lengths.
   double area = 0;
-  for (int j = 0; j < 3; ++j) area += rs[j] * (rs[(j + 1) % 3] + rs[(j + 2) % 3] - rs[j]);
-  area = std::sqrt(area) / 4;
+  if (!triangle_rest_cotangents(*this, i, tri, rs, area, cot)) {
+    ti = TriangleInfo{};
+    return false;
+  }
   ti.rest_area = area;
   const Vec3 a = point(x0, tri[0]);
   ti.current_normal = cross(point(x0, tri[1]) - a, point(x0, tri[2]) - a) / (2 * area);
   ti.last_valid_normal = ti.current_normal;
-  for (int j = 0; j < 3; ++j) cot[j] = (rs[(j + 1) % 3] + rs[(j + 2) % 3] - rs[j]) / (4 * area);
   for (int j = 0; j < 3; ++j) {
     const int k = (j + 1) % 3, l = (j + 2) % 3;
     ti.gamma[j] = (2 * cot[k] * cot[l] * (lambda_ + mu_) - mu_) / (16 * area);
     ti.stiffness[j] = (2 * cot[j] * cot[j] * (lambda_ + mu_) + mu_) / (16 * area);
     edge_info_[te[j]].stiffness += ti.stiffness[j];
   }
+  return true;
 }
 
 // SOFA's edge and triangle data: removals before the lists change, additions after.

@@ -68,9 +68,9 @@ class TriangularBiquadraticSpringsForceField final : public ForceField {
   const std::vector<TriangleInfo>& triangle_info() const { return tri_info_; }
 
  private:
-  void rebuild();
+  bool rebuild();  // false: a degenerate triangle (error given)
   void create_edge(unsigned e, const MeshTopologyBase& t);
-  void create_triangle(unsigned i, const MeshTopologyBase& t);
+  bool create_triangle(unsigned i, const MeshTopologyBase& t);
   void update_matrix();
   bool lists_match() const;
 

@@ -80,18 +80,11 @@ bool TriangularQuadraticSpringsForceField::create_triangle(unsigned i, const Mes
     l[j] = edge_info_[te[j]].rest_length;
     rs[j] = l[j] * l[j];
   }
-  // Heron's formula on the squared lengths.
   double area = 0;
-  for (int j = 0; j < 3; ++j) area += rs[j] * (rs[(j + 1) % 3] + rs[(j + 2) % 3] - rs[j]);
-  area = std::sqrt(area) / 4;
-  if (!(area > 0) || !std::isfinite(area)) {
-    const Triangle& tri = t.triangles()[i];
-    msg_error("triangle " + std::to_string(i) + " (" + std::to_string(tri[0]) + " " + std::to_string(tri[1]) + " " +
-              std::to_string(tri[2]) + ") is degenerate: its rest area is 0");
+  if (!triangle_rest_cotangents(*this, i, t.triangles()[i], rs, area, cot)) {
     ti = TriangleInfo{};
     return false;
   }
-  for (int j = 0; j < 3; ++j) cot[j] = (rs[(j + 1) % 3] + rs[(j + 2) % 3] - rs[j]) / (4 * area);
   for (int j = 0; j < 3; ++j) {
     const int k = (j + 1) % 3, m = (j + 2) % 3;
     ti.gamma[j] = l[k] * l[m] * (2 * cot[k] * cot[m] * (lambda_ + mu_) - mu_) / (8 * area);
