@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "core/init_checks.h"
 #include "core/roles.h"
@@ -34,6 +35,15 @@ inline bool triangle_edges_ready(ForceField& ff, const MeshTopologyBase& t) {
                " gives no edges of its triangles (a triangular set topology or a mesh with triangles is required)");
   ff.set_state(ComponentState::invalid);
   return false;
+}
+
+// initialPoints when not given: the state's rest positions.
+inline void default_initial_points(const MechanicalState& s, Field<std::vector<Vec3>>& initial_points) {
+  if (!initial_points.get().empty()) return;
+  const std::vector<double>& r = s.read(kRestPosition);
+  std::vector<Vec3> p(r.size() / 3);
+  for (std::size_t i = 0; i < p.size(); ++i) p[i] = Vec3(r[3 * i], r[3 * i + 1], r[3 * i + 2]);
+  initial_points.set(std::move(p));
 }
 
 // Rest area (Heron's formula on the squared edge lengths `rs`, SOFA's arithmetic) and the

@@ -15,6 +15,19 @@
 
 namespace sinew {
 
+// SOFA's init of that data: every edge created, then every triangle (adding its stiffness to its
+// edges). False when a triangle could not be created (degenerate: its error already given).
+template <class EdgeInfo, class TriInfo, class CreateEdge, class CreateTriangle>
+bool build_triangle_springs(const MeshTopologyBase& t, std::vector<EdgeInfo>& edges, std::vector<TriInfo>& tris,
+                            CreateEdge&& create_edge, CreateTriangle&& create_triangle) {
+  edges.assign(t.edges().size(), EdgeInfo{});
+  tris.assign(t.triangles().size(), TriInfo{});
+  for (unsigned e = 0; e < edges.size(); ++e) create_edge(e);
+  bool ok = true;
+  for (unsigned i = 0; i < tris.size(); ++i) ok = create_triangle(i) && ok;
+  return ok;
+}
+
 // SOFA's edge and triangle data through one topological event (removals arrive before the lists
 // change, additions after): a removed triangle takes its stiffness back from its edges, then the
 // last record moves into its slot; added edges and triangles get records made by

@@ -36,12 +36,7 @@ void TriangularQuadraticSpringsForceField::init() {
   }
   if (!triangle_edge_lame(*this, young_modulus.get(), poisson_ratio.get(), lambda_, mu_)) return;
   if (!triangle_edges_ready(*this, *topology)) return;
-  if (initial_points.get().empty()) {
-    const std::vector<double>& r = mstate->read(kRestPosition);
-    std::vector<Vec3> p(r.size() / 3);
-    for (std::size_t i = 0; i < p.size(); ++i) p[i] = point(r.data(), static_cast<unsigned>(i));
-    initial_points.set(std::move(p));
-  }
+  default_initial_points(*mstate, initial_points);
   if (!rebuild()) {
     set_state(ComponentState::invalid);
     return;
@@ -50,16 +45,12 @@ void TriangularQuadraticSpringsForceField::init() {
   follow_.attach(topology.get());
 }
 
-// SOFA's init: every edge created, then every triangle (adding its stiffness to its edges).
 bool TriangularQuadraticSpringsForceField::rebuild() {
   const MeshTopologyBase& t = *topology;
-  edge_info_.assign(t.edges().size(), EdgeInfo{});
-  tri_info_.assign(t.triangles().size(), TriangleInfo{});
-  for (unsigned e = 0; e < edge_info_.size(); ++e) create_edge(e, t);
-  bool ok = true;
-  for (unsigned i = 0; i < tri_info_.size(); ++i) ok = create_triangle(i, t) && ok;
   update_matrix_ = true;
-  return ok;
+  return build_triangle_springs(
+      t, edge_info_, tri_info_, [&](unsigned e) { create_edge(e, t); },
+      [&](unsigned i) { return create_triangle(i, t); });
 }
 
 void TriangularQuadraticSpringsForceField::create_edge(unsigned e, const MeshTopologyBase& t) {
