@@ -8,17 +8,7 @@ namespace sinew {
 
 void follow_point_removal(std::vector<unsigned>& subset, const std::vector<unsigned>& decreasing,
                           std::size_t nb_points) {
-  // SOFA reads the last index once before the walk (InvalidID when there are no points).
-  bool have_last = nb_points > 0;
-  unsigned last = have_last ? static_cast<unsigned>(nb_points - 1) : 0;
-  for (unsigned r : decreasing) {
-    if (subset.empty()) return;
-    subset.erase(std::remove(subset.begin(), subset.end(), r), subset.end());
-    if (!have_last) continue;
-    std::replace(subset.begin(), subset.end(), last, r);
-    if (last == 0) have_last = false;  // SOFA's index wraps to InvalidID
-    else --last;
-  }
+  follow_subset_removal(subset, decreasing, nb_points, [](std::size_t) {});
 }
 
 void SubsetIndicesFollower::bind(Field<std::vector<unsigned>>* indices, std::vector<std::vector<unsigned>*> extra,

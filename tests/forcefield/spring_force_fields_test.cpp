@@ -7,7 +7,6 @@
 #include <cmath>
 
 #include "forcefield/load/constant_force_field.h"
-#include "forcefield/load/edge_pressure_force_field.h"
 #include "forcefield/spring/quadular_bending_springs.h"
 #include "forcefield/load/interaction_ellipsoid_force_field.h"
 #include "forcefield/spring/mesh_spring_force_field.h"
@@ -625,22 +624,6 @@ TEST(QuadularBendingSprings, TwoCrossingSpringsPerSharedEdgeWithExactTangent) {
   for (std::size_t r = 0; r < n; ++r)
     for (std::size_t c = 0; c < n; ++c) Kdx[r] += K[r * n + c] * dx[c];
   expect_near_rel(Kdx, dforce(*ff, st, dx), 1e-12, "quadular matrix");
-}
-
-TEST(EdgePressureForceField, HalfOfPressureTimesRestLengthOnEachVertex) {
-  auto s = load(R"(<Node gravity="0 0 0">
-    <MeshTopology name="topo" position="0 0 0  2 0 0  2 1 0" edges="0 1  1 2"/>
-    <MechanicalObject name="dofs"/>
-    <EdgePressureForceField name="ff" edges="1 2" pressure="0 0 1"/>
-  </Node>)");
-  auto* ff = get<EdgePressureForceField>(*s.root, "ff");
-  ASSERT_NE(ff, nullptr);
-  ASSERT_EQ(ff->state(), ComponentState::valid);
-  MechanicalState& st = *s.root->mechanical_state;
-  const auto f = force_at(*ff, st, st.write(kPosition));
-  EXPECT_DOUBLE_EQ(f[2], 0.0);
-  EXPECT_DOUBLE_EQ(f[5], 0.5);
-  EXPECT_DOUBLE_EQ(f[8], 0.5);
 }
 
 TEST(SpringForceField, StiffSpringForceFieldIsTheOldName) {
