@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "topology/dynamic/edge_set_topology_modifier.h"
 #include "topology/dynamic/quad_set_topology_container.h"
 #include "test_scene.h"
 
@@ -152,4 +153,83 @@ TEST(Edge2QuadTopologicalMapping, BadInputIsAnErrorNotACrash) {
       <Edge2QuadTopologicalMapping name="map" nbPointsOnEachCircle="4" radius="1" input="@../edges" output="@quads"/>
     </Node></Node>)");
   EXPECT_TRUE(test::any_contains(errors(m), "quad modifier"));
+}
+
+// ---------------------------------------------------------------- topological changes
+namespace {
+
+// The beam with a modifier on its edges, so that they can change while the tube follows.
+std::string dynamic_beam(const std::string& mapping_attrs) {
+  std::string xml = beam(mapping_attrs);
+  const std::string after = R"(edges="0 1  1 2"/>)";
+  xml.insert(xml.find(after) + after.size(), R"(<EdgeSetTopologyModifier name="emod"/>)");
+  return xml;
+}
+
+}  // namespace
+
+TEST(Edge2QuadTopologicalMapping, RemovedEdgeTakesItsQuadsAndIsolatedRingAway) {
+  auto s = test::load(dynamic_beam("nbPointsOnEachCircle='4' radius='0.5'"));
+  auto& map = *test::get<Edge2QuadTopologicalMapping>(tube(s), "map");
+  auto& quads = *test::get<QuadSetTopologyContainer>(tube(s), "quads");
+  auto* emod = test::get<EdgeSetTopologyModifier>(*s.root, "emod");
+  auto* ring = test::get<MechanicalState>(tube(s), "ring");
+  ASSERT_NE(emod, nullptr);
+  ASSERT_EQ(map.state(), ComponentState::valid);
+  const std::vector<double> x_before = ring->read(kPosition);
+  emod->remove_edges({0}, false);
+  // Edge 0's quads 0..3 go (quads 7, 6, 5, 4 move into their slots, in that order of removal),
+  // then ring 0 (points 0..3), isolated, goes with its DoFs: points 11, 10, 9, 8 fill the slots.
+  const std::vector<Quad> want = {{4, 0, 1, 5}, {5, 1, 2, 6}, {6, 2, 3, 7}, {7, 3, 0, 4}};
+  EXPECT_EQ(quads.quads(), want);
+  EXPECT_EQ(quads.nb_points(), 8u);
+  ASSERT_EQ(ring->size(), 8u);
+  EXPECT_DOUBLE_EQ(ring->read(kPosition)[0], x_before[8 * 3]);  // the old ring of frame 2 (x = 2)
+  EXPECT_DOUBLE_EQ(ring->read(kPosition)[4 * 3], x_before[4 * 3]);
+  // SOFA's bookkeeping: the input's last edge (1) took slot 0 and owns the four quads left.
+  EXPECT_EQ(map.quad_to_edge(), (std::vector<unsigned>{0, 0, 0, 0}));
+  EXPECT_EQ(map.edge_to_quads(0), (std::vector<unsigned>{0, 1, 2, 3}));
+  EXPECT_TRUE(map.edge_to_quads(1).empty());
+  EXPECT_EQ(quads.edges().size(), 12u);  // two rings of 4 and 4 along the edge
+
+  // Removing the remaining edge empties the tube.
+  emod->remove_edges({0}, false);
+  EXPECT_TRUE(quads.quads().empty());
+  EXPECT_EQ(quads.nb_points(), 0u);
+  EXPECT_TRUE(map.quad_to_edge().empty());
+}
+
+TEST(Edge2QuadTopologicalMapping, AddedEdgeGetsItsRingOfQuads) {
+  auto s = test::load(dynamic_beam("nbPointsOnEachCircle='4' radius='0.5' flipNormals='1'"));
+  auto& map = *test::get<Edge2QuadTopologicalMapping>(tube(s), "map");
+  auto& quads = *test::get<QuadSetTopologyContainer>(tube(s), "quads");
+  auto* emod = test::get<EdgeSetTopologyModifier>(*s.root, "emod");
+  ASSERT_NE(emod, nullptr);
+  emod->add_edges({Edge{0, 2}});
+  // Quads of the new edge 2 = (0, 2) are appended unflipped (SOFA ignores flipNormals here).
+  ASSERT_EQ(quads.quads().size(), 12u);
+  EXPECT_EQ(quads.quads()[8], (Quad{0, 8, 9, 1}));
+  EXPECT_EQ(quads.quads()[11], (Quad{3, 11, 8, 0}));
+  EXPECT_EQ(quads.quads()[0], (Quad{1, 5, 4, 0}));  // the init ones stay flipped
+  EXPECT_EQ(map.edge_to_quads(2), (std::vector<unsigned>{8, 9, 10, 11}));
+  std::vector<unsigned> in;
+  ASSERT_TRUE(map.input_elements(9, in));
+  EXPECT_EQ(in, std::vector<unsigned>{2});
+}
+
+TEST(Edge2QuadTopologicalMapping, AddedPointsGetARingWithSofasAncestorRows) {
+  auto s = test::load(dynamic_beam("nbPointsOnEachCircle='4' radius='0.5'"));
+  auto& quads = *test::get<QuadSetTopologyContainer>(tube(s), "quads");
+  auto* emod = test::get<EdgeSetTopologyModifier>(*s.root, "emod");
+  auto* ring = test::get<MechanicalState>(tube(s), "ring");
+  ASSERT_NE(emod, nullptr);
+  ASSERT_TRUE(emod->add_points(1, {{0, 2}}, {{0.5, 0.5}}));
+  EXPECT_EQ(quads.nb_points(), 16u);
+  ASSERT_EQ(ring->size(), 16u);
+  // Ring 0 of the new point: ancestors {0·4, 2·4} with coefficients {0.5·4, 0.5·4} (SOFA maps the
+  // coefficients as indices): 2·(0, 0.5, 0) + 2·(2, 0.5, 0) = (4, 2, 0).
+  const std::vector<double>& x = ring->read(kPosition);
+  EXPECT_NEAR(x[12 * 3 + 0], 4.0, 1e-12);
+  EXPECT_NEAR(x[12 * 3 + 1], 2.0, 1e-12);
+  EXPECT_NEAR(x[12 * 3 + 2], 0.0, 1e-12);
 }

@@ -76,15 +76,19 @@ void Edge2QuadTopologicalMapping::init() {
   const bool flip = flip_normals.value();
   std::vector<Quad> quads;
   quad_to_edge_.clear();
+  edge_to_quads_.clear();
   auto add_rings = [&](unsigned e, bool edge_list_order) {
     const unsigned p0 = edges[e][0], p1 = edges[e][1];
+    std::vector<unsigned> out;
     for (unsigned j = 0; j < n; ++j) {
       const unsigned q0 = p0 * n + j, q1 = p1 * n + j, q2 = p1 * n + (j + 1) % n, q3 = p0 * n + (j + 1) % n;
       if (!flip) quads.push_back({q0, q1, q2, q3});
       else if (edge_list_order) quads.push_back({q0, q3, q2, q1});
       else quads.push_back({q3, q2, q1, q0});
       quad_to_edge_.push_back(e);
+      out.push_back(static_cast<unsigned>(quad_to_edge_.size() - 1));
     }
+    set_edge_quads(e, std::move(out));
   };
   if (edge_list.get().empty()) {
     quads.reserve(edges.size() * n);
@@ -153,6 +157,127 @@ bool Edge2QuadTopologicalMapping::write_ring_positions(std::size_t n_points, uns
     }
   }
   return true;
+}
+
+const std::vector<unsigned>& Edge2QuadTopologicalMapping::edge_to_quads(unsigned edge) const {
+  static const std::vector<unsigned> none;
+  return edge < edge_to_quads_.size() ? edge_to_quads_[edge] : none;
+}
+
+void Edge2QuadTopologicalMapping::set_edge_quads(unsigned edge, std::vector<unsigned> quads) {
+  if (edge >= edge_to_quads_.size()) edge_to_quads_.resize(edge + 1);
+  edge_to_quads_[edge] = std::move(quads);
+}
+
+bool Edge2QuadTopologicalMapping::input_elements(unsigned out, std::vector<unsigned>& in) const {
+  if (out >= quad_to_edge_.size()) return false;
+  in.push_back(quad_to_edge_[out]);
+  return true;
+}
+
+void Edge2QuadTopologicalMapping::update_top_down() {
+  if (!input || !output || !to_quad_modifier || state() != ComponentState::valid) return;
+  // Handlers below queue events on the output only; the input's list is stable here.
+  const std::vector<TopologyChange> changes = input->topology_changes();
+  for (const TopologyChange& c : changes) {
+    switch (c.type) {
+      case TopologyChangeType::ending: to_quad_modifier->notify_ending_event(); break;
+      case TopologyChangeType::edges_added: on_edges_added(c.indices); break;
+      case TopologyChangeType::edges_removed: on_edges_removed(c.indices); break;
+      case TopologyChangeType::points_added: on_points_added(c); break;
+      default: break;  // SOFA relays nothing else (point removals included)
+    }
+  }
+}
+
+// Received after the input changed: the new edges can be read. SOFA never flips these quads.
+void Edge2QuadTopologicalMapping::on_edges_added(const std::vector<unsigned>& added) {
+  const unsigned n = nb_points_on_each_circle.value();
+  const std::vector<Edge>& edges = input->edges();
+  std::vector<Quad> create;
+  for (unsigned k : added) {
+    if (k >= edges.size()) continue;
+    const unsigned p0 = edges[k][0], p1 = edges[k][1];
+    std::vector<unsigned> out;
+    for (unsigned j = 0; j < n; ++j) {
+      create.push_back({p0 * n + j, p1 * n + j, p1 * n + (j + 1) % n, p0 * n + (j + 1) % n});
+      quad_to_edge_.push_back(k);
+      out.push_back(static_cast<unsigned>(quad_to_edge_.size() - 1));
+    }
+    set_edge_quads(k, std::move(out));
+  }
+  if (!create.empty()) to_quad_modifier->add_quads(create);
+}
+
+// Received before the input changes. For each removed edge (decreasing), SOFA first mirrors the
+// input's swap-with-last in its edge → quads map, then walks the N last output quads down from
+// the end, swapping their entries with the removed quads' ones, and finally removes the removed
+// edge's N quads (as they were numbered when the event arrived for that edge) from the output.
+void Edge2QuadTopologicalMapping::on_edges_removed(const std::vector<unsigned>& removed) {
+  const unsigned n = nb_points_on_each_circle.value();
+  if (n == 0 || input->edges().empty()) return;
+  unsigned last = static_cast<unsigned>(input->edges().size() - 1);
+  unsigned ind_last = static_cast<unsigned>(output->quads().size());
+  const std::size_t nq = quad_to_edge_.size();
+  auto swap_entries = [&](unsigned a, unsigned b) {
+    if (a < nq && b < nq) std::swap(quad_to_edge_[a], quad_to_edge_[b]);
+  };
+  for (unsigned k : removed) {
+    if (!edge_mapped(k) || edge_to_quads_[k].size() != n || ind_last < n || quad_to_edge_.size() < n) {
+      msg_info("input edge " + std::to_string(k) + " has no quads of its own in the output; not removed");
+      --last;
+      continue;
+    }
+    const std::vector<unsigned> ind_k = edge_to_quads_[k];  // also the quads removed below
+    --ind_last;
+    if (edge_mapped(last) && k != last) {
+      const std::vector<unsigned> ind_real_last = edge_to_quads_[last];
+      set_edge_quads(k, ind_real_last);
+      set_edge_quads(last, ind_k);
+      for (unsigned j = 0; j < n && j < ind_real_last.size(); ++j) swap_entries(ind_real_last[j], ind_k[j]);
+    }
+    if (ind_k[n - 1] != ind_last && ind_last < nq && ind_k[n - 1] < nq) {
+      set_edge_quads(quad_to_edge_[ind_last], ind_k);
+      std::vector<unsigned> tail;
+      for (unsigned j = 0; j < n; ++j) tail.push_back(ind_last - j);
+      set_edge_quads(quad_to_edge_[ind_k[n - 1]], std::move(tail));
+      swap_entries(ind_k[n - 1], ind_last);
+    }
+    for (unsigned j = 1; j < n; ++j) {
+      --ind_last;
+      if (ind_k[n - 1 - j] != ind_last) swap_entries(ind_k[n - 1 - j], ind_last);
+    }
+    const unsigned gone = quad_to_edge_.back();
+    if (gone < edge_to_quads_.size()) edge_to_quads_[gone].clear();
+    quad_to_edge_.resize(quad_to_edge_.size() - n);
+    to_quad_modifier->remove_quads(ind_k, true, true);
+    --last;
+  }
+}
+
+// SOFA's relay of added input points: N output points each, with their DoFs. Its ancestor and
+// coefficient rows accumulate over the rings (row j holds the entries of rings 0..j) and the
+// coefficients go through the same a·N + j transform as the indices; reproduced as is.
+void Edge2QuadTopologicalMapping::on_points_added(const TopologyChange& c) {
+  const unsigned n = nb_points_on_each_circle.value();
+  const unsigned added = static_cast<unsigned>(c.indices.size());
+  if (n == 0 || added == 0) return;
+  std::vector<std::vector<unsigned>> ancestors;
+  std::vector<std::vector<double>> coefficients;
+  const bool with_rows = c.ancestors.size() == added && c.coefficients.size() == added;
+  if (with_rows) {
+    for (unsigned i = 0; i < added; ++i) {
+      std::vector<unsigned> row_a;
+      std::vector<double> row_c;
+      for (unsigned j = 0; j < n; ++j) {
+        for (unsigned a : c.ancestors[i]) row_a.push_back(a * n + j);
+        for (double w : c.coefficients[i]) row_c.push_back(w * n + j);
+        ancestors.push_back(row_a);
+        coefficients.push_back(row_c);
+      }
+    }
+  }
+  to_quad_modifier->add_points(added * n, std::move(ancestors), std::move(coefficients), true);
 }
 
 void register_edge2_quad_topological_mapping(Registry& r) {

@@ -15,11 +15,18 @@
 // flipNormals reverses each quad: (q3, q2, q1, q0) when every edge is mapped,
 // (q0, q3, q2, q1) with an edgeList (SOFA builds the two cases differently).
 //
-// Only the construction at init exists. SOFA also forwards edge and point
-// additions, removals and renumberings to the quads; no SOFA example exercises
-// that (the one scene that would, through EdgeSetController, is commented out
-// in Demos/Coil.scn), so it is not implemented: a change of the input edges
-// after init is not reflected in the output.
+// The output follows the input's changes as SOFA's updateTopologicalMappingTopDown:
+//   - EDGESADDED: N quads (q0, q1, q2, q3) per new edge, appended in one add_quads (never
+//     flipped, as SOFA);
+//   - EDGESREMOVED: each removed edge's N quads are removed on their own, with isolated edges
+//     and points (removeQuads(..., true, true)), after SOFA's step-by-step bookkeeping of its
+//     edge → quads map and quad → edge list (reproduced, so later removals pick the same quads);
+//   - POINTSADDED: N output points per new input point, with their DoFs; SOFA builds the
+//     ancestor rows of ring j from the input ancestors a as a·N + j accumulated over the rings
+//     0..j, and the coefficient rows the same way from the coefficients (c·N + j): reproduced;
+//   - the ending event is relayed.
+// Point removals are not relayed (SOFA ignores POINTSREMOVED here); SOFA's POINTSRENUMBERING
+// has no counterpart in Sinew's events.
 #pragma once
 
 #include "topology/dynamic/quad_set_topology_container.h"
@@ -46,14 +53,26 @@ class Edge2QuadTopologicalMapping final : public TopologicalMapping {
       this, "toQuadModifier", "output quad modifier (default: the one found from the output's node)"};
 
   void init() override;
+  void update_top_down() override;
+  bool input_elements(unsigned out, std::vector<unsigned>& in) const override;
 
-  // Input edge of each output quad (SOFA's Loc2GlobDataVec), filled at init.
+  // Input edge of each output quad (SOFA's Loc2GlobDataVec).
   const std::vector<unsigned>& quad_to_edge() const { return quad_to_edge_; }
+  // Output quads of an input edge (SOFA's In2OutMap; empty when the edge is not mapped).
+  const std::vector<unsigned>& edge_to_quads(unsigned edge) const;
 
  private:
   // Rings of every input point written into the output node's Vec3d state, if any; false after an error.
   bool write_ring_positions(std::size_t n_points, unsigned n);
+  void set_edge_quads(unsigned edge, std::vector<unsigned> quads);
+  bool edge_mapped(unsigned edge) const { return edge < edge_to_quads_.size() && !edge_to_quads_[edge].empty(); }
+  void on_edges_added(const std::vector<unsigned>& added);
+  void on_edges_removed(const std::vector<unsigned>& removed);
+  void on_points_added(const TopologyChange& c);
+
   std::vector<unsigned> quad_to_edge_;
+  // SOFA keeps a std::map; a flat array indexed by input edge (empty: absent) is the same relation.
+  std::vector<std::vector<unsigned>> edge_to_quads_;
 };
 
 }  // namespace sinew
