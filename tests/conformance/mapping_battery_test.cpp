@@ -134,6 +134,13 @@ const std::vector<MappingCase> kCases = {
      kJacobian | kGeometric | kAssembledGeometric},
     {"DistanceMultiMapping", kTwoInputs, kJacobian | kGeometric | kAssembledGeometric},
     {"DeformableOnRigidFrameMapping", kOnFrame, kJacobian},
+    // Two tetrahedra refined by their topological mapping: input points and edge midpoints.
+    {"SimpleTesselatedTetraMechanicalMapping",
+     node("<TetrahedronSetTopologyContainer name='topo' " + kTetPoints +
+          "/><MechanicalObject name='in'/><Node name='child'><TetrahedronSetTopologyContainer name='fine'/>"
+          "<SimpleTesselatedTetraTopologicalMapping input='@../topo' output='@fine'/><MechanicalObject name='out'/>"
+          "<SimpleTesselatedTetraMechanicalMapping name='map'/></Node>"),
+     kJacobian},
 };
 
 // Registered mappings without a case, and why. None (visual models such as OglModel are mapping

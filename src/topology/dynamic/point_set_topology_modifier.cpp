@@ -77,6 +77,11 @@ void visit_topology_change(Node& n, MeshTopologyBase& source) {
       tm->update_top_down();
   for (const auto& o : n.objects()) o->handle_topology_change(source);
   for (const auto& c : n.children()) visit_topology_change(*c, source);
+  // SOFA's TopologyChangeVisitor::processNodeBottomUp: mappings whose output is the source.
+  for (const auto& o : n.objects())
+    if (auto* tm = dynamic_cast<TopologicalMapping*>(o.get());
+        tm && tm->output.get() && static_cast<MeshTopologyBase*>(tm->output.get()) == &source)
+      tm->update_bottom_up();
 }
 
 // SOFA's StateChangeVisitor: the states of the subtree whose topology is `source` lose the

@@ -26,6 +26,11 @@ class TopologicalMapping : public Component {
   // with input->topology_changes() listing the events). Default: the output does not follow;
   // one warning says so (mappings that follow override this).
   virtual void update_top_down();
+  // The output is changing (SOFA's updateTopologicalMappingBottomUp): called on the way back up
+  // the propagation visit of the output's modifier, after the subtree of the mapping's node, with
+  // output->topology_changes() listing the events. Default: nothing (SOFA's mappings other than
+  // SimpleTesselatedTetra do not propagate from output to input).
+  virtual void update_bottom_up() {}
 
   // The input elements output element `out` stands for (SOFA's getGlobIndex then getFromIndex):
   // how a removal asked on the output (a carved collision surface) reaches the input. Appends
