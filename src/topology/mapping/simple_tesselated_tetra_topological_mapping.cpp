@@ -103,50 +103,38 @@ void SimpleTesselatedTetraTopologicalMapping::update_top_down() {
   }
 }
 
-void SimpleTesselatedTetraTopologicalMapping::swap_input_points(unsigned a, unsigned b) {
-  auto& from = point_mapped_from_point.edit();
+// Input points and edges share one bookkeeping: `from` maps each input element to its output point
+// and pointSource holds code(i) for element i (i+1 for a point, ~i = −(i+1) for an edge).
+void SimpleTesselatedTetraTopologicalMapping::swap_input(std::vector<unsigned>& from, unsigned a, unsigned b,
+                                                         unsigned (*code)(unsigned)) {
   auto& src = point_source.edit();
   if (a >= from.size() || b >= from.size()) return;
   const unsigned am = from[a], bm = from[b];
   from[a] = bm;
-  if (bm != kNone && bm < src.size()) src[bm] = a + 1;
+  if (bm != kNone && bm < src.size()) src[bm] = code(a);
   from[b] = am;
-  if (am != kNone && am < src.size()) src[am] = b + 1;
+  if (am != kNone && am < src.size()) src[am] = code(b);
 }
 
-void SimpleTesselatedTetraTopologicalMapping::remove_input_points(const std::vector<unsigned>& removed) {
-  auto& from = point_mapped_from_point.edit();
+void SimpleTesselatedTetraTopologicalMapping::remove_input(std::vector<unsigned>& from,
+                                                           const std::vector<unsigned>& removed,
+                                                           unsigned (*code)(unsigned)) {
   auto& src = point_source.edit();
   unsigned last = static_cast<unsigned>(from.size()) - 1u;  // wraps when empty, as SOFA's Index
   for (unsigned r : removed) {
-    swap_input_points(r, last);
+    swap_input(from, r, last, code);
     if (last < from.size() && from[last] != kNone && from[last] < src.size()) src[from[last]] = 0;
     --last;
   }
   from.resize(last + 1u);
 }
 
-void SimpleTesselatedTetraTopologicalMapping::swap_input_edges(unsigned a, unsigned b) {
-  auto& from = point_mapped_from_edge.edit();
-  auto& src = point_source.edit();
-  if (a >= from.size() || b >= from.size()) return;
-  const unsigned am = from[a], bm = from[b];
-  from[a] = bm;
-  if (bm != kNone && bm < src.size()) src[bm] = ~a;
-  from[b] = am;
-  if (am != kNone && am < src.size()) src[am] = ~b;
+void SimpleTesselatedTetraTopologicalMapping::remove_input_points(const std::vector<unsigned>& removed) {
+  remove_input(point_mapped_from_point.edit(), removed, [](unsigned i) { return i + 1; });
 }
 
 void SimpleTesselatedTetraTopologicalMapping::remove_input_edges(const std::vector<unsigned>& removed) {
-  auto& from = point_mapped_from_edge.edit();
-  auto& src = point_source.edit();
-  unsigned last = static_cast<unsigned>(from.size()) - 1u;
-  for (unsigned r : removed) {
-    swap_input_edges(r, last);
-    if (last < from.size() && from[last] != kNone && from[last] < src.size()) src[from[last]] = 0;
-    --last;
-  }
-  from.resize(last + 1u);
+  remove_input(point_mapped_from_edge.edit(), removed, [](unsigned i) { return ~i; });
 }
 
 void SimpleTesselatedTetraTopologicalMapping::swap_input_tetrahedra(unsigned a, unsigned b) {

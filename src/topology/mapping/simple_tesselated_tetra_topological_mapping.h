@@ -61,9 +61,9 @@ class SimpleTesselatedTetraTopologicalMapping final : public TopologicalMapping 
 
  private:
   // Input side (top-down).
-  void swap_input_points(unsigned a, unsigned b);
+  void swap_input(std::vector<unsigned>& from, unsigned a, unsigned b, unsigned (*code)(unsigned));
+  void remove_input(std::vector<unsigned>& from, const std::vector<unsigned>& removed, unsigned (*code)(unsigned));
   void remove_input_points(const std::vector<unsigned>& removed);
-  void swap_input_edges(unsigned a, unsigned b);
   void remove_input_edges(const std::vector<unsigned>& removed);
   void swap_input_tetrahedra(unsigned a, unsigned b);
   void remove_input_tetrahedra(const std::vector<unsigned>& removed);
