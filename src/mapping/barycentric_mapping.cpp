@@ -147,29 +147,29 @@ BarycentricMapping::Located BarycentricMapping::locate(const std::vector<double>
   static const std::vector<Triangle> no_tris;
   static const std::vector<Quad> no_quads;
   const bool mesh = mapper_ == "Mesh", set = !mesh;
-  const std::vector<Tetra>& T = mesh || mapper_ == "TetrahedronSet" ? topo.tetrahedra() : no_tetras;
-  const std::vector<Hexa>& H = mesh || mapper_ == "HexahedronSet" ? topo.hexahedra() : no_hexas;
-  if (!T.empty() || !H.empty()) {
-    if (!check(T, "tetrahedron") || !check(H, "hexahedron")) return r;
-    r.report = bary_volume(T, H, set, in, out, table_);
-    r.element = "element";
-    r.n_elements = T.size() + H.size();
+  // The elements of one dimension (both kinds compete; a set-container mapper leaves one empty).
+  // False when there are none.
+  auto dimension = [&](const auto& A, const char* a, const auto& B, const char* b, auto bary, const char* word) {
+    if (A.empty() && B.empty()) return false;
+    if (check(A, a) && check(B, b)) {
+      r.report = bary(A, B, set, in, out, table_);
+      r.element = word;
+      r.n_elements = A.size() + B.size();
+    }
+    return true;
+  };
+  if (dimension(mesh || mapper_ == "TetrahedronSet" ? topo.tetrahedra() : no_tetras, "tetrahedron",
+                mesh || mapper_ == "HexahedronSet" ? topo.hexahedra() : no_hexas, "hexahedron", bary_volume,
+                "element"))
     return r;
-  }
   if (mapper_ == "TetrahedronSet" || mapper_ == "HexahedronSet") {
     bad = std::string("no ") + (mapper_ == "TetrahedronSet" ? "tetrahedron" : "hexahedron") + " left in " +
           topo.describe();
     return r;
   }
-  const std::vector<Triangle>& Tr = mesh || mapper_ == "TriangleSet" ? topo.triangles() : no_tris;
-  const std::vector<Quad>& Q = mesh || mapper_ == "QuadSet" ? topo.quads() : no_quads;
-  if (!Tr.empty() || !Q.empty()) {
-    if (!check(Tr, "triangle") || !check(Q, "quad")) return r;
-    r.report = bary_surface(Tr, Q, set, in, out, table_);
-    r.element = "surface element";
-    r.n_elements = Tr.size() + Q.size();
+  if (dimension(mesh || mapper_ == "TriangleSet" ? topo.triangles() : no_tris, "triangle",
+                mesh || mapper_ == "QuadSet" ? topo.quads() : no_quads, "quad", bary_surface, "surface element"))
     return r;
-  }
   const std::vector<Edge>& edges = topo.edges();
   if ((mapper_ != "Mesh" && mapper_ != "EdgeSet") || edges.empty()) {
     bad = mapper_ == "Mesh" || mapper_ == "EdgeSet"

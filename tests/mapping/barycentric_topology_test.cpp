@@ -136,6 +136,17 @@ void expect_same_table(const BaryTable& a, const BaryTable& b) {
   }
 }
 
+// The table of `e` equals that of a mapping built afresh on e's input (current positions and
+// `elements`, a <kind>SetTopologyContainer attribute) for the output points `out`.
+void expect_as_fresh(Embedded& e, const std::string& kind, const std::string& elements,
+                     const std::vector<double>& out) {
+  Embedded fresh = load_embedded(embedded_scene(kind + "SetTopologyContainer", elements,
+                                                flat_doubles(positions(*e.in)), flat_doubles(out),
+                                                kind + "SetTopologyModifier"));
+  ASSERT_EQ(fresh.map->state(), ComponentState::valid);
+  expect_same_table(e.map->table(), fresh.map->table());
+}
+
 TEST(BarycentricMappingTopology, RemovedTetrahedraRelocateTheirPointsAsAFreshMapping) {
   Embedded e = tetra_scene();
   ASSERT_EQ(e.map->state(), ComponentState::valid);
@@ -163,12 +174,7 @@ TEST(BarycentricMappingTopology, RemovedTetrahedraRelocateTheirPointsAsAFreshMap
   for (double v : after) EXPECT_TRUE(std::isfinite(v));
 
   // A mapping built on the remaining mesh with the same points gives the same table.
-  Embedded fresh = load_embedded(embedded_scene("TetrahedronSetTopologyContainer",
-                                                "tetrahedra=\"" + flat(e.topo->tetrahedra()) + "\"",
-                                                flat_doubles(positions(*e.in)), flat_doubles(before),
-                                                "TetrahedronSetTopologyModifier"));
-  ASSERT_EQ(fresh.map->state(), ComponentState::valid);
-  expect_same_table(e.map->table(), fresh.map->table());
+  expect_as_fresh(e, "Tetrahedron", "tetrahedra=\"" + flat(e.topo->tetrahedra()) + "\"", before);
 }
 
 // A tetrahedron whose vertices all stay (its boundary faces go, no point does): SOFA's last
@@ -258,12 +264,7 @@ TEST(BarycentricMappingTopology, RemovedHexahedronRelocatesAsAFreshMapping) {
   const std::vector<double> after = positions(*e.out);
   for (std::size_t c = 0; c < 24; ++c) EXPECT_NEAR(after[c], before[c], 1e-14) << c;
 
-  Embedded fresh = load_embedded(embedded_scene("HexahedronSetTopologyContainer",
-                                                "hexahedra=\"" + flat(e.topo->hexahedra()) + "\"",
-                                                flat_doubles(positions(*e.in)), flat_doubles(before),
-                                                "HexahedronSetTopologyModifier"));
-  ASSERT_EQ(fresh.map->state(), ComponentState::valid);
-  expect_same_table(e.map->table(), fresh.map->table());
+  expect_as_fresh(e, "Hexahedron", "hexahedra=\"" + flat(e.topo->hexahedra()) + "\"", before);
 }
 
 // Nothing left to map onto: SOFA's init would store an invalid element; Sinew keeps the output
