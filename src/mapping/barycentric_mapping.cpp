@@ -55,7 +55,8 @@ bool BarycentricMapping::init_mapping() {
     return false;
   }
   table_.clear();
-  relocate_ = frozen_ = false;
+  frozen_ = false;
+  snapshot_.clear();
 
   const int x_id = use_rest_position.value() ? kRestPosition : kPosition;
   const std::vector<double>& in = in_coord(x_id);
@@ -194,25 +195,12 @@ std::uint64_t BarycentricMapping::input_version() const {
 }
 
 // Called during a propagation, before the container changes (core/topology_change.h). SOFA
-// relocates here from the positions of this moment; the lists are not final yet (removed
-// elements still listed, points not renumbered), so the positions are kept and the relocation
-// waits for the next use of the map. A point removal from the topology of the input's or the
-// output's state moves the last DoF into each slot once the lists changed: the snapshot does
-// the same so that it matches the renumbered elements.
+// relocates here; the lists are not final yet (removed elements still listed, points not
+// renumbered), so the positions are kept (relocation_snapshot.h) and the relocation waits for
+// the next use of the map.
 void BarycentricMapping::handle_topology_change(MeshTopologyBase& source) {
   if (state() != ComponentState::valid || !input_topology) return;
-  relocate_ = true;
-  snap_in_ = in_coord(kPosition);
-  snap_out_ = *out_coord_read(kPosition);
-  auto follows = [&](const MechanicalState* s) {
-    return s && s->node() && s->node()->get_mesh_topology_link() == &source;
-  };
-  const bool in_follows = follows(in_[0]), out_follows = follows(out_);
-  for (const TopologyChange& c : source.topology_changes())
-    if (c.type == TopologyChangeType::points_removed) {
-      if (in_follows) remove_swap_last(snap_in_, c.indices, 3);
-      if (out_follows) remove_swap_last(snap_out_, c.indices, 3);
-    }
+  snapshot_.take(source, in_[0], in_coord(kPosition), out_, *out_coord_read(kPosition), 3);
 }
 
 // SOFA's processTopologicalChanges (clear, then the mapper's init from positions), on the final
@@ -220,19 +208,10 @@ void BarycentricMapping::handle_topology_change(MeshTopologyBase& source) {
 // mapping) SOFA keeps its stale map; Sinew relocates from the current positions, with a warning.
 void BarycentricMapping::relocate() {
   if (!input_topology) return;
-  const std::vector<double>& in_now = in_coord(kPosition);
-  const std::vector<double>& out_now = *out_coord_read(kPosition);
-  if (!relocate_ && !warned_unnotified_) {
-    warned_unnotified_ = true;
-    msg_warning("the elements of input topology " + input_topology->describe() +
-                " changed without a propagation reaching this mapping (is it outside the modifier's subtree?): "
-                "relocating the output points from their current positions (SOFA keeps its stale map)");
-  }
-  // The snapshot is used when the states followed as expected (sizes agree), else the present.
-  const bool snap = relocate_ && snap_in_.size() == in_now.size() && snap_out_.size() == out_now.size();
-  const std::vector<double>& in = snap ? snap_in_ : in_now;
-  const std::vector<double> out = snap ? snap_out_ : out_now;  // copy: resize_output may reallocate
-  relocate_ = false;
+  std::vector<double> in, out;  // copies: resize_output may reallocate the output
+  const std::string unannounced = snapshot_.select(in_coord(kPosition), *out_coord_read(kPosition), in, out,
+                                                   input_topology->describe(), "relocating the output points from their current positions");
+  if (!unannounced.empty()) msg_warning(unannounced);
   version_ = input_version();
   std::string bad;
   const Located r = locate(in, out, bad);
@@ -248,8 +227,7 @@ void BarycentricMapping::relocate() {
     }
   }
   needed_ = table_.vertices_needed();
-  snap_in_.clear();
-  snap_out_.clear();
+  snapshot_.clear();
   resize_output(table_.points());
 }
 
@@ -257,11 +235,7 @@ void BarycentricMapping::apply(int x) {
   follow_topology();
   std::vector<double>* out = out_coord(x);
   if (!out) return;
-  if (frozen_) {
-    // Positions stay; another position vector (free motion) takes them.
-    if (x != kPosition) *out = *out_coord_read(kPosition);
-    return;
-  }
+  if (frozen_) return hold_output(x, *out, *out_coord_read(kPosition));
   table_.gather(in_coord(x), *out);
 }
 
@@ -279,7 +253,7 @@ void BarycentricMapping::apply_jt(int f, int role) {
 // (Rows are built after the positions were mapped, so no relocation is pending here; if one
 // were, the table could name points the input lost: nothing is added.)
 void BarycentricMapping::jt_entry(unsigned out_dof, const double* v, ConstraintRowSink& sink) const {
-  if (out_dof >= table_.points() || relocate_) return;
+  if (out_dof >= table_.points() || snapshot_.pending) return;
   for (std::uint32_t k = table_.begin(out_dof); k < table_.end(out_dof); ++k) {
     const double w = table_.weight(k);
     const double t[3] = {v[0] * w, v[1] * w, v[2] * w};

@@ -45,6 +45,7 @@
 
 #include "mapping/barycentric_coords.h"
 #include "mapping/mapping_base.h"
+#include "mapping/relocation_snapshot.h"
 
 namespace sinew {
 
@@ -91,7 +92,7 @@ class BarycentricMapping final : public MappingBase {
   // input's lists moved without one; cheap when nothing changed (called by every apply).
   // The last test keeps every read within the input, whatever happened to it.
   void follow_topology() {
-    if (relocate_ || input_version() != version_ || needed_ > in_[0]->size()) relocate();
+    if (snapshot_.pending || input_version() != version_ || needed_ > in_[0]->size()) relocate();
   }
   void relocate();
   // Version of the list a set-container mapper searches (0 for the others: SOFA has them
@@ -102,10 +103,9 @@ class BarycentricMapping final : public MappingBase {
   std::string mapper_;
   std::uint64_t version_ = 0;   // input_version() the table was built against
   std::size_t needed_ = 0;      // input points the table reads
-  bool relocate_ = false;       // a propagation reached the mapping since
-  bool frozen_ = false;                      // no element left: outputs keep their positions
-  bool warned_unnotified_ = false, warned_frozen_ = false;
-  std::vector<double> snap_in_, snap_out_;   // positions at the last propagation, renumbered
+  bool frozen_ = false;         // no element left: outputs keep their positions
+  bool warned_frozen_ = false;
+  RelocationSnapshot snapshot_;  // positions at the last propagation, renumbered
 };
 
 }  // namespace sinew

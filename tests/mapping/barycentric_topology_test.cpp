@@ -14,6 +14,7 @@
 
 #include "badinput_helpers.h"
 #include "mapping/barycentric_mapping.h"
+#include "mapping/barycentric_mapping_rigid.h"
 #include "runner/session.h"
 #include "state/mechanical_object.h"
 #include "test_scene.h"
@@ -310,6 +311,47 @@ TEST(BarycentricMappingTopology, ChangeOutsideTheModifiersSubtreeIsNoticedByVers
   for (std::size_t c = 0; c < 24; ++c) EXPECT_NEAR(positions(*e.out)[c], before[c], 1e-14) << c;
   EXPECT_TRUE(test::any_contains(test::messages(e.s.root->diagnostics(), Severity::warning),
                                  "changed without a propagation reaching this mapping"));
+}
+
+// Vec3d → Rigid3d (same SOFA handler, the rigid mapper's init again): frames of removed
+// tetrahedra are re-embedded among the survivors with their centre and axes; nothing moves; once
+// no tetrahedron is left the frames stay (one warning).
+TEST(BarycentricMappingTopology, RigidFramesAreReembeddedAmongTheRemainingTetrahedra) {
+  auto s = test::load(R"(<Node name="root" gravity="0 0 0">
+    <MechanicalObject name="in" position=")" + grid_points() + R"("/>
+    <TetrahedronSetTopologyContainer name="topo" tetrahedra=")" + flat(kuhn_tetrahedra()) + R"("/>
+    <TetrahedronSetTopologyModifier name="mod"/>
+    <Node name="out">
+      <MechanicalObject name="frames" template="Rigid3d" position="0.3 0.4 0.5 0 0 0 1
+          1.5 0.5 0.5 0 0 0.7071067811865476 0.7071067811865476  1.7 0.2 0.6 0.5 0.5 0.5 0.5"/>
+      <BarycentricMapping name="map" input="@../in" output="@frames"/>
+    </Node>
+  </Node>)");
+  Node& out = *s.root->find_child_named("out");
+  auto* map = test::get<BarycentricMappingRigid>(out, "map");
+  auto* frames = test::get<MechanicalState>(out, "frames");
+  auto* topo = test::get<MeshTopologyBase>(*s.root, "topo");
+  ASSERT_TRUE(map && frames && topo);
+  ASSERT_EQ(map->state(), ComponentState::valid);
+  map->apply(kPosition);
+  const std::vector<double> before = positions(*frames);
+  EXPECT_GE(map->embeddings()[1].tetra, 6u);
+
+  auto& mod = *test::get<TetrahedronSetTopologyModifier>(*s.root, "mod");
+  mod.remove_tetrahedra({6, 7, 8, 9, 10, 11});
+  map->apply(kPosition);
+  ASSERT_EQ(map->embeddings().size(), 3u);
+  for (const auto& e : map->embeddings()) EXPECT_LT(e.tetra, 6u);
+  const std::vector<double> after = positions(*frames);
+  ASSERT_EQ(after.size(), 21u);
+  for (std::size_t c = 0; c < 21; ++c) EXPECT_NEAR(after[c], before[c], 1e-12) << c;
+
+  mod.remove_tetrahedra({0, 1, 2, 3, 4, 5});
+  map->apply(kPosition);
+  map->apply_j(kVelocity, kVelocity);
+  EXPECT_EQ(positions(*frames), after);
+  for (double v : frames->read(kVelocity)) EXPECT_EQ(v, 0.0);
+  EXPECT_TRUE(test::any_contains(test::messages(s.root->diagnostics(), Severity::warning), "frames keep their positions"));
 }
 
 // SOFA's RemovingTetraProcess.scn (TopologicalChangeProcessor removing the cube's 44
