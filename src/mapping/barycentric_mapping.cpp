@@ -111,6 +111,13 @@ bool BarycentricMapping::choose_mapper() {
   } else {
     mapper_ = "EdgeSet";
   }
+  using K = MeshTopologyBase::Elements;
+  searched_.reset();
+  if (mapper_ == "TetrahedronSet") searched_ = K::tetrahedra;
+  if (mapper_ == "HexahedronSet") searched_ = K::hexahedra;
+  if (mapper_ == "QuadSet") searched_ = K::quads;
+  if (mapper_ == "TriangleSet") searched_ = K::triangles;
+  if (mapper_ == "EdgeSet") searched_ = K::edges;
   return true;
 }
 
@@ -181,17 +188,6 @@ BarycentricMapping::Located BarycentricMapping::locate(const std::vector<double>
   if (!check(edges, "edge")) return r;
   bary_edges(edges, in, out, table_);
   return r;
-}
-
-std::uint64_t BarycentricMapping::input_version() const {
-  using K = MeshTopologyBase::Elements;
-  const MeshTopologyBase& t = *input_topology;
-  if (mapper_ == "TetrahedronSet") return t.elements_version(K::tetrahedra);
-  if (mapper_ == "HexahedronSet") return t.elements_version(K::hexahedra);
-  if (mapper_ == "TriangleSet") return t.elements_version(K::triangles);
-  if (mapper_ == "QuadSet") return t.elements_version(K::quads);
-  if (mapper_ == "EdgeSet") return t.elements_version(K::edges);
-  return 0;
 }
 
 // Called during a propagation, before the container changes (core/topology_change.h). SOFA

@@ -43,6 +43,8 @@
 // (warning once; SOFA would read out of bounds).
 #pragma once
 
+#include <optional>
+
 #include "mapping/barycentric_coords.h"
 #include "mapping/mapping_base.h"
 #include "mapping/relocation_snapshot.h"
@@ -97,10 +99,13 @@ class BarycentricMapping final : public MappingBase {
   void relocate();
   // Version of the list a set-container mapper searches (0 for the others: SOFA has them
   // follow propagations only, and their lists do not change).
-  std::uint64_t input_version() const;
+  std::uint64_t input_version() const {
+    return searched_ ? input_topology->elements_version(*searched_) : 0;
+  }
 
   BaryTable table_;
   std::string mapper_;
+  std::optional<MeshTopologyBase::Elements> searched_;  // the set-container mapper's list
   std::uint64_t version_ = 0;   // input_version() the table was built against
   std::size_t needed_ = 0;      // input points the table reads
   bool frozen_ = false;         // no element left: outputs keep their positions
