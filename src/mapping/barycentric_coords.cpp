@@ -248,7 +248,7 @@ BaryReport nearest_element(const std::vector<typename A::Element>& EA, const std
       A::weights(EA[best.index], best.v, set_container, table);
     else
       B::weights(EB[best.index - EA.size()], best.v, set_container, table);
-    table.end_point();
+    table.end_point(static_cast<unsigned>(best.index));
   }
   return report;
 }
@@ -284,7 +284,7 @@ BaryReport bary_regular_grid(const RegularGridTopology& grid, const std::vector<
     trilinear(fx, fy, fz, w);
     for (int k = 0; k < 8; ++k)
       table.add(static_cast<unsigned>(grid.point_index(ix + (k & 1), iy + (k >> 1 & 1), iz + (k >> 2))), w[k]);
-    table.end_point();
+    table.end_point(static_cast<unsigned>(ix + (n[0] - 1) * (iy + (n[1] - 1) * iz)));  // the grid's cube order
   }
   return report;
 }
@@ -308,7 +308,7 @@ BaryReport bary_sparse_grid(const SparseGridTopology& grid, const std::vector<do
     double w[8];
     trilinear(fx, fy, fz, w);
     add_corners(table, hexas[cube], w, false);
-    table.end_point();
+    table.end_point(cube);
   }
   return report;
 }
@@ -348,7 +348,7 @@ void bary_edges(const std::vector<Edge>& edges, const std::vector<double>& in, c
     if (e == edges.size()) e = edges.size() - 1;
     table.add(edges[e][0], 1 - coef);
     table.add(edges[e][1], coef);
-    table.end_point();
+    table.end_point(static_cast<unsigned>(e));
   }
 }
 

@@ -55,116 +55,201 @@ bool BarycentricMapping::init_mapping() {
     return false;
   }
   table_.clear();
+  frozen_ = false;
+  snapshot_.clear();
 
   const int x_id = use_rest_position.value() ? kRestPosition : kPosition;
   const std::vector<double>& in = in_coord(x_id);
   std::vector<double> out = *out_coord_read(x_id);  // copy: resizing the output must not invalidate it
-  MeshTopologyBase& topo = *input_topology;
 
-  bool ok = false;
-  if (dynamic_cast<RegularGridTopology*>(&topo)) {
-    ok = init_regular_grid(out);
-  } else if (dynamic_cast<SparseGridTopology*>(&topo)) {
-    // Also SparseGridRamificationTopology: its cube look-ups are virtual.
-    ok = init_sparse_grid(out);
-  } else {
-    ok = init_mesh(out, in, is_set_container(topo));
+  if (!choose_mapper()) return false;
+  std::string bad;
+  const Located r = locate(in, out, bad);
+  if (!bad.empty()) {
+    msg_error(bad);
+    return false;
   }
-  if (!ok) return false;
+  if (!report(r.report, r.element, r.n_elements)) return false;
+  // The version is taken now; lists still being filled by later inits (a topological mapping
+  // writing the input) relocate once, as a propagation would.
+  version_ = input_version();
+  needed_ = table_.vertices_needed();
   resize_output(table_.points());
   return true;
 }
 
-bool BarycentricMapping::init_regular_grid(const std::vector<double>& out) {
-  auto& grid = static_cast<RegularGridTopology&>(*input_topology);
-  grid.nb_points();  // make sure the grid is generated
-  const VecNi<3> n = grid.dims();
-  if (n[0] < 2 || n[1] < 2 || n[2] < 2) {
-    msg_error("input topology " + grid.describe() + " has no volume (n = " + std::to_string(n[0]) + " " +
-              std::to_string(n[1]) + " " + std::to_string(n[2]) + "): no barycentric mapper can be created");
-    return false;
-  }
-  mapper_ = "RegularGrid";
-  return report(bary_regular_grid(grid, out, table_), nullptr, 0);
-}
-
-bool BarycentricMapping::init_sparse_grid(const std::vector<double>& out) {
-  auto& grid = static_cast<SparseGridTopology&>(*input_topology);
-  if (grid.hexahedra().empty()) {
-    msg_error("input topology " + grid.describe() + " has no volume: no barycentric mapper can be created");
-    return false;
-  }
-  mapper_ = "SparseGrid";
-  return report(bary_sparse_grid(grid, out, table_), nullptr, 0);
-}
-
-// Volume elements, else surface elements, else edges. The set-container mappers use one
-// element type only (hexahedra before tetrahedra, quads before triangles); the mesh mapper
-// lets both types of a dimension compete.
-bool BarycentricMapping::init_mesh(const std::vector<double>& out, const std::vector<double>& in, bool set_container) {
+// SOFA's createMapperFromTopology: grids by type, set containers by their highest kind, any
+// other mesh the MeshMapper. The choice is kept for the mapping's life (relocations included).
+bool BarycentricMapping::choose_mapper() {
   MeshTopologyBase& topo = *input_topology;
+  if (auto* grid = dynamic_cast<RegularGridTopology*>(&topo)) {
+    grid->nb_points();  // make sure the grid is generated
+    const VecNi<3> n = grid->dims();
+    if (n[0] < 2 || n[1] < 2 || n[2] < 2) {
+      msg_error("input topology " + grid->describe() + " has no volume (n = " + std::to_string(n[0]) + " " +
+                std::to_string(n[1]) + " " + std::to_string(n[2]) + "): no barycentric mapper can be created");
+      return false;
+    }
+    mapper_ = "RegularGrid";
+  } else if (dynamic_cast<SparseGridTopology*>(&topo)) {
+    // Also SparseGridRamificationTopology: its cube look-ups are virtual.
+    if (topo.hexahedra().empty()) {
+      msg_error("input topology " + topo.describe() + " has no volume: no barycentric mapper can be created");
+      return false;
+    }
+    mapper_ = "SparseGrid";
+  } else if (!is_set_container(topo)) {
+    mapper_ = "Mesh";
+  } else if (!topo.hexahedra().empty()) {
+    mapper_ = "HexahedronSet";
+  } else if (!topo.tetrahedra().empty()) {
+    mapper_ = "TetrahedronSet";
+  } else if (!topo.quads().empty()) {
+    mapper_ = "QuadSet";
+  } else if (!topo.triangles().empty()) {
+    mapper_ = "TriangleSet";
+  } else {
+    mapper_ = "EdgeSet";
+  }
+  using K = MeshTopologyBase::Elements;
+  searched_.reset();
+  if (mapper_ == "TetrahedronSet") searched_ = K::tetrahedra;
+  if (mapper_ == "HexahedronSet") searched_ = K::hexahedra;
+  if (mapper_ == "QuadSet") searched_ = K::quads;
+  if (mapper_ == "TriangleSet") searched_ = K::triangles;
+  if (mapper_ == "EdgeSet") searched_ = K::edges;
+  return true;
+}
+
+// The chosen mapper's init on the current lists: the table for points `out`, element vertices
+// read from `in`. Volume elements, else surface elements, else edges; the set-container mappers
+// use their one element type (hexahedra before tetrahedra, quads before triangles), the mesh
+// mapper lets both types of a dimension compete. `bad` names what made it impossible (an
+// element using a point the input does not have, no element at all).
+BarycentricMapping::Located BarycentricMapping::locate(const std::vector<double>& in, const std::vector<double>& out,
+                                                       std::string& bad) {
+  Located r;
+  table_.clear();
+  MeshTopologyBase& topo = *input_topology;
+  if (mapper_ == "RegularGrid") {
+    r.report = bary_regular_grid(static_cast<RegularGridTopology&>(topo), out, table_);
+    return r;
+  }
+  if (mapper_ == "SparseGrid") {
+    r.report = bary_sparse_grid(static_cast<SparseGridTopology&>(topo), out, table_);
+    return r;
+  }
   const std::size_t n_in = in.size() / 3;
   auto check = [&](const auto& list, const char* what) {
     for (std::size_t e = 0; e < list.size(); ++e)
       for (unsigned v : list[e])
         if (v >= n_in) {
-          msg_error(std::string(what) + " " + std::to_string(e) + " of " + topo.describe() + " uses point " +
-                    std::to_string(v) + " but the input state has " + std::to_string(n_in) + " points");
+          bad = std::string(what) + " " + std::to_string(e) + " of " + topo.describe() + " uses point " +
+                std::to_string(v) + " but the input state has " + std::to_string(n_in) + " points";
           return false;
         }
     return true;
   };
-
-  const std::vector<Tetra>& tetras = topo.tetrahedra();
-  const std::vector<Hexa>& hexas = topo.hexahedra();
-  if (!tetras.empty() || !hexas.empty()) {
-    static const std::vector<Tetra> no_tetras;
-    static const std::vector<Hexa> no_hexas;
-    const std::vector<Tetra>& T = set_container && !hexas.empty() ? no_tetras : tetras;
-    const std::vector<Hexa>& H = set_container && hexas.empty() ? no_hexas : hexas;
-    if (!check(T, "tetrahedron") || !check(H, "hexahedron")) return false;
-    mapper_ = set_container ? (H.empty() ? "TetrahedronSet" : "HexahedronSet") : "Mesh";
-    return report(bary_volume(T, H, set_container, in, out, table_), "element", T.size() + H.size());
+  static const std::vector<Tetra> no_tetras;
+  static const std::vector<Hexa> no_hexas;
+  static const std::vector<Triangle> no_tris;
+  static const std::vector<Quad> no_quads;
+  const bool mesh = mapper_ == "Mesh", set = !mesh;
+  // The elements of one dimension (both kinds compete; a set-container mapper leaves one empty).
+  // False when there are none.
+  auto dimension = [&](const auto& A, const char* a, const auto& B, const char* b, auto bary, const char* word) {
+    if (A.empty() && B.empty()) return false;
+    if (check(A, a) && check(B, b)) {
+      r.report = bary(A, B, set, in, out, table_);
+      r.element = word;
+      r.n_elements = A.size() + B.size();
+    }
+    return true;
+  };
+  if (dimension(mesh || mapper_ == "TetrahedronSet" ? topo.tetrahedra() : no_tetras, "tetrahedron",
+                mesh || mapper_ == "HexahedronSet" ? topo.hexahedra() : no_hexas, "hexahedron", bary_volume,
+                "element"))
+    return r;
+  if (mapper_ == "TetrahedronSet" || mapper_ == "HexahedronSet") {
+    bad = std::string("no ") + (mapper_ == "TetrahedronSet" ? "tetrahedron" : "hexahedron") + " left in " +
+          topo.describe();
+    return r;
   }
-
-  const std::vector<Triangle>& tris = topo.triangles();
-  const std::vector<Quad>& quads = topo.quads();
-  if (!tris.empty() || !quads.empty()) {
-    static const std::vector<Triangle> no_tris;
-    static const std::vector<Quad> no_quads;
-    const std::vector<Triangle>& T = set_container && !quads.empty() ? no_tris : tris;
-    const std::vector<Quad>& Q = set_container && quads.empty() ? no_quads : quads;
-    if (!check(T, "triangle") || !check(Q, "quad")) return false;
-    mapper_ = set_container ? (Q.empty() ? "TriangleSet" : "QuadSet") : "Mesh";
-    return report(bary_surface(T, Q, set_container, in, out, table_), "surface element", T.size() + Q.size());
-  }
-
+  if (dimension(mesh || mapper_ == "TriangleSet" ? topo.triangles() : no_tris, "triangle",
+                mesh || mapper_ == "QuadSet" ? topo.quads() : no_quads, "quad", bary_surface, "surface element"))
+    return r;
   const std::vector<Edge>& edges = topo.edges();
-  if (edges.empty()) {
-    msg_error("input topology " + topo.describe() + " has no elements to map onto");
-    return false;
+  if ((mapper_ != "Mesh" && mapper_ != "EdgeSet") || edges.empty()) {
+    bad = mapper_ == "Mesh" || mapper_ == "EdgeSet"
+              ? "input topology " + topo.describe() + " has no elements to map onto"
+              : "no " + std::string(mapper_ == "QuadSet" ? "quad" : "triangle") + " left in " + topo.describe();
+    return r;
   }
-  if (!check(edges, "edge")) return false;
-  mapper_ = set_container ? "EdgeSet" : "Mesh";
+  if (!check(edges, "edge")) return r;
   bary_edges(edges, in, out, table_);
-  return true;
+  return r;
+}
+
+// Called during a propagation, before the container changes (core/topology_change.h). SOFA
+// relocates here; the lists are not final yet (removed elements still listed, points not
+// renumbered), so the positions are kept (relocation_snapshot.h) and the relocation waits for
+// the next use of the map.
+void BarycentricMapping::handle_topology_change(MeshTopologyBase& source) {
+  if (state() != ComponentState::valid || !input_topology) return;
+  snapshot_.take(source, in_[0], in_coord(kPosition), out_, *out_coord_read(kPosition), 3);
+}
+
+// SOFA's processTopologicalChanges (clear, then the mapper's init from positions), on the final
+// lists. Without a propagation (lists changed by a modifier whose visit does not reach the
+// mapping) SOFA keeps its stale map; Sinew relocates from the current positions, with a warning.
+void BarycentricMapping::relocate() {
+  if (!input_topology) return;
+  std::vector<double> in, out;  // copies: resize_output may reallocate the output
+  const std::string unannounced = snapshot_.select(in_coord(kPosition), *out_coord_read(kPosition), in, out,
+                                                   input_topology->describe(), "relocating the output points from their current positions");
+  if (!unannounced.empty()) msg_warning(unannounced);
+  version_ = input_version();
+  std::string bad;
+  const Located r = locate(in, out, bad);
+  frozen_ = !bad.empty() || r.report.unlocated != BaryReport::kNone;
+  if (frozen_) {
+    table_.clear();
+    for (std::size_t i = 0; i < out.size() / 3; ++i) table_.end_point();
+    if (!warned_frozen_) {
+      warned_frozen_ = true;
+      msg_warning((bad.empty() ? "an output point could not be located in " + input_topology->describe() : bad) +
+                  " after a topological change: the output points keep their positions (SOFA's map would "
+                  "name elements that no longer exist)");
+    }
+  }
+  needed_ = table_.vertices_needed();
+  snapshot_.clear();
+  resize_output(table_.points());
 }
 
 void BarycentricMapping::apply(int x) {
-  if (std::vector<double>* out = out_coord(x)) table_.gather(in_coord(x), *out);
+  follow_topology();
+  std::vector<double>* out = out_coord(x);
+  if (!out) return;
+  if (frozen_) return hold_output(x, *out, *out_coord_read(kPosition));
+  table_.gather(in_coord(x), *out);
 }
 
 void BarycentricMapping::apply_j(int v, int role) {
+  follow_topology();
   if (std::vector<double>* out = out_deriv(v, role)) table_.gather(in_deriv(v, role), *out);
 }
 
 void BarycentricMapping::apply_jt(int f, int role) {
+  follow_topology();
   if (const std::vector<double>* out = out_deriv_read(f, role)) table_.scatter_add(*out, in_deriv_write(f, role));
 }
 
 // A constraint entry on output point i spreads over its element's vertices with their weights.
+// (Rows are built after the positions were mapped, so no relocation is pending here; if one
+// were, the table could name points the input lost: nothing is added.)
 void BarycentricMapping::jt_entry(unsigned out_dof, const double* v, ConstraintRowSink& sink) const {
-  if (out_dof >= table_.points()) return;
+  if (out_dof >= table_.points() || snapshot_.pending) return;
   for (std::uint32_t k = table_.begin(out_dof); k < table_.end(out_dof); ++k) {
     const double w = table_.weight(k);
     const double t[3] = {v[0] * w, v[1] * w, v[2] * w};
@@ -173,6 +258,7 @@ void BarycentricMapping::jt_entry(unsigned out_dof, const double* v, ConstraintR
 }
 
 bool BarycentricMapping::jacobian(std::vector<JacobianEntry>& out) {
+  follow_topology();
   table_.jacobian(out);
   return true;
 }

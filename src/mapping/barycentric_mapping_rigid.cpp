@@ -64,15 +64,37 @@ bool BarycentricMappingRigid::init_mapping() {
   const int x_id = use_rest_position.value() ? kRestPosition : kPosition;
   const std::vector<double>& in = in_coord(x_id);
   const std::vector<double> out = *out_coord_read(x_id);  // copy: resizing the output must not invalidate it
+  std::vector<std::size_t> degenerate;
+  const std::string bad = embed(in, out, degenerate);
+  if (!degenerate.empty())
+    msg_warning(std::to_string(degenerate.size()) + " tetrahedra of " + topo.describe() +
+                " are degenerate (zero volume) and take no frame; the first is " + std::to_string(degenerate[0]));
+  if (!bad.empty()) {
+    msg_error(bad);
+    return false;
+  }
+  frozen_ = false;
+  snapshot_.clear();
+  actual_ = in;
+  resize_output(map_.size());
+  return true;
+}
+
+std::string BarycentricMappingRigid::embed(const std::vector<double>& in, const std::vector<double>& out,
+                                           std::vector<std::size_t>& degenerate) {
+  const MeshTopologyBase& topo = *input_topology;
   const std::size_t n_in = in.size() / 3;
   tetras_ = topo.tetrahedra();
+  version_ = tetra_version();
+  needed_ = 0;
+  map_.clear();
   for (std::size_t t = 0; t < tetras_.size(); ++t)
-    for (unsigned v : tetras_[t])
-      if (v >= n_in) {
-        msg_error("tetrahedron " + std::to_string(t) + " of " + topo.describe() + " uses point " + std::to_string(v) +
-                  " but the input state has " + std::to_string(n_in) + " points");
-        return false;
-      }
+    for (unsigned v : tetras_[t]) {
+      if (v >= n_in)
+        return "tetrahedron " + std::to_string(t) + " of " + topo.describe() + " uses point " + std::to_string(v) +
+               " but the input state has " + std::to_string(n_in) + " points";
+      needed_ = std::max<std::size_t>(needed_, std::size_t{v} + 1);
+    }
 
   // Local frames of the tetrahedra: the inverse of their edge basis, and their centroids.
   struct Frame {
@@ -81,7 +103,6 @@ bool BarycentricMappingRigid::init_mapping() {
     bool ok;
   };
   std::vector<Frame> frames(tetras_.size());
-  std::vector<std::size_t> degenerate;
   for (std::size_t t = 0; t < tetras_.size(); ++t) {
     Frame& f = frames[t];
     double m[3][3];
@@ -93,9 +114,6 @@ bool BarycentricMappingRigid::init_mapping() {
       f.c[k] = (in[e[0] * 3 + k] + in[e[1] * 3 + k] + in[e[2] * 3 + k] + in[e[3] * 3 + k]) * 0.25;
     }
   }
-  if (!degenerate.empty())
-    msg_warning(std::to_string(degenerate.size()) + " tetrahedra of " + topo.describe() +
-                " are degenerate (zero volume) and take no frame; the first is " + std::to_string(degenerate[0]));
 
   const std::size_t n_out = out.size() / 7;
   map_.assign(n_out, Embedding{});
@@ -122,8 +140,8 @@ bool BarycentricMappingRigid::init_mapping() {
       }
     }
     if (index < 0) {
-      msg_error("frame " + std::to_string(i) + " could not be located in any tetrahedron of " + topo.describe());
-      return false;
+      map_.clear();
+      return "frame " + std::to_string(i) + " could not be located in any tetrahedron of " + topo.describe();
     }
     Embedding& e = map_[i];
     e.tetra = static_cast<unsigned>(index);
@@ -139,14 +157,44 @@ bool BarycentricMappingRigid::init_mapping() {
         for (int k = 0; k < 3; ++k) b[k] /= len;
     }
   }
-  actual_ = in;
-  resize_output(n_out);
-  return true;
+  return "";
+}
+
+// SOFA's processTopologicalChanges for this mapper: its init again (tetrahedra only), from the
+// positions of the last propagation (relocation_snapshot.h), once the lists are final.
+void BarycentricMappingRigid::handle_topology_change(MeshTopologyBase& source) {
+  if (state() != ComponentState::valid || !input_topology) return;
+  snapshot_.take(source, in_[0], in_coord(kPosition), out_, *out_coord_read(kPosition), 7);
+}
+
+void BarycentricMappingRigid::reembed() {
+  std::vector<double> in, out;  // copies: resize_output may reallocate the output
+  const std::string unannounced = snapshot_.select(in_coord(kPosition), *out_coord_read(kPosition), in, out,
+                                                   input_topology->describe(), "re-embedding the frames from their current positions");
+  if (!unannounced.empty()) msg_warning(unannounced);
+  std::vector<std::size_t> degenerate;
+  const std::string bad = embed(in, out, degenerate);
+  frozen_ = !bad.empty();
+  if (frozen_) {
+    map_.clear();
+    needed_ = 0;
+    if (!warned_frozen_) {
+      warned_frozen_ = true;
+      msg_warning((bad.empty() ? "no tetrahedron left in " + input_topology->describe() : bad) +
+                  " after a topological change: the frames keep their positions (SOFA's map would name "
+                  "tetrahedra that no longer exist)");
+    }
+  }
+  snapshot_.clear();
+  actual_ = in_coord(kPosition);
+  if (!frozen_) resize_output(map_.size());
 }
 
 void BarycentricMappingRigid::apply(int x) {
+  follow_topology();
   std::vector<double>* outp = out_coord(x);
   if (!outp) return;
+  if (frozen_) return hold_output(x, *outp, *out_coord_read(kPosition));
   const std::vector<double>& in = in_coord(x);
   actual_ = in;  // SOFA's actualTetraPosition: J is taken at the last mapped positions
   std::vector<double>& out = *outp;
@@ -173,8 +221,13 @@ void BarycentricMappingRigid::apply(int x) {
 }
 
 void BarycentricMappingRigid::apply_j(int v, int role) {
+  follow_topology();
   std::vector<double>* outp = out_deriv(v, role);
   if (!outp) return;
+  if (frozen_) {
+    std::fill(outp->begin(), outp->end(), 0.0);
+    return;
+  }
   const std::vector<double>& in = in_deriv(v, role);
   std::vector<double>& out = *outp;
   out.resize(map_.size() * 6);
@@ -198,6 +251,7 @@ void BarycentricMappingRigid::apply_j(int v, int role) {
 }
 
 void BarycentricMappingRigid::apply_jt(int f, int role) {
+  follow_topology();
   const std::vector<double>* outp = out_deriv_read(f, role);
   if (!outp) return;
   const std::vector<double>& out = *outp;
@@ -224,7 +278,7 @@ void BarycentricMappingRigid::apply_jt(int f, int role) {
 
 // Constraint rows keep their translation part only (SOFA's applyJT on constraint matrices).
 void BarycentricMappingRigid::jt_entry(unsigned out_dof, const double* v, ConstraintRowSink& sink) const {
-  if (out_dof >= map_.size()) return;
+  if (out_dof >= map_.size() || snapshot_.pending) return;
   const Embedding& e = map_[out_dof];
   const Tetra& t = tetra_of(out_dof);
   double w[4];
@@ -236,6 +290,7 @@ void BarycentricMappingRigid::jt_entry(unsigned out_dof, const double* v, Constr
 }
 
 bool BarycentricMappingRigid::jacobian(std::vector<JacobianEntry>& out) {
+  follow_topology();
   const double* X = actual_.data();
   for (std::size_t i = 0; i < map_.size(); ++i) {
     const Embedding& e = map_[i];

@@ -24,12 +24,17 @@
 //
 // Only tetrahedral set containers are supported as inputs (SOFA chooses other,
 // generic mappers for grids, hexahedra and MeshTopology): anything else is an
-// error at init. Topology changes are not followed.
+// error at init. Topological changes are followed as BarycentricMapping does
+// (SOFA's same handleTopologyChange: the mapper's init again, centres and axes
+// taken from the output's current frames): every propagation reaching the
+// mapping snapshots the positions, the next use re-embeds the frames among the
+// final tetrahedra; none left: the frames stay where they are (one warning).
 #pragma once
 
 #include <array>
 
 #include "mapping/mapping_base.h"
+#include "mapping/relocation_snapshot.h"
 
 namespace sinew {
 
@@ -48,6 +53,7 @@ class BarycentricMappingRigid final : public MappingBase {
   bool has_jt_entry() const override { return true; }
   void jt_entry(unsigned out_dof, const double* v, ConstraintRowSink& sink) const override;
   bool jacobian(std::vector<JacobianEntry>& out) override;
+  void handle_topology_change(MeshTopologyBase& source) override;
 
   // What init computed for frame i: its tetrahedron, the barycentric coordinates
   // (fx, fy, fz) of its centre, and axis c of its orientation in the edge basis.
@@ -56,7 +62,11 @@ class BarycentricMappingRigid final : public MappingBase {
     double bary[3] = {0, 0, 0};
     double axis[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};  // axis[c] = b_c
   };
-  const std::vector<Embedding>& embeddings() const { return map_; }
+  // (after any pending re-embedding)
+  const std::vector<Embedding>& embeddings() {
+    follow_topology();
+    return map_;
+  }
 
  protected:
   bool init_mapping() override;
@@ -66,9 +76,28 @@ class BarycentricMappingRigid final : public MappingBase {
 
  private:
   const Tetra& tetra_of(std::size_t i) const { return tetras_[map_[i].tetra]; }
-  std::vector<Tetra> tetras_;        // the input tetrahedra (copied at init: topology changes are not followed)
+  // Embeds the frames of `out` (7 per frame) in the tetrahedra of the input topology, points read
+  // from `in`; the problem that made it impossible, else "". `degenerate` receives the flat ones.
+  std::string embed(const std::vector<double>& in, const std::vector<double>& out,
+                    std::vector<std::size_t>& degenerate);
+  // Re-embeds after a propagation, or when the tetrahedra changed without one (then with a
+  // warning), or when the input lost points the copy uses. Cheap otherwise.
+  void follow_topology() {
+    if (snapshot_.pending || tetra_version() != version_ || needed_ > in_[0]->size()) reembed();
+  }
+  void reembed();
+  std::uint64_t tetra_version() const {
+    return input_topology->elements_version(MeshTopologyBase::Elements::tetrahedra);
+  }
+
+  std::vector<Tetra> tetras_;        // the input tetrahedra when the frames were embedded
   std::vector<Embedding> map_;
   std::vector<double> actual_;       // input positions at the last apply (3 per vertex), SOFA's actualTetraPosition
+  std::uint64_t version_ = 0;        // tetra_version() of tetras_
+  std::size_t needed_ = 0;           // input points tetras_ uses
+  bool frozen_ = false;              // no tetrahedron left: the frames keep their positions
+  bool warned_frozen_ = false;
+  RelocationSnapshot snapshot_;
 };
 
 }  // namespace sinew

@@ -10,6 +10,13 @@ void BaryTable::clear() {
   start_.assign(1, 0);
   idx_.clear();
   w_.clear();
+  element_.clear();
+}
+
+std::size_t BaryTable::vertices_needed() const {
+  std::size_t n = 0;
+  for (unsigned v : idx_) n = std::max<std::size_t>(n, std::size_t{v} + 1);
+  return n;
 }
 
 void BaryTable::gather(const std::vector<double>& in, std::vector<double>& out) const {
