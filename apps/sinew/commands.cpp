@@ -162,6 +162,7 @@ int run(const RunArgs& a) {
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
   runner::SessionOptions so;
   so.data_paths = data_paths_for(a.data_paths);
+  so.script_args = a.script_args;
   runner::Session session(a.scene, so);
   print_messages(session.diagnostics());
   const std::size_t printed = session.diagnostics().messages().size();

@@ -2,16 +2,19 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
+#include "module.h"
 
 int main(int argc, char** argv) {
   using namespace sinew::cli;
-  CLI::App app{"Sinew: real-time physics for medical simulation; runs SOFA .scn scenes"};
+  // SofaPython3 scenes (.py) run in the command's own embedded interpreter, started on first use.
+  sinew::python::register_python_scene_loader();
+  CLI::App app{"Sinew: real-time physics for medical simulation; runs SOFA .scn and SofaPython3 .py scenes"};
   app.require_subcommand(1);
 
   RunArgs run_args;
   std::string gui;
   auto* run_cmd = app.add_subcommand("run", "run a scene in batch mode and print timing (runSofa -g batch)");
-  run_cmd->add_option("scene", run_args.scene, "scene file (.scn)")->required();
+  run_cmd->add_option("scene", run_args.scene, "scene file (.scn, .xml or SofaPython3 .py)")->required();
   run_cmd->add_option("-n,--nbIter", run_args.steps, "number of steps (default 1000)");
   run_cmd->add_option("-g,--gui", gui, "accepted for runSofa compatibility: only 'batch' is supported");
   run_cmd->add_option("--data-path", run_args.data_paths, "extra folder searched for meshes and includes");
@@ -24,6 +27,7 @@ int main(int argc, char** argv) {
                       "write the final state of the first simulated body to this legacy VTK file (ParaView)");
   run_cmd->add_option("--threads", run_args.threads, "worker threads (default: all cores)");
   run_cmd->add_flag("--timing", run_args.timing, "print the time spent in each stage of the steps");
+  run_cmd->add_option("--argv", run_args.script_args, "arguments given to a Python scene (its sys.argv[1:])");
   bool hide_progress = false;
   run_cmd->add_flag("--hideProgressBar", hide_progress, "no progress bar");
 

@@ -12,12 +12,20 @@ namespace sinew {
 class BaseField;
 class BaseLink;
 
+class Base;
+
+// Called with every Base being destroyed, when set: handles held outside the
+// graph (Python objects) learn that what they point to is gone. One global,
+// set once by a front end; a plain function pointer (nothing to do otherwise).
+using BaseDestroyedHook = void (*)(const Base*);
+void set_base_destroyed_hook(BaseDestroyedHook hook);
+
 class Base {
  public:
   Base() = default;
   Base(const Base&) = delete;
   Base& operator=(const Base&) = delete;
-  virtual ~Base() = default;
+  virtual ~Base();
 
   const std::vector<BaseField*>& fields() const { return fields_; }
   const std::vector<BaseLink*>& links() const { return links_; }

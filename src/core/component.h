@@ -107,11 +107,16 @@ class Component : public Base {
 
 // Events broadcast top-down through the graph.
 struct Event {
-  // Key events come from a front end (viewer, script) with the key's character.
-  enum class Kind { animate_begin, animate_end, simulation_init_done, key_pressed, key_released } kind;
+  // Key events come from a front end (viewer, script) with the key's character;
+  // script events from a script (SofaPython3's Node.sendEvent), named, with a payload
+  // only that front end reads.
+  enum class Kind { animate_begin, animate_end, simulation_init_done, key_pressed, key_released, script } kind;
   double dt = 0;
   bool handled = false;
   char key = 0;
+  const Node* sender = nullptr;  // script events
+  std::string name{};            // script events
+  void* payload = nullptr;       // script events (not owned)
 };
 
 }  // namespace sinew

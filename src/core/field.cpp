@@ -58,6 +58,16 @@ BaseLink::BaseLink(Base* owner, std::string name, std::string help)
   if (owner) owner->register_link(this);
 }
 
+namespace {
+BaseDestroyedHook g_destroyed_hook = nullptr;
+}
+
+void set_base_destroyed_hook(BaseDestroyedHook hook) { g_destroyed_hook = hook; }
+
+Base::~Base() {
+  if (g_destroyed_hook) g_destroyed_hook(this);
+}
+
 BaseField* Base::find_field(std::string_view name) const {
   for (BaseField* f : fields_) {
     if (f->name() == name) return f;

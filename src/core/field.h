@@ -7,6 +7,7 @@
 // something upstream changed (SOFA's DDG without dirty-flag propagation).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -27,6 +28,20 @@ struct FlatVec {
   std::vector<double> data;
   std::size_t size() const { return width > 0 ? data.size() / static_cast<std::size_t>(width) : 0; }
   bool operator==(const FlatVec&) const = default;
+};
+
+// Where and how a value lies in memory, so that a front end can view it without
+// copying (Python's numpy arrays). Values with no such layout (strings, nested
+// lists) have scalar == none and are exchanged as text.
+struct FieldLayout {
+  enum class Scalar { none, f64, f32, i32, u32, boolean };
+  Scalar scalar = Scalar::none;
+  void* data = nullptr;       // first scalar (may be nullptr for an empty list)
+  std::size_t rows = 1;       // elements of a list (1 for a single value)
+  int cols = 1;               // scalars per element
+  int dims = 0;               // 0: one scalar; 1: one vector or a list of scalars; 2: a list of vectors or a matrix
+  bool column_major = false;  // a matrix stored by columns (Eigen's Mat3)
+  bool list = false;          // a list whose length changes when a value of another length is written
 };
 
 class BaseField {
@@ -101,6 +116,10 @@ class BaseField {
   virtual void get_rows(std::vector<double>&) const {}
   virtual void set_rows(const std::vector<double>&, int /*width*/) {}
 
+  // Memory layout of the stored value as it is now (no pull: call update() first to read
+  // an up-to-date value). Writing through it must be followed by touch().
+  virtual FieldLayout layout() { return {}; }
+
  protected:
   // Copies `other`'s value (same type: direct; otherwise rows, else text).
   virtual void copy_from(const BaseField& other) = 0;
@@ -143,6 +162,66 @@ struct Rows<std::vector<VecN<N>>> {
     v.assign(w > 0 ? flat.size() / w : 0, VecN<N>::Zero());
     for (std::size_t i = 0; i < v.size(); ++i)
       for (int c = 0; c < std::min(N, w); ++c) v[i][c] = flat[i * w + c];
+  }
+};
+
+// Memory layouts of the value types that have one (FieldLayout).
+template <class T> struct ScalarOf { static constexpr auto kind = FieldLayout::Scalar::none; };
+template <> struct ScalarOf<double> { static constexpr auto kind = FieldLayout::Scalar::f64; };
+template <> struct ScalarOf<float> { static constexpr auto kind = FieldLayout::Scalar::f32; };
+template <> struct ScalarOf<int> { static constexpr auto kind = FieldLayout::Scalar::i32; };
+template <> struct ScalarOf<unsigned> { static constexpr auto kind = FieldLayout::Scalar::u32; };
+template <> struct ScalarOf<bool> { static constexpr auto kind = FieldLayout::Scalar::boolean; };
+
+template <class T>
+struct LayoutOf {
+  static FieldLayout get(T& v) {
+    if constexpr (ScalarOf<T>::kind != FieldLayout::Scalar::none) return {ScalarOf<T>::kind, &v, 1, 1, 0};
+    else return {};
+  }
+};
+template <class S, int R, int C>
+struct LayoutOf<Eigen::Matrix<S, R, C>> {
+  static FieldLayout get(Eigen::Matrix<S, R, C>& v) {
+    if constexpr (R < 0 || C < 0) return {};
+    else if constexpr (C == 1) return {ScalarOf<S>::kind, v.data(), 1, R, 1};
+    else return {ScalarOf<S>::kind, v.data(), R, C, 2, /*column_major=*/true};
+  }
+};
+template <class S>
+struct LayoutOf<std::vector<S>> {
+  static FieldLayout get(std::vector<S>& v) {
+    if constexpr (std::is_same_v<S, bool>) {
+      return {};  // std::vector<bool> packs bits
+    } else if constexpr (ScalarOf<S>::kind != FieldLayout::Scalar::none) {
+      return {ScalarOf<S>::kind, v.data(), v.size(), 1, 1, false, true};
+    } else {
+      return LayoutOf<std::vector<S>>::elements(v);
+    }
+  }
+  // Lists of fixed-size vectors stored without padding: one row per element.
+  static FieldLayout elements(std::vector<S>& v) {
+    if constexpr (requires { typename S::Scalar; S::RowsAtCompileTime; }) {
+      using E = typename S::Scalar;
+      constexpr int n = S::RowsAtCompileTime * S::ColsAtCompileTime;
+      if constexpr (S::RowsAtCompileTime > 0 && S::ColsAtCompileTime > 0 && sizeof(S) == n * sizeof(E) && ScalarOf<E>::kind != FieldLayout::Scalar::none)
+        return {ScalarOf<E>::kind, v.empty() ? nullptr : v.data()->data(), v.size(), n, 2, false, true};
+      else return {};
+    } else if constexpr (requires { std::tuple_size<S>::value; typename S::value_type; }) {
+      using E = typename S::value_type;
+      constexpr int n = static_cast<int>(std::tuple_size<S>::value);
+      if constexpr (sizeof(S) == n * sizeof(E) && ScalarOf<E>::kind != FieldLayout::Scalar::none)
+        return {ScalarOf<E>::kind, v.empty() ? nullptr : v.data()->data(), v.size(), n, 2, false, true};
+      else return {};
+    } else {
+      return {};
+    }
+  }
+};
+template <>
+struct LayoutOf<FlatVec> {
+  static FieldLayout get(FlatVec& v) {
+    return {FieldLayout::Scalar::f64, v.data.data(), v.size(), v.width, 2, false, true};
   }
 };
 
@@ -217,6 +296,7 @@ class Field final : public BaseField {
     if constexpr (std::is_same_v<T, FlatVec>) flat = get().data;
     else if constexpr (Rows<T>::width > 0) Rows<T>::get(get(), flat);
   }
+  FieldLayout layout() override { return LayoutOf<T>::get(value_); }
   void set_rows(const std::vector<double>& flat, int w) override {
     if constexpr (std::is_same_v<T, FlatVec>) {
       const int mw = value_.width;

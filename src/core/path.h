@@ -23,3 +23,17 @@ Base* resolve_object_path(Node& node, Component* owner, std::string_view path,
 BaseField* resolve_field_link(Node& node, Component* owner, std::string_view link, std::string* why = nullptr);
 
 }  // namespace sinew
+
+namespace sinew {
+
+class Diagnostics;
+
+// Resolves the links still pending on components whose init has not run:
+// data links whose target did not exist when they were declared (a Python
+// scene may link to objects it adds later), then object links (SOFA's
+// updateLinks). An unresolvable data link is a warning and leaves its field
+// unset, as in SOFA; an unresolvable object link is an error. Run by the
+// scene builder at the end of a file and by init_root/init_added.
+void resolve_pending_links(Node& root, Diagnostics& diag);
+
+}  // namespace sinew

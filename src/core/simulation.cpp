@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/mechanical_ops.h"
+#include "core/path.h"
 #include "core/registry.h"
 
 namespace sinew {
@@ -93,6 +94,7 @@ bool init_root(Node& root) {
       root.add_object(std::move(loop), /*at_front=*/true);
     }
   }
+  resolve_pending_links(root, diag);
   init_fresh(root);
   Event done{Event::Kind::simulation_init_done};
   propagate_event(root, done);
@@ -104,6 +106,7 @@ bool init_root(Node& root) {
 bool init_added(Node& root) {
   Diagnostics& diag = root.diagnostics();
   const int errors_before = diag.error_count();
+  resolve_pending_links(root, diag);
   const std::vector<Node*> new_nodes = init_fresh(root);
   // Only new subtrees are projected: re-projecting settled states could move
   // them by round-off. New nodes below new nodes are covered by their top one.
@@ -116,6 +119,15 @@ bool init_added(Node& root) {
     store_reset(*n);
   }
   return diag.error_count() == errors_before;
+}
+
+void reset_root(Node& root) {
+  root.time.set(0.0);
+  for_each_node(root, [](Node& n) {
+    n.update_context();
+    for (auto& o : n.objects()) o->reset();
+  });
+  project_and_propagate(root, 0.0);
 }
 
 void notify_step_observers(Node& root, Stage stage, bool after) {

@@ -22,6 +22,11 @@ bool init_root(Node& root);
 // an error was reported.
 bool init_added(Node& root);
 
+// Back to the state stored at init (SOFA's Simulation::reset): time 0, every
+// component's reset() top-down (states take their reset positions and
+// velocities), then positions and velocities projected and propagated.
+void reset_root(Node& root);
+
 // One step of dt (0: the root's dt).
 void animate(Node& root, double dt = 0);
 

@@ -16,6 +16,7 @@ Session::Session(const std::string& path, const SessionOptions& options) {
   register_all_components();
   scene::LoadOptions lo;
   lo.data_paths = options.data_paths;
+  lo.script_args = options.script_args;
   // Loading and init never let an exception out (an allocation that failed
   // despite the size checks, a bug): it becomes an error and the scene is refused.
   try {

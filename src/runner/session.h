@@ -12,6 +12,7 @@ namespace sinew::runner {
 
 struct SessionOptions {
   std::vector<std::string> data_paths;  // extra data folders (after the scene's folder)
+  std::vector<std::string> script_args; // a Python scene's sys.argv[1:]
 };
 
 class Session {

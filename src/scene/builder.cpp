@@ -1,6 +1,8 @@
 #include "scene/builder.h"
 
+#include <cctype>
 #include <cstdlib>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -32,6 +34,65 @@ std::string suggestion_text(const std::vector<std::string>& names) {
   return s + "?)";
 }
 
+void apply_src(Component& c, Node& node, const std::string& src, const AttributeMap& attrs, const SourceLocation& where,
+               Diagnostics& diag) {
+  if (src.empty() || src[0] != '@') {
+    diag.error(where, c.describe() + ": src must start with '@' (" + quote_value(src) + ")");
+    return;
+  }
+  if (src == "@") {
+    diag.warning(where, c.describe() + ": empty src ignored");
+    return;
+  }
+  std::string why;
+  Base* target = resolve_object_path(node, &c, src.substr(src.rfind('@') + 1),
+                                     [](Base* b) { return dynamic_cast<Component*>(b) != nullptr; }, &why);
+  if (!target) {
+    diag.error(where, c.describe() + ": source object " + quote_value(src) + " not found: " + why);
+    return;
+  }
+  for (BaseField* from : target->fields()) {
+    if (!from->autolink() || from->name() == "type" || from->name() == "filename" || from->name() == "name")
+      continue;
+    std::vector<std::string> names{from->name()};
+    names.insert(names.end(), from->aliases().begin(), from->aliases().end());
+    for (const auto& n : names) {
+      if (attrs.peek(n)) continue;  // given explicitly on the element
+      BaseField* to = c.find_field(n);
+      if (to && to->autolink() && to != from) {
+        to->set_parent(from);
+        break;
+      }
+    }
+  }
+}
+
+void resolve_file(Component& c, BaseField& f, const ObjectSpec& spec, const ResourcePaths& paths, Diagnostics& diag) {
+  std::string value = f.text();
+  if (value.empty()) return;
+  if (auto found = paths.resolve(value, spec.base_dir)) {
+    f.read(*found);
+  } else if (f.file_required()) {
+    diag.error(spec.where, c.describe() + ": file not found: " + quote_value(value) + " (searched " + spec.base_dir +
+                               " and the data paths)");
+  }
+}
+
+// A data link whose target exists already is made at once; the others wait
+// for resolve_pending_links (end of the file, or init).
+void try_field_link(Component& c, BaseField& f) {
+  BaseField* parent = resolve_field_link(*c.node(), &c, f.link_path());
+  if (!parent || parent == &f) return;
+  f.set_parent(parent);
+  f.set_link_path({});
+}
+
+std::string default_name(Node& node, const std::string& cls, DefaultNames naming) {
+  // SOFA's XML convention numbers unnamed objects per class and node (trap T17);
+  // SofaPython3's gives the bare class name.
+  return naming == DefaultNames::python ? cls : cls + std::to_string(node.next_default_index(cls));
+}
+
 class Builder {
  public:
   Builder(const ResourcePaths& paths, LoadedScene& out) : paths_(paths), out_(out) {}
@@ -41,7 +102,7 @@ class Builder {
     out_.root->where = e.where;
     diag_ = &out_.root->diagnostics();
     build_node(e, *out_.root);
-    resolve_pending_links();
+    resolve_pending_links(*out_.root, *diag_);
     report_link_cycles();
   }
 
@@ -79,151 +140,12 @@ class Builder {
   }
 
   void build_object(const Element& e, Node& node) {
-    AttributeMap attrs;
-    for (const auto& [k, v] : e.attributes) attrs.set(k, v);
-    const std::string* tmpl = attrs.peek("template");
-    Registry::Created created = registry().create(e.tag, tmpl ? *tmpl : std::string_view{}, node, attrs);
-    for (const auto& w : created.warnings) diag_->warning(e.where, "'" + e.tag + "': " + w);
-    if (!created.component) {
-      std::string text = "unknown component '" + e.tag + "'";
-      if (registry().find(renamed_component(e.tag))) {
-        text = "cannot create '" + e.tag + "'";
-      } else {
-        text += suggestion_text(closest_names(e.tag, registry().names()));
-        out_.missing.push_back({e.tag, e.where});
-      }
-      diag_->error(e.where, text);
-      for (std::size_t i = 1; i < created.errors.size(); ++i) diag_->error(e.where, created.errors[i]);
-      return;
-    }
-    for (const auto& err : created.errors) diag_->error(e.where, "'" + e.tag + "': " + err);
-    const ComponentInfo* info = registry().find(renamed_component(e.tag));
-    // Type, location and name before insertion, so that messages raised by the
-    // insertion itself (a single slot taken over) and while parsing name the
-    // component; unnamed objects are ClassName1, ClassName2, ... per node (trap T17).
-    Component* c = created.component.get();
-    c->set_type(info->name, created.used_template);
-    c->where = e.where;
-    const std::string* given = attrs.peek("name");
-    if (given && !given->empty()) c->name.set(*given);
-    else c->name.set(info->name + std::to_string(node.next_default_index(info->name)));
-    if (!node.add_object(std::move(created.component))) return;
-    if (const std::string* src = attrs.take("src")) apply_src(*c, node, *src, attrs, e);
-    c->parse(attrs, *diag_);
-    if (c->name.value().empty()) c->name.set(info->name + std::to_string(node.next_default_index(info->name)));
-
-    // Unread attributes: SOFA warns ("Unused attribute"), except names starting with '_' or 'NO'.
-    if (!c->accepts_any_attribute())
-      for (const auto& [key, entry] : attrs.entries()) {
-        if (entry.used || key.rfind("_", 0) == 0 || key.rfind("NO", 0) == 0) continue;
-        std::vector<std::string> names;
-        for (BaseField* f : c->fields()) names.push_back(f->name());
-        for (BaseLink* l : c->links()) names.push_back(l->name());
-        diag_->warning(e.where, c->describe() + ": unused attribute '" + key + "' = " + quote_value(entry.value) +
-                                    suggestion_text(closest_names(key, names)));
-      }
-
-    for (BaseField* f : c->fields()) {
-      if (f->is_file() && f->is_set() && f->link_path().empty()) resolve_file(*c, *f, e);
-      if (!f->link_path().empty() && !try_field_link(*c, *f)) pending_.push_back({c, f});
-    }
-  }
-
-  void apply_src(Component& c, Node& node, const std::string& src, const AttributeMap& attrs, const Element& e) {
-    if (src.empty() || src[0] != '@') {
-      diag_->error(e.where, c.describe() + ": src must start with '@' (" + quote_value(src) + ")");
-      return;
-    }
-    if (src == "@") {
-      diag_->warning(e.where, c.describe() + ": empty src ignored");
-      return;
-    }
-    std::string why;
-    Base* target = resolve_object_path(node, &c, src.substr(src.rfind('@') + 1),
-                                       [](Base* b) { return dynamic_cast<Component*>(b) != nullptr; }, &why);
-    if (!target) {
-      diag_->error(e.where, c.describe() + ": source object " + quote_value(src) + " not found: " + why);
-      return;
-    }
-    for (BaseField* from : target->fields()) {
-      if (!from->autolink() || from->name() == "type" || from->name() == "filename" || from->name() == "name")
-        continue;
-      std::vector<std::string> names{from->name()};
-      names.insert(names.end(), from->aliases().begin(), from->aliases().end());
-      for (const auto& n : names) {
-        if (attrs.peek(n)) continue;  // given explicitly on the element
-        BaseField* to = c.find_field(n);
-        if (to && to->autolink() && to != from) {
-          to->set_parent(from);
-          break;
-        }
-      }
-    }
-  }
-
-  void resolve_file(Component& c, BaseField& f, const Element& e) {
-    std::string value = f.text();
-    if (value.empty()) return;
-    if (auto found = paths_.resolve(value, e.base_dir)) {
-      f.read(*found);
-    } else if (f.file_required()) {
-      diag_->error(e.where, c.describe() + ": file not found: " + quote_value(value) + " (searched " + e.base_dir +
-                                " and the data paths)");
-    }
-  }
-
-  bool try_field_link(Component& c, BaseField& f, std::string* why = nullptr) {
-    BaseField* parent = resolve_field_link(*c.node(), &c, f.link_path(), why);
-    if (!parent) return false;
-    if (parent == &f) {
-      if (why) *why = "a field cannot be linked to itself";
-      return false;
-    }
-    f.set_parent(parent);
-    f.set_link_path({});
-    return true;
-  }
-
-  void resolve_pending_links() {
-    // Data links to objects declared later, then object links (SOFA's UpdateLinks).
-    // SOFA warns about a data link it cannot resolve and goes on with the field unset (its
-    // default, and components then fall back as for an absent attribute); some of SOFA's own
-    // examples hold such links, so Sinew does the same, loudly.
-    for (auto& [c, f] : pending_) {
-      std::string why;
-      if (try_field_link(*c, *f, &why)) continue;
-      diag_->warning(c->where, c->describe() + ": cannot resolve link " + f->name() + "=" +
-                                   quote_value(f->link_path()) + ": " + why + "; '" + f->name() +
-                                   "' keeps its default, as if not given (as in SOFA)");
-      f->set_link_path({});
-      f->unset();
-    }
-    for_each_node(*out_.root, [&](Node& n) {
-      for (auto& o : n.objects())
-        for (BaseLink* l : o->links()) {
-          if (!l->is_set()) continue;
-          std::string why;
-          std::string path = l->path();
-          if (l->is_multi()) {  // several whitespace-separated paths
-            l->clear_targets();
-            std::istringstream tokens(path);
-            for (std::string p; tokens >> p;) {
-              std::string w;
-              Base* t = resolve_object_path(n, o.get(), p, [l](Base* b) { return l->accept(b); }, &w);
-              if (t) l->add_target(t);
-              else
-                diag_->error(o->where, o->describe() + ": cannot resolve link " + l->name() + "=" + quote_value(p) +
-                                           ": " + (w.empty() ? "wrong type" : w));
-            }
-            continue;
-          }
-          // Single links: one path.
-          Base* t = resolve_object_path(n, o.get(), path, [l](Base* b) { return l->accept(b); }, &why);
-          if (!t || !l->accept(t))
-            diag_->error(o->where, o->describe() + ": cannot resolve link " + l->name() + "=" + quote_value(path) +
-                                       ": " + (why.empty() ? "wrong type" : why));
-        }
-    });
+    ObjectSpec spec;
+    spec.type = e.tag;
+    for (const auto& [k, v] : e.attributes) spec.attributes.set(k, v);
+    spec.where = e.where;
+    spec.base_dir = e.base_dir;
+    add_object(node, spec, paths_, *diag_, &out_.missing);
   }
 
   // Data links (and engines whose outputs feed their own inputs) that form a
@@ -244,10 +166,64 @@ class Builder {
 
   const ResourcePaths& paths_;
   LoadedScene& out_;
-  std::vector<std::pair<Component*, BaseField*>> pending_;
 };
 
 }  // namespace
+
+Component* add_object(Node& node, ObjectSpec& spec, const ResourcePaths& paths, Diagnostics& diag,
+                      std::vector<MissingComponent>* missing) {
+  AttributeMap& attrs = spec.attributes;
+  const std::string& type = spec.type;
+  const std::string* tmpl = attrs.peek("template");
+  Registry::Created created = registry().create(type, tmpl ? *tmpl : std::string_view{}, node, attrs);
+  for (const auto& w : created.warnings) diag.warning(spec.where, "'" + type + "': " + w);
+  if (!created.component) {
+    std::string text = "unknown component '" + type + "'";
+    if (registry().find(renamed_component(type))) {
+      text = "cannot create '" + type + "'";
+    } else {
+      text += suggestion_text(closest_names(type, registry().names()));
+      if (missing) missing->push_back({type, spec.where});
+    }
+    diag.error(spec.where, text);
+    for (std::size_t i = 1; i < created.errors.size(); ++i) diag.error(spec.where, created.errors[i]);
+    return nullptr;
+  }
+  for (const auto& err : created.errors) diag.error(spec.where, "'" + type + "': " + err);
+  const ComponentInfo* info = registry().find(renamed_component(type));
+  // Type, location and name before insertion, so that messages raised by the
+  // insertion itself (a single slot taken over) and while parsing name the component.
+  Component* c = created.component.get();
+  c->set_type(info->name, created.used_template);
+  c->where = spec.where;
+  const std::string* given = attrs.peek("name");
+  if (given && !given->empty()) c->name.set(*given);
+  else c->name.set(default_name(node, info->name, spec.names));
+  if (!node.add_object(std::move(created.component))) return nullptr;
+  if (const std::string* src = attrs.take("src")) apply_src(*c, node, *src, attrs, spec.where, diag);
+  c->parse(attrs, diag);
+  if (c->name.value().empty()) c->name.set(default_name(node, info->name, spec.names));
+
+  // Unread attributes: SOFA warns ("Unused attribute"), except names starting with '_' or 'NO'.
+  spec.unused.clear();
+  if (!c->accepts_any_attribute())
+    for (const auto& [key, entry] : attrs.entries()) {
+      if (entry.used || key.rfind("_", 0) == 0 || key.rfind("NO", 0) == 0) continue;
+      std::vector<std::string> names;
+      for (BaseField* f : c->fields()) names.push_back(f->name());
+      for (BaseLink* l : c->links()) names.push_back(l->name());
+      std::string text = "unused attribute '" + key + "' = " + quote_value(entry.value) +
+                         suggestion_text(closest_names(key, names));
+      if (spec.report_unused) diag.warning(spec.where, c->describe() + ": " + text);
+      spec.unused.push_back(std::move(text));
+    }
+
+  for (BaseField* f : c->fields()) {
+    if (f->is_file() && f->is_set() && f->link_path().empty()) resolve_file(*c, *f, spec, paths, diag);
+    if (!f->link_path().empty()) try_field_link(*c, *f);
+  }
+  return c;
+}
 
 LoadedScene build_scene(const Element& root, const ResourcePaths& paths) {
   LoadedScene out;
@@ -259,7 +235,23 @@ LoadedScene build_scene(const Element& root, const ResourcePaths& paths) {
   return out;
 }
 
+namespace {
+std::map<std::string, SceneFileLoader>& scene_loaders() {
+  static std::map<std::string, SceneFileLoader> loaders;
+  return loaders;
+}
+}  // namespace
+
+void register_scene_loader(const std::string& extension, SceneFileLoader loader) {
+  scene_loaders()[extension] = loader;
+}
+
 LoadedScene load_scene(const std::string& path, const LoadOptions& options, Diagnostics& diag_if_no_root) {
+  if (const auto dot = path.find_last_of('.'); dot != std::string::npos && path.find('/', dot) == std::string::npos) {
+    std::string ext = path.substr(dot);
+    for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (auto it = scene_loaders().find(ext); it != scene_loaders().end()) return it->second(path, options, diag_if_no_root);
+  }
   ResourcePaths paths;
   for (const auto& d : options.data_paths) paths.add(d);
   if (options.use_sofa_data_path) paths.add_from_env();

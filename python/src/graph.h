@@ -1,0 +1,25 @@
+// Bindings of the scene graph and of the simulation entry points.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include "core/node.h"
+#include "scene/resource_paths.h"
+
+namespace sinew::python {
+
+namespace py = pybind11;
+
+void define_graph(py::module_& m);       // Base, Node, Object, Python component bases
+void define_matrix_access(py::module_& m);
+void define_topology(py::module_& m);      // addPoints / removePoints / removeItems on modifiers
+void define_simulation(py::module_& m);  // init, animate, reset, load, messages, factory
+
+// (kinetic, potential) energy of the subtree (SOFA's MechanicalComputeEnergyVisitor).
+py::tuple compute_energy(Node& node);
+// Where resource files named by Python-made objects are searched: the data
+// folders given to the run (`--data-path`, DataRepository) and $SOFA_DATA_PATH.
+scene::ResourcePaths resource_paths(Node& node);
+std::vector<std::string>& data_paths();
+
+}  // namespace sinew::python

@@ -1,0 +1,85 @@
+// Matrix access as SofaPython3 gives it: assembleKMatrix on force fields and
+// assembleMMatrix on masses, as scipy.sparse CSR matrices of the component's
+// state (one row and column per scalar degree of freedom).
+#include <pybind11/numpy.h>
+
+#include <algorithm>
+#include <tuple>
+
+#include "core/matrix_sink.h"
+#include "core/roles.h"
+#include "graph.h"
+#include "handles.h"
+
+namespace sinew::python {
+
+namespace {
+
+py::object to_csr(const MatrixSink& sink, const MechanicalState& s) {
+  const std::size_t n = s.size() * static_cast<std::size_t>(s.info().deriv_width);
+  // Sorted (row, col) with duplicates summed: the CSR arrays scipy expects.
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, double>> t;
+  t.reserve(sink.entries().size());
+  for (const auto& e : sink.entries())
+    if (e.row_state == &s && e.col_state == &s) t.emplace_back(e.row, e.col, e.value);
+  std::sort(t.begin(), t.end(), [](const auto& a, const auto& b) {
+    return std::get<0>(a) != std::get<0>(b) ? std::get<0>(a) < std::get<0>(b) : std::get<1>(a) < std::get<1>(b);
+  });
+  std::vector<double> values;
+  std::vector<std::int32_t> cols, rows(n + 1, 0);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const auto [r, c, v] = t[i];
+    if (!values.empty() && i > 0 && std::get<0>(t[i - 1]) == r && std::get<1>(t[i - 1]) == c) {
+      values.back() += v;
+      continue;
+    }
+    values.push_back(v);
+    cols.push_back(static_cast<std::int32_t>(c));
+    ++rows[r + 1];
+  }
+  for (std::size_t r = 0; r < n; ++r) rows[r + 1] += rows[r];
+  py::module_ sparse = py::module_::import("scipy.sparse");
+  py::array_t<double> pv(values.size(), values.data());
+  py::array_t<std::int32_t> pc(cols.size(), cols.data());
+  py::array_t<std::int32_t> pr(rows.size(), rows.data());
+  return sparse.attr("csr_matrix")(py::make_tuple(pv, pc, pr), py::arg("shape") = py::make_tuple(n, n));
+}
+
+MechanicalState& state_of(ForceField& ff) {
+  MechanicalState* s = ff.single_state();
+  if (!s) throw py::value_error(ff.describe() + " acts on " + std::to_string(ff.states().size()) +
+                                " states (or none): its matrix has no single state to be expressed in");
+  return *s;
+}
+
+}  // namespace
+
+void define_matrix_access(py::module_& m) {
+  auto object = py::reinterpret_borrow<py::object>(m.attr("Object"));
+  object.attr("assembleKMatrix") = py::cpp_function(
+      [](ObjectHandle& h) {
+        auto* ff = dynamic_cast<ForceField*>(&h.component());
+        if (!ff) throw py::type_error(h.component().describe() + " is not a force field");
+        MechanicalState& s = state_of(*ff);
+        MatrixSink K;
+        K.set_factor(1.0);
+        if (!ff->build_stiffness(K)) throw py::value_error(ff->describe() + " cannot assemble its stiffness matrix");
+        return to_csr(K, s);
+      },
+      py::is_method(object), py::name("assembleKMatrix"),
+      py::doc("Stiffness matrix K = ∂f/∂x of this force field on its state (scipy.sparse CSR)"));
+  object.attr("assembleMMatrix") = py::cpp_function(
+      [](ObjectHandle& h) {
+        auto* mass = dynamic_cast<Mass*>(&h.component());
+        if (!mass) throw py::type_error(h.component().describe() + " is not a mass");
+        MechanicalState& s = state_of(*mass);
+        MatrixSink M;
+        M.set_factor(1.0);
+        if (!mass->build_mass(M)) throw py::value_error(mass->describe() + " cannot assemble its mass matrix");
+        return to_csr(M, s);
+      },
+      py::is_method(object), py::name("assembleMMatrix"),
+      py::doc("Mass matrix of this mass on its state (scipy.sparse CSR)"));
+}
+
+}  // namespace sinew::python
