@@ -17,10 +17,12 @@ def main():
         for _ in range(10000):
             data.value
         best = min(best, time.perf_counter() - t0)
-    t0 = time.perf_counter()
-    for _ in range(10000):
-        dofs.position.value
-    lookup = time.perf_counter() - t0
+    lookup = float("inf")
+    for _ in range(5):
+        t0 = time.perf_counter()
+        for _ in range(10000):
+            dofs.position.value
+        lookup = min(lookup, time.perf_counter() - t0)
     print("10,000 reads of a held Data:            %.2f ms" % (best * 1e3))
     print("10,000 reads through dofs.position:     %.2f ms" % (lookup * 1e3))
 

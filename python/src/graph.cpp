@@ -185,6 +185,15 @@ py::object node_getattr(py::object self, const std::string& name) {
 
 py::object object_getattr(py::object self, const std::string& name) {
   Component& c = py::cast<ObjectHandle&>(self).component();
+  if (BaseField* f = c.find_field(name)) {
+    // A component's fields never change: the Data object is kept in the instance's
+    // dictionary, so the next `obj.name` is a plain attribute read (no search, no new
+    // object). Writes still go through __setattr__, which sets the value.
+    py::object d = wrap_field(f, self);
+    py::object dict = py::getattr(self, "__dict__", py::none());
+    if (py::isinstance<py::dict>(dict)) dict[py::str(name)] = d;
+    return d;
+  }
   if (auto r = field_or_link(self, c, name)) return *r;
   throw py::attribute_error(unknown_attribute(c, name));
 }

@@ -2,7 +2,11 @@
 // and data folders, as SofaPython3 gives them.
 #include <pybind11/stl.h>
 
+#include <tbb/global_control.h>
+
 #include <cstdio>
+#include <memory>
+#include <thread>
 
 #include "components/register_all.h"
 #include "core/mechanical_ops.h"
@@ -138,6 +142,25 @@ void define_simulation(py::module_& m) {
     flush_messages(root_of(h));
   }, py::arg("node"), py::arg("key"), py::arg("pressed") = true,
   "Send a key event to the graph, as a viewer does (Ctrl held)");
+
+  // SofaPython3's Sofa.Core.TaskScheduler: how many worker threads parallel components use.
+  struct TaskScheduler {};
+  static std::unique_ptr<tbb::global_control> threads;
+  static unsigned thread_count = 0;
+  py::class_<TaskScheduler>(m, "TaskScheduler", "Worker threads of the parallel components (oneTBB)")
+      .def_static("GetHardwareThreadsCount", []() { return std::max(1u, std::thread::hardware_concurrency()); })
+      .def_static("init", [](unsigned n) {
+        if (n == 0) n = std::max(1u, std::thread::hardware_concurrency());
+        threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, n);
+        thread_count = n;
+      }, py::arg("nbThreads") = 0)
+      .def_static("getThreadCount", []() {
+        return thread_count ? thread_count : std::max(1u, std::thread::hardware_concurrency());
+      })
+      .def_static("stop", []() {
+        threads.reset();
+        thread_count = 0;
+      });
 
   m.def("msg_info", [](py::args a) { message(Severity::info, a); });
   m.def("msg_warning", [](py::args a) { message(Severity::warning, a); });

@@ -117,3 +117,16 @@ def test_context_manager_and_kwargs_on_nodes():
         assert child.activated.value is False
     with pytest.raises(TypeError, match="gravity"):
         root.addChild("c2", gravty=[0, 0, 0])
+
+
+def test_task_scheduler_sets_the_worker_threads():
+    ts = Sofa.Core.TaskScheduler
+    assert ts.GetHardwareThreadsCount() >= 1
+    ts.init(1)
+    assert ts.getThreadCount() == 1
+    root = Sofa.Core.Node("root")
+    make_beam(root)
+    Sofa.Simulation.init(root)
+    Sofa.Simulation.animate(root)
+    ts.stop()
+    assert ts.getThreadCount() == ts.GetHardwareThreadsCount()

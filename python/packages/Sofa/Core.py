@@ -16,6 +16,7 @@ ForceFieldVec3d = _sinew.ForceFieldVec3d
 ForceFieldVec6d = _sinew.ForceFieldVec6d
 ForceFieldRigid2d = _sinew.ForceFieldRigid2d
 ForceFieldRigid3d = _sinew.ForceFieldRigid3d
+TaskScheduler = _sinew.TaskScheduler
 
 
 class ClassEntry:

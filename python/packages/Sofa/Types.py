@@ -1,4 +1,5 @@
 """Sofa.Types: small value types."""
+from Sofa.PyTypes import RGBAColor  # noqa: F401  (SofaPython3 has it here too)
 
 
 class BoundingBox:
