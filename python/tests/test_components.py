@@ -162,3 +162,15 @@ def test_factory_lists_components():
     assert fields["position"]["layout"] == "array"
     assert Sofa.Core.ObjectFactory.hasComponent("FixedConstraint")  # SOFA's old name still known
     assert not Sofa.Core.ObjectFactory.hasComponent("NoSuchThing")
+
+
+def test_type_stubs_name_every_component_and_its_data(tmp_path):
+    import ast
+    from sinew import stubs
+    assert stubs.main([str(tmp_path)]) == 0
+    text = (tmp_path / "Sofa-stubs" / "Core.pyi").read_text()
+    ast.parse(text)
+    mo = [line for line in text.splitlines() if "Literal['MechanicalObject']" in line]
+    assert len(mo) == 1 and "position: ArrayLike | str" in mo[0] and "showObject: bool | str" in mo[0]
+    for c in Sofa.Core.ObjectFactory.getComponentsList():
+        assert "Literal[%r]" % c.className in text
