@@ -227,8 +227,11 @@ py::object node_getitem(py::object self, const std::string& path) {
 
 void node_init(Node& n) {
   Node& root = *n.root();
-  if (!root.initialised) init_root(root);
-  else init_added(root);
+  {
+    py::gil_scoped_release release;  // as a step: components may call Python from worker threads
+    if (!root.initialised) init_root(root);
+    else init_added(root);
+  }
   flush_messages(root);
 }
 

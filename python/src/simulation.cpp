@@ -58,8 +58,12 @@ Node& root_of(NodeHandle& h) { return *h.node().root(); }
 
 void init_graph(Node& root) {
   if (root.data_dirs.empty()) root.data_dirs = resource_paths(root).dirs();
-  if (!root.initialised) init_root(root);
-  else init_added(root);
+  {
+    // Without the GIL, as a step: a component may call Python from a worker thread.
+    py::gil_scoped_release release;
+    if (!root.initialised) init_root(root);
+    else init_added(root);
+  }
   flush_messages(root);
 }
 
@@ -114,7 +118,10 @@ void define_simulation(py::module_& m) {
         for (int i = 0; i < n; ++i) step(root_of(h), dt);
       }, py::arg("node"), py::arg("n_steps") = 1, py::arg("dt") = 0.0);
   m.def("reset", [](NodeHandle& h) {
-    reset_root(root_of(h));
+    {
+      py::gil_scoped_release release;
+      reset_root(root_of(h));
+    }
     flush_messages(root_of(h));
   });
   m.def("unload", [](NodeHandle& h) {

@@ -174,3 +174,25 @@ def test_type_stubs_name_every_component_and_its_data(tmp_path):
     assert len(mo) == 1 and "position: ArrayLike | str" in mo[0] and "showObject: bool | str" in mo[0]
     for c in Sofa.Core.ObjectFactory.getComponentsList():
         assert "Literal[%r]" % c.className in text
+
+
+def test_python_force_fields_in_parallel_branches():
+    """parallelODESolving integrates branches on worker threads: each Python call takes the GIL
+    (animate releases it), so two Python force fields in two branches neither deadlock nor race."""
+    root = Sofa.Core.Node("root", dt=0.01, gravity=[0, 0, 0])
+    root.addObject("DefaultAnimationLoop", parallelODESolving=True)
+    branches = []
+    for i in range(2):
+        n = root.addChild("b%d" % i)
+        n.addObject("EulerImplicitSolver", rayleighStiffness=0, rayleighMass=0)
+        n.addObject("CGLinearSolver", iterations=100, tolerance=1e-20, threshold=1e-20)
+        n.addObject("MechanicalObject", name="dofs", position=[0, 0, 0], velocity=[1 + i, 0, 0])
+        n.addObject("UniformMass", totalMass=2.0)
+        n.addObject(RestShape(50.0, name="spring"))
+        branches.append(n)
+    Sofa.Simulation.init(root)
+    for _ in range(50):
+        Sofa.Simulation.animate(root)
+    x0 = branches[0].dofs.position.value[0][0]
+    x1 = branches[1].dofs.position.value[0][0]
+    assert x0 != 0 and x1 == pytest.approx(2 * x0, rel=1e-9)  # linear: twice the initial velocity
