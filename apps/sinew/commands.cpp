@@ -21,6 +21,8 @@
 #include "core/profile.h"
 #include "io/vtk_writer.h"
 #include "regression/gzip_text.h"
+#include "render/offscreen.h"
+#include "render/png_io.h"
 #include "runner/probes.h"
 #include "runner/regress.h"
 #include "runner/session.h"
@@ -236,6 +238,78 @@ int run(const RunArgs& a) {
   // Messages of the run (solver warnings, step errors), printed once.
   print_messages(session.diagnostics(), false, printed);
   if (interrupted) return 130;
+  return ok ? 0 : 1;
+}
+
+int render(const RenderArgs& a) {
+  int width = 0, height = 0;
+  char tail = 0;
+  if (std::sscanf(a.size.c_str(), "%dx%d%c", &width, &height, &tail) != 2 || width <= 0 || height <= 0) {
+    std::fprintf(stderr, "sinew: --size must be WIDTHxHEIGHT (e.g. 800x600), not '%s'\n", a.size.c_str());
+    return 1;
+  }
+  if (a.steps < 0) {
+    std::fprintf(stderr, "sinew: the number of steps must be >= 0\n");
+    return 1;
+  }
+  if (!a.frames.empty() && !is_dir(a.frames)) {
+    std::fprintf(stderr, "sinew: --frames folder %s does not exist\n", a.frames.c_str());
+    return 1;
+  }
+  // The GL context first: without one there is no point in loading the scene.
+  render::RenderOptions ro;
+  ro.width = width, ro.height = height;
+  std::string err;
+  auto renderer = render::OffscreenRenderer::create(ro, &err);
+  if (!renderer) {
+    std::fprintf(stderr, "sinew: %s\n", err.c_str());
+    return 1;
+  }
+  runner::SessionOptions so;
+  so.data_paths = data_paths_for(a.data_paths);
+  so.script_args = a.script_args;
+  runner::Session session(a.scene, so);
+  print_messages(session.diagnostics());
+  std::size_t printed = session.diagnostics().messages().size();
+  if (!session.ok()) {
+    std::fprintf(stderr, "sinew: the scene %s cannot run (see the errors above)\n", a.scene.c_str());
+    return 1;
+  }
+  Node& root = session.root();
+  render::Image image;
+  auto picture = [&](const std::string& path) {
+    if (!renderer->render(root, image, &err) || !render::write_png(path, image, &err)) {
+      std::fprintf(stderr, "sinew: %s\n", err.c_str());
+      return false;
+    }
+    return true;
+  };
+  auto frame_path = [&](long k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "/frame_%05ld.png", k);
+    return a.frames + name;
+  };
+  if (!a.frames.empty() && !picture(frame_path(0))) return 1;
+  bool ok = true;
+  {
+    InterruptHandler on_sigint;
+    for (long i = 0; i < a.steps; ++i) {
+      if (!session.step()) {
+        ok = false;
+        break;
+      }
+      if (!a.frames.empty() && !picture(frame_path(i + 1))) return 1;
+      if (interrupt_requested()) {
+        std::fprintf(stderr, "sinew: interrupted after %ld of %ld steps\n", session.steps_done(), a.steps);
+        ok = false;
+        break;
+      }
+    }
+  }
+  print_messages(session.diagnostics(), false, printed);
+  if (!picture(a.output)) return 1;
+  std::printf("%s: %ld steps, picture %dx%d written to %s (%s)\n", a.scene.c_str(), session.steps_done(), width,
+              height, a.output.c_str(), renderer->gl_description().c_str());
   return ok ? 0 : 1;
 }
 
