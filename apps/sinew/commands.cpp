@@ -276,6 +276,11 @@ int render(const RenderArgs& a) {
     return 1;
   }
   Node& root = session.root();
+  // The view is framed on the loaded scene, as a viewer does: bodies move in the pictures.
+  if (!renderer->frame(root, &err)) {
+    std::fprintf(stderr, "sinew: %s\n", err.c_str());
+    return 1;
+  }
   render::Image image;
   auto picture = [&](const std::string& path) {
     if (!renderer->render(root, image, &err) || !render::write_png(path, image, &err)) {

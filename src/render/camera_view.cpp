@@ -36,18 +36,21 @@ Frame default_frame(const Vec3& gravity, const Vec3& min, const Vec3& max) {
   return f;
 }
 
+// The first active camera of the graph, depth-first (no allocation: called every frame).
+const BaseCamera* find_camera(const Node& node) {
+  for (const auto& o : node.objects())
+    if (const auto* c = dynamic_cast<const BaseCamera*>(o.get()))
+      if (c->activated.get() && c->state() == ComponentState::valid) return c;
+  for (const auto& child : node.children())
+    if (const BaseCamera* c = find_camera(*child)) return c;
+  return nullptr;
+}
+
 }  // namespace
 
 View view_for(const Node& root, const Vec3& min, const Vec3& max, int width, int height) {
   View v;
-  const BaseCamera* cam = nullptr;
-  std::vector<BaseCamera*> cams;
-  root.collect_down(cams);
-  for (BaseCamera* c : cams)
-    if (c->activated.get() && c->state() == ComponentState::valid) {
-      cam = c;
-      break;
-    }
+  const BaseCamera* cam = find_camera(root);
   Frame f;
   if (cam && !cam->wants_default_view()) {
     f.position = cam->position.get();

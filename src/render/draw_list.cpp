@@ -18,6 +18,7 @@ Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind) {
   Batch& b = list.batches[list.used++];
   if (b.source != source || b.kind != kind) {
     b.positions.clear(), b.normals.clear(), b.colors.clear(), b.indices.clear();
+    b.material_version = 0;
   }
   b.source = source;
   b.kind = kind;
@@ -89,7 +90,11 @@ void add_visual_model(DrawList& list, const OglModel& m) {
     --list.used;
     return;
   }
-  b.shading = shading_of(material_of(m));
+  // The material text is parsed again only when it changed (parsing allocates).
+  if (b.material_version != m.material.version()) {
+    b.shading = shading_of(material_of(m));
+    b.material_version = m.material.version();
+  }
   grow_bounds(list, b.positions);
 }
 

@@ -29,15 +29,28 @@ OffscreenRenderer::~OffscreenRenderer() {
 
 const std::string& OffscreenRenderer::gl_description() const { return context_->description(); }
 
+namespace {
+bool nothing_visible(const DrawList& list, std::string* error) {
+  if (list.used > 0 && list.has_bounds) return false;
+  if (error)
+    *error = "nothing is visible: the scene has no visual model (OglModel) and its VisualStyle shows no "
+             "behaviour model or force field";
+  return true;
+}
+}  // namespace
+
+bool OffscreenRenderer::frame(Node& root, std::string* error) {
+  gather(root, list_);
+  if (nothing_visible(list_, error)) return false;
+  framed_ = true;
+  framed_min_ = list_.min, framed_max_ = list_.max;
+  return true;
+}
+
 bool OffscreenRenderer::render(Node& root, Image& out, std::string* error) {
   gather(root, list_);
-  if (list_.used == 0 || !list_.has_bounds) {
-    if (error)
-      *error = "nothing is visible: the scene has no visual model (OglModel) and its VisualStyle shows no "
-               "behaviour model or force field";
-    return false;
-  }
-  Vec3 min = list_.min, max = list_.max;
+  if (nothing_visible(list_, error)) return false;
+  Vec3 min = framed_ ? framed_min_ : list_.min, max = framed_ ? framed_max_ : list_.max;
   // The root's bbox (SOFA's fixed bounding box), when given as min then max.
   if (const auto& b = root.bbox.get(); b.size() == 6 && b[0] <= b[3] && b[1] <= b[4] && b[2] <= b[5])
     min = Vec3(b[0], b[1], b[2]), max = Vec3(b[3], b[4], b[5]);

@@ -41,6 +41,11 @@ class OffscreenRenderer {
   // (no visual model, and no behaviour or force field shown by the display flags).
   bool render(Node& root, Image& out, std::string* error);
 
+  // Fixes the bounding box the default view frames to what `root` shows now (a viewer frames
+  // the scene once, when it is loaded, so a moving body moves in the picture); without it,
+  // every picture frames what it shows. No effect on a scene camera's view, except its clip planes.
+  bool frame(Node& root, std::string* error);
+
   const DrawList& draw_list() const { return list_; }
   const View& view() const { return view_; }
   // "OpenGL <version> on <renderer>".
@@ -53,6 +58,8 @@ class OffscreenRenderer {
   std::unique_ptr<GlRenderer> gl_;
   DrawList list_;
   View view_;
+  bool framed_ = false;
+  Vec3 framed_min_ = Vec3::Zero(), framed_max_ = Vec3::Zero();
 };
 
 }  // namespace sinew::render
