@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <memory>
 #include <regex>
@@ -150,6 +151,23 @@ class InterruptHandler {
   bool installed_ = false;
 };
 
+// Steps `session` `steps` times under a Ctrl-C handler, calling after(k) once step k is done;
+// after() returning false stops the loop. Shared by `run` and `render`.
+enum class LoopEnd { done, step_failed, stopped, interrupted };
+LoopEnd step_loop(runner::Session& session, long steps, const std::function<bool(long)>& after) {
+  InterruptHandler on_sigint;
+  for (long i = 0; i < steps; ++i) {
+    if (!session.step()) return LoopEnd::step_failed;
+    if (!after(i + 1)) return LoopEnd::stopped;
+    if (interrupt_requested()) {
+      std::fflush(stdout);
+      std::fprintf(stderr, "sinew: interrupted after %ld of %ld steps\n", session.steps_done(), steps);
+      return LoopEnd::interrupted;
+    }
+  }
+  return LoopEnd::done;
+}
+
 }  // namespace
 
 std::string default_data_root() {
@@ -202,26 +220,12 @@ int run(const RunArgs& a) {
   std::printf("Computing %ld iterations.\n", a.steps);
   ProgressBar bar(a.steps, a.progress);
   const auto t0 = std::chrono::steady_clock::now();
-  bool ok = true;
-  bool interrupted = false;
-  {
-    InterruptHandler on_sigint;
-    for (long i = 0; i < a.steps; ++i) {
-      if (!session.step()) {
-        ok = false;
-        break;
-      }
-      bar.update(i + 1);
-      if (interrupt_requested()) {
-        interrupted = true;
-        break;
-      }
-    }
-  }
-  if (interrupted) {
-    std::fflush(stdout);
-    std::fprintf(stderr, "sinew: interrupted after %ld of %ld steps\n", session.steps_done(), a.steps);
-  }
+  const LoopEnd end = step_loop(session, a.steps, [&](long done) {
+    bar.update(done);
+    return true;
+  });
+  bool ok = end == LoopEnd::done;
+  const bool interrupted = end == LoopEnd::interrupted;
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const long done = session.steps_done();
   std::printf("%ld iterations done in %g s ( %g FPS).\n", done, secs, secs > 0 ? done / secs : 0.0);
@@ -295,22 +299,10 @@ int render(const RenderArgs& a) {
     return a.frames + name;
   };
   if (!a.frames.empty() && !picture(frame_path(0))) return 1;
-  bool ok = true;
-  {
-    InterruptHandler on_sigint;
-    for (long i = 0; i < a.steps; ++i) {
-      if (!session.step()) {
-        ok = false;
-        break;
-      }
-      if (!a.frames.empty() && !picture(frame_path(i + 1))) return 1;
-      if (interrupt_requested()) {
-        std::fprintf(stderr, "sinew: interrupted after %ld of %ld steps\n", session.steps_done(), a.steps);
-        ok = false;
-        break;
-      }
-    }
-  }
+  const LoopEnd end =
+      step_loop(session, a.steps, [&](long done) { return a.frames.empty() || picture(frame_path(done)); });
+  if (end == LoopEnd::stopped) return 1;  // a frame could not be written (said above)
+  const bool ok = end == LoopEnd::done;
   print_messages(session.diagnostics(), false, printed);
   if (!picture(a.output)) return 1;
   std::printf("%s: %ld steps, picture %dx%d written to %s (%s)\n", a.scene.c_str(), session.steps_done(), width,

@@ -60,24 +60,26 @@ void BaseCamera::init() {
   }
 }
 
-namespace {
-template <class T>
-void add_camera(Registry& r, const char* name, const char* what) {
-  ComponentInfo info;
-  info.name = name;
-  info.category = "Visual";
-  info.description = what;
-  info.create = creator<T>();
-  r.add(std::move(info));
-}
-}  // namespace
-
 void register_cameras(Registry& r) {
-  add_camera<InteractiveCamera>(r, "InteractiveCamera",
-                                "viewer camera driven by the mouse; its view is used by `sinew render`");
-  add_camera<BaseCamera>(r, "Camera", "a camera rendering the scene from a given position and orientation");
-  add_camera<RecordedCamera>(r, "RecordedCamera",
-                             "camera following a recorded or rotating path (its initial view is rendered)");
+  const struct {
+    const char* name;
+    const char* what;
+    std::function<std::unique_ptr<Component>(const std::string&)> create;
+  } list[] = {
+      {"InteractiveCamera", "viewer camera driven by the mouse; its view is used by `sinew render`",
+       creator<InteractiveCamera>()},
+      {"Camera", "a camera rendering the scene from a given position and orientation", creator<BaseCamera>()},
+      {"RecordedCamera", "camera following a recorded or rotating path (its initial view is rendered)",
+       creator<RecordedCamera>()},
+  };
+  for (const auto& e : list) {
+    ComponentInfo info;
+    info.name = e.name;
+    info.category = "Visual";
+    info.description = e.what;
+    info.create = e.create;
+    r.add(std::move(info));
+  }
 }
 
 }  // namespace sinew
