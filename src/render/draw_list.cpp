@@ -24,6 +24,7 @@ Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind) {
   b.kind = kind;
   b.color_ambient = 0.f;
   b.point_size = 1.f;
+  b.wireframe = false;
   return b;
 }
 
@@ -57,12 +58,13 @@ void model_vertices(const OglModel& m, std::vector<float>& out) {
       out[v * 3 + c] = idx[v] * 3 + c < x.size() ? static_cast<float>(x[idx[v] * 3 + c]) : 0.f;
 }
 
-void add_visual_model(DrawList& list, const OglModel& m) {
+void add_visual_model(DrawList& list, const OglModel& m, bool wireframe) {
   if (!m.enable.get() || !m.is_enabled.get() || m.state() != ComponentState::valid) return;
   const auto& tris = m.triangles.get();
   const auto& quads = m.quads.get();
   if (tris.empty() && quads.empty()) return;
   Batch& b = next_batch(list, &m, Batch::Kind::triangles);
+  b.wireframe = wireframe;
   model_vertices(m, b.positions);
   const std::size_t n = b.vertex_count();
   const auto& given = m.normal.get();
@@ -126,7 +128,7 @@ void push_triangle(Batch& b, std::size_t& k, const V3f& a, const V3f& c1, const 
 // TetrahedronFEMForceField::draw: each tetrahedron shrunk to 2/3 around its centre, its four
 // faces in four blues. HexahedronFEMForceField::draw: each hexahedron shrunk, six face colours.
 void add_force_field_mesh(DrawList& list, const Component& ff, const MeshTopologyBase& topo,
-                          const std::vector<float>& x) {
+                          const std::vector<float>& x, bool wireframe) {
   static const float kTetra[4][4] = {{0, 0, 1, 1}, {0, 0.5f, 1, 1}, {0, 1, 1, 1}, {0.5f, 1, 1, 1}};
   static const float kHexa[6][4] = {{0.7f, 0.7f, 0.1f, 1}, {0.7f, 0, 0, 1},    {0, 0.7f, 0, 1},
                                     {0, 0, 0.7f, 1},       {0.1f, 0.7f, 0.7f, 1}, {0.7f, 0.1f, 0.7f, 1}};
@@ -137,6 +139,7 @@ void add_force_field_mesh(DrawList& list, const Component& ff, const MeshTopolog
   const auto& hexas = topo.hexahedra();
   const std::size_t n = x.size() / 3;
   Batch& b = next_batch(list, &ff, Batch::Kind::triangles);
+  b.wireframe = wireframe;
   const std::size_t verts = tets.size() * 12 + hexas.size() * 36;
   b.positions.resize(verts * 3);
   b.normals.resize(verts * 3);
@@ -188,7 +191,8 @@ void visit(Node& node, const DisplayFlags& inherited, DrawList& list, std::vecto
 
   if (flags.shown(DisplayFlags::visual_models))
     for (const auto& o : node.objects())
-      if (const auto* m = dynamic_cast<const OglModel*>(o.get())) add_visual_model(list, *m);
+      if (const auto* m = dynamic_cast<const OglModel*>(o.get()))
+        add_visual_model(list, *m, flags.shown(DisplayFlags::wireframe));
 
   MechanicalState* state = node.mechanical_state;
   if (state && state->state() == ComponentState::valid) {
@@ -198,7 +202,7 @@ void visit(Node& node, const DisplayFlags& inherited, DrawList& list, std::vecto
         if (!topo || ff->is_interaction() || dynamic_cast<Mass*>(ff) || ff->state() != ComponentState::valid) continue;
         if (topo->tetrahedra().empty() && topo->hexahedra().empty()) continue;
         if (ff->single_state() != state || !state_positions(*state, scratch)) continue;
-        add_force_field_mesh(list, *ff, *topo, scratch);
+        add_force_field_mesh(list, *ff, *topo, scratch, flags.shown(DisplayFlags::wireframe));
         break;  // one drawing of the mesh per node
       }
     }

@@ -40,6 +40,7 @@ struct Batch {
   Shading shading{};
   float color_ambient = 0.f;  // ambient term proportional to the vertex colour (SOFA's draw tool)
   float point_size = 1.f;
+  bool wireframe = false;  // showWireframe: triangles drawn as their edges
   std::uint64_t material_version = 0;  // the model's `material` version `shading` was read at (0: none)
   std::size_t vertex_count() const { return positions.size() / 3; }
 };

@@ -221,6 +221,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
       glDrawArrays(GL_POINTS, 0, n);
     } else {
       glUniform1i(u_lit_, 1);
+      glPolygonMode(GL_FRONT_AND_BACK, b.wireframe ? GL_LINE : GL_FILL);
       if (!b.indices.empty()) {
         upload(GL_ELEMENT_ARRAY_BUFFER, g.ebo, b.indices.data(), b.indices.size() * sizeof(unsigned), g.capacity[3]);
         glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.indices.size()), GL_UNSIGNED_INT, nullptr);
@@ -230,6 +231,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
     }
   }
   glBindVertexArray(0);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   if (samples_ > 0) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);

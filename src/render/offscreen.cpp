@@ -1,6 +1,8 @@
 #include "render/offscreen.h"
 
 #include "core/node.h"
+#include "render/material.h"
+#include "visual/background_setting.h"
 #include "render/gl_context.h"
 #include "render/gl_renderer.h"
 
@@ -63,7 +65,11 @@ bool OffscreenRenderer::render(Node& root, Image& out, std::string* error) {
     if (error) *error = "the off-screen OpenGL context cannot be made current";
     return false;
   }
-  gl_->draw(list_, view_, options_.background);
+  // The scene's BackgroundSetting colour, else the options' background.
+  std::array<float, 4> background = options_.background;
+  if (const auto* bg = root.find_down<BackgroundSetting>())
+    if (auto c = parse_color(bg->color.get())) background = {(*c)[0], (*c)[1], (*c)[2], 1.f};
+  gl_->draw(list_, view_, background);
   gl_->read(out);
   return true;
 }

@@ -22,7 +22,6 @@ void register_viewer_only(Registry& r) {
       {"VisualGrid", "reference grid drawn by the viewer"},
       {"OglSceneFrame", "axes drawn in a corner of the viewer"},
       {"LineAxis", "axes drawn by the viewer"},
-      {"BackgroundSetting", "background colour or image of the viewer"},
       {"OglLabel", "text label drawn by the viewer"},
       {"Visual3DText", "3D text drawn by the viewer"},
       {"LightManager", "viewer lights"},

@@ -195,6 +195,25 @@ TEST_F(RenderTest, FramedDefaultViewStaysPut) {
   EXPECT_LT(top_row(after), top_row(before) - 10);
 }
 
+// BackgroundSetting's colour clears the picture; showWireframe draws the edges only.
+TEST_F(RenderTest, BackgroundSettingAndWireframe) {
+  auto filled = test::load("<Node name=\"root\"><BackgroundSetting color=\"0 0 1\"/>" + cube("c", "white", 0) +
+                           "</Node>");
+  const Image a = render(*filled.root);
+  EXPECT_EQ(a.rgb(2, 2), (std::array<int, 3>{0, 0, 255}));
+  auto lit = [](const Image& img) {
+    return count_if(img, [](auto c) { return c[0] > 0; });  // white model on blue
+  };
+  auto wire = test::load("<Node name=\"root\"><BackgroundSetting color=\"0 0 1\"/>"
+                         "<VisualStyle displayFlags=\"showWireframe\"/>" +
+                         cube("c", "white", 0) + "</Node>");
+  const Image b = render(*wire.root);
+  RecordProperty("filled", static_cast<int>(lit(a)));
+  RecordProperty("wireframe", static_cast<int>(lit(b)));
+  EXPECT_GT(lit(b), 100);
+  EXPECT_LT(lit(b), lit(a) / 4);
+}
+
 TEST_F(RenderTest, NothingVisibleIsAnError) {
   auto s = test::load(R"(<Node name="root"><VisualStyle displayFlags="hideVisualModels"/>
       <OglModel position="0 0 0 1 0 0 1 1 0" triangles="0 1 2"/></Node>)");
