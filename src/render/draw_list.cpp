@@ -1,5 +1,6 @@
 #include "render/draw_list.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Geometry>
@@ -42,20 +43,23 @@ void grow_bounds(DrawList& list, const std::vector<float>& x) {
   }
 }
 
-// Vertices drawn by a visual model: its positions, or the positions its render vertices
-// point to (vertPosIdx, OBJ seams).
+// Vertices drawn by a visual model (VisualModelImpl::getVertices): its `vertices` when it has
+// some, refreshed from the positions through vertPosIdx (computePositions), else its positions.
+// A loader's handleSeams output already has one position per render vertex: drawn as is.
 void model_vertices(const OglModel& m, std::vector<float>& out) {
   const std::vector<double>& x = m.position.get().data;
-  const std::vector<unsigned>& idx = m.vert_pos_idx.get();
-  if (idx.empty()) {
+  const std::vector<Vec3>& v2 = m.vertices.get();
+  if (v2.empty()) {
     out.resize(x.size());
     for (std::size_t i = 0; i < x.size(); ++i) out[i] = static_cast<float>(x[i]);
     return;
   }
-  out.resize(idx.size() * 3);
-  for (std::size_t v = 0; v < idx.size(); ++v)
-    for (int c = 0; c < 3; ++c)
-      out[v * 3 + c] = idx[v] * 3 + c < x.size() ? static_cast<float>(x[idx[v] * 3 + c]) : 0.f;
+  const std::vector<unsigned>& idx = m.vert_pos_idx.get();
+  out.resize(v2.size() * 3);
+  for (std::size_t v = 0; v < v2.size(); ++v) {
+    const bool mapped = v < idx.size() && idx[v] * 3 + 2 < x.size();
+    for (int c = 0; c < 3; ++c) out[v * 3 + c] = static_cast<float>(mapped ? x[idx[v] * 3 + c] : v2[v][c]);
+  }
 }
 
 void add_visual_model(DrawList& list, const OglModel& m, bool wireframe) {
@@ -73,7 +77,8 @@ void add_visual_model(DrawList& list, const OglModel& m, bool wireframe) {
     for (std::size_t i = 0; i < n; ++i)
       for (int c = 0; c < 3; ++c) b.normals[i * 3 + c] = static_cast<float>(given[i][c]);
   } else {
-    compute_normals(b.positions, tris, quads, b.normals);
+    const auto& norm_idx = m.vert_norm_idx.get();
+    compute_normals(b.positions, tris, quads, b.normals, norm_idx.size() == n ? &norm_idx : nullptr);
   }
   b.colors.clear();
   b.indices.resize(tris.size() * 3 + quads.size() * 6);
@@ -225,32 +230,44 @@ void visit(Node& node, const DisplayFlags& inherited, DrawList& list, std::vecto
 }  // namespace
 
 void compute_normals(const std::vector<float>& xs, const std::vector<Triangle>& triangles,
-                     const std::vector<Quad>& quads, std::vector<float>& ns) {
+                     const std::vector<Quad>& quads, std::vector<float>& ns, const std::vector<unsigned>* norm_idx) {
   const std::size_t n = xs.size() / 3;
   ns.assign(n * 3, 0.f);
+  // With vertNormIdx (OBJ seams), the render vertices that share a normal index share the
+  // normal: faces are summed per normal index, then each vertex takes its index's normal.
+  std::size_t groups = n;
+  if (norm_idx && !norm_idx->empty()) {
+    groups = 0;
+    for (unsigned g : *norm_idx) groups = std::max<std::size_t>(groups, g + 1);
+  } else {
+    norm_idx = nullptr;
+  }
+  auto group = [&](unsigned v) { return norm_idx ? (*norm_idx)[v] : v; };
   // Accumulated in double, as SOFA's Coord (Vec3d); stored as floats for the GPU.
   const auto* x = reinterpret_cast<const float(*)[3]>(xs.data());
   auto X = [&](unsigned i) { return Vec3(x[i][0], x[i][1], x[i][2]); };
   thread_local std::vector<Vec3> acc;
-  acc.assign(n, Vec3::Zero());
+  acc.assign(groups, Vec3::Zero());
   for (const Triangle& t : triangles) {
     if (t[0] >= n || t[1] >= n || t[2] >= n) continue;
     const Vec3 v1 = X(t[0]), v2 = X(t[1]), v3 = X(t[2]);
     const Vec3 nrm = (v2 - v1).cross(v3 - v1);
-    acc[t[0]] += nrm, acc[t[1]] += nrm, acc[t[2]] += nrm;
+    acc[group(t[0])] += nrm, acc[group(t[1])] += nrm, acc[group(t[2])] += nrm;
   }
   for (const Quad& q : quads) {
     if (q[0] >= n || q[1] >= n || q[2] >= n || q[3] >= n) continue;
     const Vec3 v1 = X(q[0]), v2 = X(q[1]), v3 = X(q[2]), v4 = X(q[3]);
-    acc[q[0]] += (v2 - v1).cross(v4 - v1);
-    acc[q[1]] += (v3 - v2).cross(v1 - v2);
-    acc[q[2]] += (v4 - v3).cross(v2 - v3);
-    acc[q[3]] += (v1 - v4).cross(v3 - v4);
+    acc[group(q[0])] += (v2 - v1).cross(v4 - v1);
+    acc[group(q[1])] += (v3 - v2).cross(v1 - v2);
+    acc[group(q[2])] += (v4 - v3).cross(v2 - v3);
+    acc[group(q[3])] += (v1 - v4).cross(v3 - v4);
+  }
+  for (Vec3& a : acc) {
+    const double len = a.norm();
+    if (len > 1e-300) a /= len;  // SOFA's normalize leaves a zero vector unchanged
   }
   for (std::size_t i = 0; i < n; ++i) {
-    const double len = acc[i].norm();
-    // SOFA's normalize leaves a zero vector unchanged.
-    const Vec3 u = len > 1e-300 ? Vec3(acc[i] / len) : acc[i];
+    const Vec3& u = acc[group(static_cast<unsigned>(i))];
     for (int c = 0; c < 3; ++c) ns[i * 3 + c] = static_cast<float>(u[c]);
   }
 }

@@ -3,7 +3,8 @@
 //
 // - Visual models (VisualStyle showVisualModels, on by default): each OglModel's
 //   vertices, SOFA's normals (VisualModelImpl::computeNormals: unnormalised face
-//   normals summed per vertex, quads per corner, then normalised), its triangles and
+//   normals summed per vertex — per vertNormIdx group across OBJ seams —, quads per
+//   corner, then normalised), its triangles and
 //   its quads split in two, the material's colour.
 // - Force fields (showForceFields): the volume elements of a node's topology under a
 //   force field, drawn as SOFA's FEM force fields do (tetrahedra shrunk towards their
@@ -55,8 +56,10 @@ struct DrawList {
 
 void gather(Node& root, DrawList& out);
 
-// SOFA's VisualModelImpl::computeNormals for vertices `x` (xyz floats) into `n`.
+// SOFA's VisualModelImpl::computeNormals for vertices `x` (xyz floats) into `n`; with
+// `norm_idx` (vertNormIdx, one per vertex), vertices of the same index share their normal.
 void compute_normals(const std::vector<float>& x, const std::vector<Triangle>& triangles,
-                     const std::vector<Quad>& quads, std::vector<float>& n);
+                     const std::vector<Quad>& quads, std::vector<float>& n,
+                     const std::vector<unsigned>* norm_idx = nullptr);
 
 }  // namespace sinew::render

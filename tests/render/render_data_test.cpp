@@ -2,6 +2,8 @@
 // SOFA's normals, cameras and the default view, the draw list.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include "render/camera_view.h"
 #include "render/draw_list.h"
 #include "render/material.h"
@@ -98,6 +100,21 @@ TEST(RenderNormals, SofaAreaWeightedSum) {
   const std::vector<float> q = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
   render::compute_normals(q, {}, {Quad{0, 1, 2, 3}}, n);
   for (int v = 0; v < 4; ++v) EXPECT_NEAR(n[v * 3 + 2], 1.0, 1e-6) << v;
+}
+
+// A seam: vertices 0 and 3 are the same point split by a texture seam; with vertNormIdx
+// naming them one normal, both get the sum of both faces (SOFA's second branch).
+TEST(RenderNormals, SeamVerticesShareTheirNormalIndex) {
+  const std::vector<float> x = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 1};
+  const std::vector<Triangle> tris = {{0, 1, 2}, {3, 4, 1}};  // xy plane (+z), xz plane (−y·…)
+  std::vector<float> split, shared;
+  render::compute_normals(x, tris, {}, split);
+  EXPECT_NEAR(split[2], 1.0, 1e-6);  // vertex 0: only its own face
+  const std::vector<unsigned> idx = {0, 1, 2, 0, 4};
+  render::compute_normals(x, tris, {}, shared, &idx);
+  const Vec3 n0 = (Vec3(0, 0, 1) + Vec3(0, 0, 1).cross(Vec3(1, 0, 0))).normalized();
+  for (int v : {0, 3})
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(shared[v * 3 + c], n0[c], 1e-6) << v;
 }
 
 TEST(RenderCamera, LookAtGivesOrientationAndDefaultViewAlongMinusZ) {
