@@ -188,7 +188,20 @@ void add_force_field_mesh(DrawList& list, const Component& ff, const MeshTopolog
   grow_bounds(list, b.positions);
 }
 
-void visit(Node& node, const DisplayFlags& inherited, DrawList& list, std::vector<float>& scratch) {
+void add_points(DrawList& list, const MechanicalState& state) {
+  Batch& b = next_batch(list, &state, Batch::Kind::points);
+  if (!state_positions(state, b.positions) || b.positions.empty()) {
+    --list.used;
+    return;
+  }
+  b.normals.clear(), b.indices.clear(), b.colors.clear();
+  b.shading = Shading{{0, 0, 0, 0}, {0.9f, 0.9f, 0.9f, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
+  b.point_size = 4.f;
+  grow_bounds(list, b.positions);
+}
+
+void visit(Node& node, const DisplayFlags& inherited, DrawList& list, std::vector<float>& scratch,
+           std::vector<const MechanicalState*>& deferred) {
   if (!node.activated.value()) return;
   DisplayFlags flags = inherited;
   for (const auto& o : node.objects())
@@ -211,20 +224,15 @@ void visit(Node& node, const DisplayFlags& inherited, DrawList& list, std::vecto
         break;  // one drawing of the mesh per node
       }
     }
+    // Bodies' points: SOFA's MechanicalObject draws them with showObject; the others are kept
+    // for the end, drawn only when nothing else is (the picture of a scene without a visual model).
     if (flags.shown(DisplayFlags::behavior_models) && !node.mechanical_mapping) {
-      Batch& b = next_batch(list, state, Batch::Kind::points);
-      if (state_positions(*state, b.positions) && !b.positions.empty()) {
-        b.normals.clear(), b.indices.clear();
-        b.colors.clear();
-        b.shading = Shading{{0, 0, 0, 0}, {0.9f, 0.9f, 0.9f, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
-        b.point_size = 4.f;
-        grow_bounds(list, b.positions);
-      } else {
-        --list.used;
-      }
+      const auto* show = dynamic_cast<const Field<bool>*>(state->find_field("showObject"));
+      if (show && show->get()) add_points(list, *state);
+      else deferred.push_back(state);
     }
   }
-  for (const auto& child : node.children()) visit(*child, flags, list, scratch);
+  for (const auto& child : node.children()) visit(*child, flags, list, scratch, deferred);
 }
 
 }  // namespace
@@ -276,7 +284,13 @@ void gather(Node& root, DrawList& out) {
   out.used = 0;
   out.has_bounds = false;
   thread_local std::vector<float> scratch;
-  visit(root, DisplayFlags::viewer_defaults(), out, scratch);
+  thread_local std::vector<const MechanicalState*> deferred;
+  deferred.clear();
+  visit(root, DisplayFlags::viewer_defaults(), out, scratch, deferred);
+  bool surfaces = false;
+  for (std::size_t i = 0; i < out.used; ++i) surfaces |= out.batches[i].kind == Batch::Kind::triangles;
+  if (!surfaces)
+    for (const MechanicalState* s : deferred) add_points(out, *s);
 }
 
 }  // namespace sinew::render

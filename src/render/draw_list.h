@@ -9,9 +9,9 @@
 // - Force fields (showForceFields): the volume elements of a node's topology under a
 //   force field, drawn as SOFA's FEM force fields do (tetrahedra shrunk towards their
 //   centre with four blues, hexahedra shrunk with six face colours), flat shaded.
-// - Behaviour models (showBehaviorModels): the points of every unmapped state.
-//   SOFA's MechanicalObject draws its points only with showObject; Sinew draws them
-//   whenever the flag is on, so a scene without visual models still shows its bodies.
+// - Behaviour models (showBehaviorModels): the points of unmapped states with
+//   showObject (as SOFA's MechanicalObject); when nothing else is drawn, the points of
+//   every unmapped state under the flag, so such a scene still shows its bodies.
 //
 // gather() reuses the batches' storage: once the sizes are stable (no topology change),
 // a frame allocates nothing.

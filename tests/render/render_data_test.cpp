@@ -156,14 +156,17 @@ const char* kTwoModels = R"(<Node name="root">
     <Node name="red"><OglModel name="m" color="red" position="0 0 0 1 0 0 1 1 0" triangles="0 1 2"/></Node>
     <Node name="hidden"><VisualStyle displayFlags="hideVisualModels"/>
       <OglModel name="m" position="0 0 5 1 0 5 1 1 5" triangles="0 1 2"/></Node>
-    <Node name="body"><MechanicalObject position="0 0 0  3 0 0"/></Node>
+    <Node name="body"><MechanicalObject position="0 0 0  3 0 0" showObject="1"/></Node>
+    <Node name="other"><MechanicalObject position="0 0 0"/></Node>
   </Node>)";
 
 TEST(RenderDrawList, FlagsChooseBatchesAndFramesAllocateNothing) {
   auto s = test::load(kTwoModels);
   render::DrawList list;
   render::gather(*s.root, list);
-  ASSERT_EQ(list.used, 2u);  // the red triangle and the body's points; the hidden model is skipped
+  // The red triangle and the body's points (showObject); the hidden model is skipped, and so
+  // are the points of the other state since a surface is drawn.
+  ASSERT_EQ(list.used, 2u);
   EXPECT_EQ(list.batches[0].kind, render::Batch::Kind::triangles);
   EXPECT_FLOAT_EQ(list.batches[0].shading.diffuse[0], 1.f);
   EXPECT_EQ(list.batches[0].indices.size(), 3u);
@@ -178,6 +181,13 @@ TEST(RenderDrawList, FlagsChooseBatchesAndFramesAllocateNothing) {
   EXPECT_EQ(test::g_allocations.load() - before, 0) << "a second frame allocated";
   (void)v;
 #endif
+
+  // Nothing but bodies under showBehaviorModels: their points are drawn.
+  auto b = test::load(R"(<Node name="root"><VisualStyle displayFlags="showBehaviorModels"/>
+      <MechanicalObject position="0 0 0  1 1 1"/></Node>)");
+  render::gather(*b.root, list);
+  ASSERT_EQ(list.used, 1u);
+  EXPECT_EQ(list.batches[0].kind, render::Batch::Kind::points);
 }
 
 }  // namespace
