@@ -214,6 +214,26 @@ TEST_F(RenderTest, BackgroundSettingAndWireframe) {
   EXPECT_LT(lit(b), lit(a) / 4);
 }
 
+// An OBJ with a .mtl: the loader's defaultMaterial is the first material a usemtl names
+// (SOFA's MeshOBJLoader), the OglModel takes it through src=@loader and draws its Kd.
+TEST_F(RenderTest, ObjMaterialGivesTheColour) {
+  test::TempDir dir;
+  dir.write("quad.mtl", "newmtl unused\nKd 0 1 0\nnewmtl tissue\nNs 10\nKa 0 0 0\nKd 0.8 0.2 0.1\nd 1\n");
+  const std::string obj = dir.write("quad.obj",
+                                    "mtllib quad.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                                    "usemtl tissue\nf 1 2 3 4\n");
+  auto s = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+                      "<MeshOBJLoader name=\"l\" filename=\"" + obj + "\"/><OglModel name=\"m\" src=\"@l\"/></Node>");
+  auto* m = test::get<OglModel>(*s.root, "m");
+  ASSERT_TRUE(m);
+  EXPECT_EQ(m->material.get().rfind("tissue Diffuse 1 0.8 0.2 0.1 1 Ambient 1 0 0 0 1", 0), 0u) << m->material.get();
+  const Image img = render(*s.root);
+  const auto c = img.rgb(100, 100);  // facing the light: Kd (no ambient)
+  EXPECT_NEAR(c[0], 204, 2);
+  EXPECT_NEAR(c[1], 51, 2);
+  EXPECT_NEAR(c[2], 26, 2);
+}
+
 TEST_F(RenderTest, NothingVisibleIsAnError) {
   auto s = test::load(R"(<Node name="root"><VisualStyle displayFlags="hideVisualModels"/>
       <OglModel position="0 0 0 1 0 0 1 1 0" triangles="0 1 2"/></Node>)");
