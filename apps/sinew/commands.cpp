@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <memory>
 #include <regex>
@@ -21,6 +22,8 @@
 #include "core/profile.h"
 #include "io/vtk_writer.h"
 #include "regression/gzip_text.h"
+#include "render/offscreen.h"
+#include "render/png_io.h"
 #include "runner/probes.h"
 #include "runner/regress.h"
 #include "runner/session.h"
@@ -148,6 +151,23 @@ class InterruptHandler {
   bool installed_ = false;
 };
 
+// Steps `session` `steps` times under a Ctrl-C handler, calling after(k) once step k is done;
+// after() returning false stops the loop. Shared by `run` and `render`.
+enum class LoopEnd { done, step_failed, stopped, interrupted };
+LoopEnd step_loop(runner::Session& session, long steps, const std::function<bool(long)>& after) {
+  InterruptHandler on_sigint;
+  for (long i = 0; i < steps; ++i) {
+    if (!session.step()) return LoopEnd::step_failed;
+    if (!after(i + 1)) return LoopEnd::stopped;
+    if (interrupt_requested()) {
+      std::fflush(stdout);
+      std::fprintf(stderr, "sinew: interrupted after %ld of %ld steps\n", session.steps_done(), steps);
+      return LoopEnd::interrupted;
+    }
+  }
+  return LoopEnd::done;
+}
+
 }  // namespace
 
 std::string default_data_root() {
@@ -200,26 +220,12 @@ int run(const RunArgs& a) {
   std::printf("Computing %ld iterations.\n", a.steps);
   ProgressBar bar(a.steps, a.progress);
   const auto t0 = std::chrono::steady_clock::now();
-  bool ok = true;
-  bool interrupted = false;
-  {
-    InterruptHandler on_sigint;
-    for (long i = 0; i < a.steps; ++i) {
-      if (!session.step()) {
-        ok = false;
-        break;
-      }
-      bar.update(i + 1);
-      if (interrupt_requested()) {
-        interrupted = true;
-        break;
-      }
-    }
-  }
-  if (interrupted) {
-    std::fflush(stdout);
-    std::fprintf(stderr, "sinew: interrupted after %ld of %ld steps\n", session.steps_done(), a.steps);
-  }
+  const LoopEnd end = step_loop(session, a.steps, [&](long done) {
+    bar.update(done);
+    return true;
+  });
+  bool ok = end == LoopEnd::done;
+  const bool interrupted = end == LoopEnd::interrupted;
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const long done = session.steps_done();
   std::printf("%ld iterations done in %g s ( %g FPS).\n", done, secs, secs > 0 ? done / secs : 0.0);
@@ -236,6 +242,71 @@ int run(const RunArgs& a) {
   // Messages of the run (solver warnings, step errors), printed once.
   print_messages(session.diagnostics(), false, printed);
   if (interrupted) return 130;
+  return ok ? 0 : 1;
+}
+
+int render(const RenderArgs& a) {
+  int width = 0, height = 0;
+  char tail = 0;
+  if (std::sscanf(a.size.c_str(), "%dx%d%c", &width, &height, &tail) != 2 || width <= 0 || height <= 0) {
+    std::fprintf(stderr, "sinew: --size must be WIDTHxHEIGHT (e.g. 800x600), not '%s'\n", a.size.c_str());
+    return 1;
+  }
+  if (a.steps < 0) {
+    std::fprintf(stderr, "sinew: the number of steps must be >= 0\n");
+    return 1;
+  }
+  if (!a.frames.empty() && !is_dir(a.frames)) {
+    std::fprintf(stderr, "sinew: --frames folder %s does not exist\n", a.frames.c_str());
+    return 1;
+  }
+  // The GL context first: without one there is no point in loading the scene.
+  render::RenderOptions ro;
+  ro.width = width, ro.height = height;
+  std::string err;
+  auto renderer = render::OffscreenRenderer::create(ro, &err);
+  if (!renderer) {
+    std::fprintf(stderr, "sinew: %s\n", err.c_str());
+    return 1;
+  }
+  runner::SessionOptions so;
+  so.data_paths = data_paths_for(a.data_paths);
+  so.script_args = a.script_args;
+  runner::Session session(a.scene, so);
+  print_messages(session.diagnostics());
+  std::size_t printed = session.diagnostics().messages().size();
+  if (!session.ok()) {
+    std::fprintf(stderr, "sinew: the scene %s cannot run (see the errors above)\n", a.scene.c_str());
+    return 1;
+  }
+  Node& root = session.root();
+  // The view is framed on the loaded scene, as a viewer does: bodies move in the pictures.
+  if (!renderer->frame(root, &err)) {
+    std::fprintf(stderr, "sinew: %s\n", err.c_str());
+    return 1;
+  }
+  render::Image image;
+  auto picture = [&](const std::string& path) {
+    if (!renderer->render(root, image, &err) || !render::write_png(path, image, &err)) {
+      std::fprintf(stderr, "sinew: %s\n", err.c_str());
+      return false;
+    }
+    return true;
+  };
+  auto frame_path = [&](long k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "/frame_%05ld.png", k);
+    return a.frames + name;
+  };
+  if (!a.frames.empty() && !picture(frame_path(0))) return 1;
+  const LoopEnd end =
+      step_loop(session, a.steps, [&](long done) { return a.frames.empty() || picture(frame_path(done)); });
+  if (end == LoopEnd::stopped) return 1;  // a frame could not be written (said above)
+  const bool ok = end == LoopEnd::done;
+  print_messages(session.diagnostics(), false, printed);
+  if (!picture(a.output)) return 1;
+  std::printf("%s: %ld steps, picture %dx%d written to %s (%s)\n", a.scene.c_str(), session.steps_done(), width,
+              height, a.output.c_str(), renderer->gl_description().c_str());
   return ok ? 0 : 1;
 }
 

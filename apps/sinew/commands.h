@@ -21,6 +21,18 @@ struct RunArgs {
 };
 int run(const RunArgs& a);
 
+struct RenderArgs {
+  std::string scene;
+  long steps = 0;
+  std::string output = "render.png";
+  std::string frames;        // folder for one picture per step (frame_00000.png = initial state)
+  std::string size = "800x600";
+  std::vector<std::string> data_paths;
+  std::vector<std::string> script_args;
+};
+// Steps a scene and writes off-screen pictures of its visual models (src/render).
+int render(const RenderArgs& a);
+
 struct CheckArgs {
   std::vector<std::string> scenes;
   std::vector<std::string> data_paths;

@@ -31,6 +31,17 @@ int main(int argc, char** argv) {
   bool hide_progress = false;
   run_cmd->add_flag("--hideProgressBar", hide_progress, "no progress bar");
 
+  RenderArgs render_args;
+  auto* render_cmd = app.add_subcommand("render", "run a scene and write a picture of it (off-screen OpenGL, no window)");
+  render_cmd->add_option("scene", render_args.scene, "scene file (.scn, .xml or SofaPython3 .py)")->required();
+  render_cmd->add_option("-n,--nbIter", render_args.steps, "steps before the picture (default 0: the initial state)");
+  render_cmd->add_option("-o,--output", render_args.output, "PNG file of the final state (default render.png)");
+  render_cmd->add_option("--frames", render_args.frames,
+                         "also write one PNG per step to this folder (frame_00000.png is the initial state)");
+  render_cmd->add_option("--size", render_args.size, "picture size WxH (default 800x600)");
+  render_cmd->add_option("--data-path", render_args.data_paths, "extra folder searched for meshes and includes");
+  render_cmd->add_option("--argv", render_args.script_args, "arguments given to a Python scene (its sys.argv[1:])");
+
   CheckArgs check_args;
   auto* check_cmd = app.add_subcommand("check", "load and initialise scenes; print every problem");
   check_cmd->add_option("scenes", check_args.scenes, "scene files")->required();
@@ -61,6 +72,7 @@ int main(int argc, char** argv) {
     run_args.progress = !hide_progress;
     return run(run_args);
   }
+  if (*render_cmd) return render(render_args);
   if (*check_cmd) return check(check_args);
   if (*comp_cmd) return components(component_name);
   if (*reg_cmd) {

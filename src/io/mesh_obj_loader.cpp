@@ -8,7 +8,7 @@ MeshOBJLoader::MeshOBJLoader() {
   default_material.add_alias("material");
   add_input(&handle_seams);
   add_input(&load_material);
-  for (BaseField* f : std::initializer_list<BaseField*>{&materials, &face_list, &texcoords_index, &positions_definition,
+  for (BaseField* f : std::initializer_list<BaseField*>{&default_material, &materials, &face_list, &texcoords_index, &positions_definition,
                                                         &texcoords_definition, &normals_index, &normals_definition,
                                                         &texcoords, &vert_pos_idx, &vert_norm_idx})
     add_output(f);
@@ -19,13 +19,18 @@ bool MeshOBJLoader::read_mesh(io::MeshData& out, std::string* error) {
   o.handle_seams = handle_seams.get();
   auto m = io::read_obj(filename.get(), error, o);
   if (!m) return false;
-  if (!load_material.get()) m->materials.clear();
+  if (!load_material.get()) {
+    m->materials.clear();
+    m->material_texts.clear();
+    m->default_material.clear();
+  }
   out = std::move(*m);
   return true;
 }
 
 void MeshOBJLoader::publish_extra(const io::MeshData& m) {
   materials.set(m.materials);
+  if (!m.default_material.empty()) default_material.set(m.default_material);
   face_list.set(m.face_positions);
   texcoords_index.set(m.face_texcoords);
   normals_index.set(m.face_normals);

@@ -72,6 +72,8 @@ struct MeshData {
   std::vector<Vec3> positions_definition, normals_definition;
   std::vector<Vec2> texcoords_definition;
   std::vector<std::string> materials;  // names of the materials found in the .mtl files
+  std::vector<std::string> material_texts;  // the same materials in sofa::type::Material's text format
+  std::string default_material;  // the first material named by a usemtl (SOFA's defaultMaterial)
   std::vector<unsigned> vert_pos_idx, vert_norm_idx;  // OBJ handleSeams: source position / normal per vertex
 
   // SphereLoader only: one radius per centre (positions).

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
+#include <sstream>
 
 #include "io/reader_text.h"
 
@@ -19,14 +21,61 @@ std::string dir_of(const std::string& path) {
   return s == std::string::npos ? std::string() : path.substr(0, s + 1);
 }
 
-// Names of the materials of a .mtl file (newmtl lines).
-void read_mtl_names(const std::string& path, std::vector<std::string>& names) {
+// The materials of a .mtl file (SOFA's MeshOBJLoader::readMTL): for each `newmtl`, its name
+// and its text in sofa::type::Material's format ("name Diffuse u r g b a Ambient u ... Shininess
+// u s"), from SOFA's defaults (diffuse 0.75, ambient 0.2, specular 1, shininess 45, only ambient
+// and diffuse used). Kd/Ka/Ks set a colour and its use flag, Ns the shininess as written, a
+// keyword starting with d or T the diffuse alpha; the rest (Ni, illum, Ke, maps) is skipped.
+void read_mtl(const std::string& path, std::vector<std::string>& names, std::vector<std::string>& texts) {
   std::string text;
   if (!read_file(path, text, nullptr)) return;
+  struct Mtl {
+    std::string name;
+    float diffuse[4] = {0.75f, 0.75f, 0.75f, 1}, ambient[4] = {0.2f, 0.2f, 0.2f, 1}, specular[4] = {1, 1, 1, 1},
+          emissive[4] = {0, 0, 0, 0}, shininess = 45;
+    bool use_diffuse = true, use_ambient = true, use_specular = false, use_emissive = false, use_shininess = false;
+  };
+  auto flush = [&](const Mtl& m) {
+    std::ostringstream o;
+    auto colour = [&](const char* key, bool use, const float* c) {
+      o << key << ' ' << use << ' ' << c[0] << ' ' << c[1] << ' ' << c[2] << ' ' << c[3] << ' ';
+    };
+    o << m.name << ' ';
+    colour("Diffuse", m.use_diffuse, m.diffuse);
+    colour("Ambient", m.use_ambient, m.ambient);
+    colour("Specular", m.use_specular, m.specular);
+    colour("Emissive", m.use_emissive, m.emissive);
+    o << "Shininess " << m.use_shininess << ' ' << m.shininess;
+    names.push_back(m.name);
+    texts.push_back(o.str());
+  };
+  std::optional<Mtl> cur;
+  auto number = [](Cursor& c, float& out) {
+    double d = 0;
+    if (to_number(c.next(), d)) out = static_cast<float>(d);
+  };
   for (std::string_view line : split_lines(text)) {
     Cursor c{line};
-    if (c.next() == "newmtl") names.emplace_back(c.next());
+    const std::string_view key = c.next();
+    if (key.empty() || key[0] == '#') continue;
+    if (key == "newmtl") {
+      if (cur) flush(*cur);
+      cur.emplace();
+      cur->name = std::string(c.next());
+    } else if (!cur) {
+      continue;
+    } else if (key == "Ns") {
+      number(c, cur->shininess);
+      cur->use_shininess = true;
+    } else if (key == "Kd" || key == "Ks" || key == "Ka") {
+      float* rgb = key == "Kd" ? cur->diffuse : key == "Ks" ? cur->specular : cur->ambient;
+      for (int i = 0; i < 3; ++i) number(c, rgb[i]);
+      (key == "Kd" ? cur->use_diffuse : key == "Ks" ? cur->use_specular : cur->use_ambient) = true;
+    } else if (key[0] == 'd' || key[0] == 'T') {
+      number(c, cur->diffuse[3]);
+    }
   }
+  if (cur) flush(*cur);
 }
 
 }  // namespace
@@ -78,7 +127,7 @@ std::optional<MeshData> read_obj(const std::string& path, std::string* error, co
       else (tok == "v" ? positions : normals).push_back(carry);
     } else if (tok == "mtllib") {
       for (std::string_view lib = c.next(); !lib.empty(); lib = c.next())
-        read_mtl_names(dir_of(path) + std::string(lib), m.materials);
+        read_mtl(dir_of(path) + std::string(lib), m.materials, m.material_texts);
     } else if (tok == "usemtl" || tok == "g") {
       close_groups();
       if (tok == "usemtl") {
@@ -87,6 +136,8 @@ std::optional<MeshData> read_obj(const std::string& path, std::string* error, co
         for (std::size_t i = 0; i < m.materials.size(); ++i)
           if (m.materials[i] == material_name) {
             material_id = static_cast<int>(i);
+            // SOFA's defaultMaterial: the first material a usemtl names.
+            if (m.default_material.empty()) m.default_material = m.material_texts[i];
             break;
           }
       } else {

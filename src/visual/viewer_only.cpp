@@ -18,21 +18,17 @@ void register_viewer_only(Registry& r) {
     const char* name;
     const char* what;
   } list[] = {
-      {"VisualStyle", "display flags of the viewer"},
       {"DefaultVisualManagerLoop", "visual update loop of the viewer"},
       {"VisualGrid", "reference grid drawn by the viewer"},
       {"OglSceneFrame", "axes drawn in a corner of the viewer"},
       {"LineAxis", "axes drawn by the viewer"},
-      {"BackgroundSetting", "background colour or image of the viewer"},
       {"OglLabel", "text label drawn by the viewer"},
       {"Visual3DText", "3D text drawn by the viewer"},
-      {"InteractiveCamera", "viewer camera"},
       {"LightManager", "viewer lights"},
       {"DirectionalLight", "viewer light"},
       {"PositionalLight", "viewer light"},
       {"SpotLight", "viewer light"},
       {"ViewerSetting", "viewer window settings (resolution, fullscreen, picking method)"},
-      {"RecordedCamera", "camera that follows a recorded or rotating path"},
       {"GlobalSystemMatrixImage", "image of a linear system's matrix (SofaMatrix plugin)"},
       {"TrailRenderer", "trail of past positions drawn by the viewer"},
       {"StatsSetting", "statistics the GUI application prints or exports"},

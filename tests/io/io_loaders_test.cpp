@@ -92,6 +92,23 @@ TEST(IoObj, FacesSplitIntoTrianglesQuadsAndEdges) {
   EXPECT_EQ(m->triangles_groups[0].nbp, 2);
 }
 
+// MeshOBJLoader::readMTL: each material in sofa::type::Material's text, from SOFA's defaults;
+// defaultMaterial is the first material a usemtl names (not the first of the file).
+TEST(IoObj, MtlMaterialsAndTheDefaultMaterial) {
+  TempDir t;
+  t.write("m.mtl", "# comment\nnewmtl a\nKd 0 1 0\nnewmtl b\nNs 96\nKa 0 0 0\nKd 0.5 0.25 1\nKs 0.1 0.2 0.3\n"
+                   "Ni 1.45\nd 0.5\nillum 2\n");
+  std::string err;
+  auto m = io::read_obj(t.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl b\nf 1 2 3\n"), &err);
+  ASSERT_TRUE(m) << err;
+  EXPECT_EQ(m->materials, (std::vector<std::string>{"a", "b"}));
+  ASSERT_EQ(m->material_texts.size(), 2u);
+  EXPECT_EQ(m->material_texts[0],
+            "a Diffuse 1 0 1 0 1 Ambient 1 0.2 0.2 0.2 1 Specular 0 1 1 1 1 Emissive 0 0 0 0 0 Shininess 0 45");
+  EXPECT_EQ(m->default_material,
+            "b Diffuse 1 0.5 0.25 1 0.5 Ambient 1 0 0 0 1 Specular 1 0.1 0.2 0.3 1 Emissive 0 0 0 0 0 Shininess 1 96");
+}
+
 TEST(IoObj, TriangulateAndFlipNormals) {
   TempDir t;
   io::ReadOptions o;

@@ -1,0 +1,120 @@
+#include "render/camera_view.h"
+
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "core/node.h"
+#include "visual/camera.h"
+
+namespace sinew::render {
+
+namespace {
+
+struct Frame {
+  Vec3 position;
+  Mat3 rotation;  // columns: the camera's x, y, z in the world (it looks along −z)
+  double fov_deg = 45.0;
+  bool ortho = false;
+  Vec3 look_at;
+};
+
+// BaseCamera::setDefaultView.
+Frame default_frame(const Vec3& gravity, const Vec3& min, const Vec3& max) {
+  Frame f;
+  const Vec3 centre = (min + max) * 0.5;
+  Vec3 x(1, 0, 0);
+  Vec3 y = gravity == Vec3::Zero() ? Vec3(0, 1, 0) : Vec3(-gravity);
+  y.normalize();
+  if (1.0 - std::abs(x.dot(y)) < 0.001) x = Vec3(0, 1, 0);
+  Vec3 z = x.cross(y).normalized();
+  x = y.cross(z).normalized();
+  f.rotation.col(0) = x, f.rotation.col(1) = y, f.rotation.col(2) = z;
+  const double dist = (min - centre).norm() * 3.0;
+  f.position = centre + z * dist;
+  f.look_at = centre;
+  return f;
+}
+
+// The first active camera of the graph, depth-first (no allocation: called every frame).
+const BaseCamera* find_camera(const Node& node) {
+  for (const auto& o : node.objects())
+    if (const auto* c = dynamic_cast<const BaseCamera*>(o.get()))
+      if (c->activated.get() && c->state() == ComponentState::valid) return c;
+  for (const auto& child : node.children())
+    if (const BaseCamera* c = find_camera(*child)) return c;
+  return nullptr;
+}
+
+}  // namespace
+
+View view_for(const Node& root, const Vec3& min, const Vec3& max, int width, int height) {
+  View v;
+  const BaseCamera* cam = find_camera(root);
+  Frame f;
+  if (cam && !cam->wants_default_view()) {
+    f.position = cam->position.get();
+    f.rotation = quat_matrix(cam->orientation.get());
+    f.fov_deg = cam->field_of_view.get();
+    f.ortho = cam->orthographic();
+    f.look_at = cam->look_at.get();
+    v.from_scene_camera = true;
+  } else {
+    f = default_frame(root.gravity.get(), min, max);
+    if (cam) {
+      f.fov_deg = cam->field_of_view.get();
+      f.ortho = cam->orthographic();
+    }
+  }
+  v.eye = f.position;
+
+  // World → eye: the inverse of the camera's rigid frame.
+  const Mat3 rt = f.rotation.transpose();
+  const Vec3 t = -(rt * f.position);
+  v.view.setIdentity();
+  v.view.topLeftCorner<3, 3>() = rt.cast<float>();
+  v.view.topRightCorner<3, 1>() = t.cast<float>();
+
+  // Clip planes: BaseCamera::computeZ from the bounding box, or the camera's own.
+  double z_near, z_far;
+  const Vec3 centre = (min + max) * 0.5;
+  const double radius = std::max((max - min).norm() * 0.5, 1e-9);
+  if (!cam || cam->compute_z_clip.get()) {
+    const double to_centre = (f.position - centre).norm();
+    z_near = to_centre - radius;
+    z_far = (z_near + 2 * radius) * 1.1;
+    z_near *= 0.01;
+    const double z_min = 0.01 * 5 * radius;
+    if (z_near < z_min) z_near = z_min;
+    if (z_far <= z_near) z_far = z_near + 2 * radius;
+  } else {
+    z_near = cam->z_near.get();
+    z_far = cam->z_far.get();
+    if (!(z_near > 0 && z_far > z_near)) z_near = 0.01, z_far = 100;  // SOFA refuses them with an error
+  }
+
+  const double aspect = height > 0 ? double(width) / height : 1.0;
+  Eigen::Matrix4d p = Eigen::Matrix4d::Zero();
+  if (!f.ortho) {
+    const double s = 1.0 / std::tan(f.fov_deg * M_PI / 180 * 0.5);
+    p(0, 0) = s / aspect;
+    p(1, 1) = s;
+    p(2, 2) = -(z_far + z_near) / (z_far - z_near);
+    p(2, 3) = -2.0 * z_far * z_near / (z_far - z_near);
+    p(3, 2) = -1.0;
+  } else {
+    // BaseCamera::getProjectionMatrix (orthographic): the half height seen at lookAt's depth.
+    const double xf = aspect >= 1 ? aspect : 1.0, yf = aspect >= 1 ? 1.0 : 1.0 / aspect;
+    const double depth = std::abs((rt * (f.look_at - f.position))[2]);
+    const double half = std::tan(M_PI / 180.0 * f.fov_deg / 2.0) * depth;
+    p(0, 0) = 1.0 / (half * xf);
+    p(1, 1) = 1.0 / (half * yf);
+    p(2, 2) = -2.0 / (z_far - z_near);
+    p(2, 3) = -(z_far + z_near) / (z_far - z_near);
+    p(3, 3) = 1.0;
+  }
+  v.projection = p.cast<float>();
+  return v;
+}
+
+}  // namespace sinew::render

@@ -1,0 +1,296 @@
+#include "render/draw_list.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "core/node.h"
+#include "visual/ogl_model.h"
+#include "visual/visual_style.h"
+
+namespace sinew::render {
+
+namespace {
+
+// The next batch of the list, reused when the same component drew it last frame.
+Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind) {
+  if (list.used == list.batches.size()) list.batches.emplace_back();
+  Batch& b = list.batches[list.used++];
+  if (b.source != source || b.kind != kind) {
+    b.positions.clear(), b.normals.clear(), b.colors.clear(), b.indices.clear();
+    b.material_version = 0;
+  }
+  b.source = source;
+  b.kind = kind;
+  b.color_ambient = 0.f;
+  b.point_size = 1.f;
+  b.wireframe = false;
+  return b;
+}
+
+void grow_bounds(DrawList& list, const std::vector<float>& x) {
+  for (std::size_t i = 0; i + 2 < x.size(); i += 3) {
+    const Vec3 p(x[i], x[i + 1], x[i + 2]);
+    if (!p.allFinite()) continue;
+    if (!list.has_bounds) {
+      list.min = list.max = p;
+      list.has_bounds = true;
+    } else {
+      list.min = list.min.cwiseMin(p);
+      list.max = list.max.cwiseMax(p);
+    }
+  }
+}
+
+// Vertices drawn by a visual model (VisualModelImpl::getVertices): its `vertices` when it has
+// some, refreshed from the positions through vertPosIdx (computePositions), else its positions.
+// A loader's handleSeams output already has one position per render vertex: drawn as is.
+void model_vertices(const OglModel& m, std::vector<float>& out) {
+  const std::vector<double>& x = m.position.get().data;
+  const std::vector<Vec3>& v2 = m.vertices.get();
+  if (v2.empty()) {
+    out.resize(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) out[i] = static_cast<float>(x[i]);
+    return;
+  }
+  const std::vector<unsigned>& idx = m.vert_pos_idx.get();
+  out.resize(v2.size() * 3);
+  for (std::size_t v = 0; v < v2.size(); ++v) {
+    const bool mapped = v < idx.size() && idx[v] * 3 + 2 < x.size();
+    for (int c = 0; c < 3; ++c) out[v * 3 + c] = static_cast<float>(mapped ? x[idx[v] * 3 + c] : v2[v][c]);
+  }
+}
+
+void add_visual_model(DrawList& list, const OglModel& m, bool wireframe) {
+  if (!m.enable.get() || !m.is_enabled.get() || m.state() != ComponentState::valid) return;
+  const auto& tris = m.triangles.get();
+  const auto& quads = m.quads.get();
+  if (tris.empty() && quads.empty()) return;
+  Batch& b = next_batch(list, &m, Batch::Kind::triangles);
+  b.wireframe = wireframe;
+  model_vertices(m, b.positions);
+  const std::size_t n = b.vertex_count();
+  const auto& given = m.normal.get();
+  if (!m.update_normals.get() && given.size() == n) {
+    b.normals.resize(n * 3);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int c = 0; c < 3; ++c) b.normals[i * 3 + c] = static_cast<float>(given[i][c]);
+  } else {
+    const auto& norm_idx = m.vert_norm_idx.get();
+    compute_normals(b.positions, tris, quads, b.normals, norm_idx.size() == n ? &norm_idx : nullptr);
+  }
+  b.colors.clear();
+  b.indices.resize(tris.size() * 3 + quads.size() * 6);
+  std::size_t k = 0;
+  bool bad = false;
+  for (const Triangle& t : tris) {
+    for (unsigned v : t) bad |= v >= n;
+    b.indices[k++] = t[0], b.indices[k++] = t[1], b.indices[k++] = t[2];
+  }
+  for (const Quad& q : quads) {
+    for (unsigned v : q) bad |= v >= n;
+    b.indices[k++] = q[0], b.indices[k++] = q[1], b.indices[k++] = q[2];
+    b.indices[k++] = q[0], b.indices[k++] = q[2], b.indices[k++] = q[3];
+  }
+  if (bad) {  // an element naming a missing vertex: nothing sensible to draw
+    --list.used;
+    return;
+  }
+  // The material text is parsed again only when it changed (parsing allocates).
+  if (b.material_version != m.material.version()) {
+    b.shading = shading_of(material_of(m));
+    b.material_version = m.material.version();
+  }
+  grow_bounds(list, b.positions);
+}
+
+// Positions of a state as floats (the first three coordinates of each DoF).
+bool state_positions(const MechanicalState& s, std::vector<float>& out) {
+  const int w = s.info().coord_width, dim = std::min(3, s.info().spatial_dim);
+  if (w <= 0 || dim <= 0) return false;
+  const std::vector<double>& x = s.read(kPosition);
+  const std::size_t n = s.size();
+  out.resize(n * 3);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int c = 0; c < 3; ++c) out[i * 3 + c] = c < dim ? static_cast<float>(x[i * w + c]) : 0.f;
+  return true;
+}
+
+using V3f = Eigen::Vector3f;
+
+void push_triangle(Batch& b, std::size_t& k, const V3f& a, const V3f& c1, const V3f& c2, const float* rgba) {
+  V3f nrm = (c1 - a).cross(c2 - a);
+  const float len = nrm.norm();
+  if (len > 0) nrm /= len;
+  for (const V3f* p : {&a, &c1, &c2}) {
+    for (int c = 0; c < 3; ++c) b.positions[k * 3 + c] = (*p)[c], b.normals[k * 3 + c] = nrm[c];
+    for (int c = 0; c < 4; ++c) b.colors[k * 4 + c] = rgba[c];
+    ++k;
+  }
+}
+
+// TetrahedronFEMForceField::draw: each tetrahedron shrunk to 2/3 around its centre, its four
+// faces in four blues. HexahedronFEMForceField::draw: each hexahedron shrunk, six face colours.
+void add_force_field_mesh(DrawList& list, const Component& ff, const MeshTopologyBase& topo,
+                          const std::vector<float>& x, bool wireframe) {
+  static const float kTetra[4][4] = {{0, 0, 1, 1}, {0, 0.5f, 1, 1}, {0, 1, 1, 1}, {0.5f, 1, 1, 1}};
+  static const float kHexa[6][4] = {{0.7f, 0.7f, 0.1f, 1}, {0.7f, 0, 0, 1},    {0, 0.7f, 0, 1},
+                                    {0, 0, 0.7f, 1},       {0.1f, 0.7f, 0.7f, 1}, {0.7f, 0.1f, 0.7f, 1}};
+  // Faces of SOFA's hexahedron numbering, as quads.
+  static const int kHexaFaces[6][4] = {{0, 1, 2, 3}, {4, 7, 6, 5}, {1, 0, 4, 5},
+                                       {1, 5, 6, 2}, {2, 6, 7, 3}, {0, 3, 7, 4}};
+  const auto& tets = topo.tetrahedra();
+  const auto& hexas = topo.hexahedra();
+  const std::size_t n = x.size() / 3;
+  Batch& b = next_batch(list, &ff, Batch::Kind::triangles);
+  b.wireframe = wireframe;
+  const std::size_t verts = tets.size() * 12 + hexas.size() * 36;
+  b.positions.resize(verts * 3);
+  b.normals.resize(verts * 3);
+  b.colors.resize(verts * 4);
+  b.indices.clear();
+  auto p = [&](unsigned i) { return V3f(x[i * 3], x[i * 3 + 1], x[i * 3 + 2]); };
+  std::size_t k = 0;
+  for (const Tetra& t : tets) {
+    if (t[0] >= n || t[1] >= n || t[2] >= n || t[3] >= n) continue;
+    const V3f a = p(t[0]), bb = p(t[1]), c = p(t[2]), d = p(t[3]);
+    const V3f centre = (a + bb + c + d) * 0.125f;
+    const V3f pa = (a + centre) * 0.666667f, pb = (bb + centre) * 0.666667f, pc = (c + centre) * 0.666667f,
+              pd = (d + centre) * 0.666667f;
+    push_triangle(b, k, pa, pb, pc, kTetra[0]);
+    push_triangle(b, k, pb, pc, pd, kTetra[1]);
+    push_triangle(b, k, pc, pd, pa, kTetra[2]);
+    push_triangle(b, k, pd, pa, pb, kTetra[3]);
+  }
+  for (const Hexa& h : hexas) {
+    bool ok = true;
+    for (unsigned v : h) ok &= v < n;
+    if (!ok) continue;
+    V3f centre = V3f::Zero();
+    for (unsigned v : h) centre += p(v);
+    centre *= 0.125f;
+    V3f q[8];
+    for (int i = 0; i < 8; ++i) q[i] = centre + (p(h[i]) - centre) * 0.85f;  // shrink 0.15 as SOFA's default
+    for (int f = 0; f < 6; ++f) {
+      const int* fv = kHexaFaces[f];
+      push_triangle(b, k, q[fv[0]], q[fv[1]], q[fv[2]], kHexa[f]);
+      push_triangle(b, k, q[fv[0]], q[fv[2]], q[fv[3]], kHexa[f]);
+    }
+  }
+  b.positions.resize(k * 3), b.normals.resize(k * 3), b.colors.resize(k * 4);
+  b.shading = Shading{{0, 0, 0, 0}, {1, 1, 1, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
+  b.color_ambient = 0.2f;
+  if (k == 0) {
+    --list.used;
+    return;
+  }
+  grow_bounds(list, b.positions);
+}
+
+void add_points(DrawList& list, const MechanicalState& state) {
+  Batch& b = next_batch(list, &state, Batch::Kind::points);
+  if (!state_positions(state, b.positions) || b.positions.empty()) {
+    --list.used;
+    return;
+  }
+  b.normals.clear(), b.indices.clear(), b.colors.clear();
+  b.shading = Shading{{0, 0, 0, 0}, {0.9f, 0.9f, 0.9f, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
+  b.point_size = 4.f;
+  grow_bounds(list, b.positions);
+}
+
+void visit(Node& node, const DisplayFlags& inherited, DrawList& list, std::vector<float>& scratch,
+           std::vector<const MechanicalState*>& deferred) {
+  if (!node.activated.value()) return;
+  DisplayFlags flags = inherited;
+  for (const auto& o : node.objects())
+    if (const auto* s = dynamic_cast<const VisualStyle*>(o.get())) flags = flags.merged(s->flags());
+
+  if (flags.shown(DisplayFlags::visual_models))
+    for (const auto& o : node.objects())
+      if (const auto* m = dynamic_cast<const OglModel*>(o.get()))
+        add_visual_model(list, *m, flags.shown(DisplayFlags::wireframe));
+
+  MechanicalState* state = node.mechanical_state;
+  if (state && state->state() == ComponentState::valid) {
+    if (flags.shown(DisplayFlags::force_fields)) {
+      const MeshTopologyBase* topo = node.get_mesh_topology_link();
+      for (ForceField* ff : node.force_fields) {
+        if (!topo || ff->is_interaction() || dynamic_cast<Mass*>(ff) || ff->state() != ComponentState::valid) continue;
+        if (topo->tetrahedra().empty() && topo->hexahedra().empty()) continue;
+        if (ff->single_state() != state || !state_positions(*state, scratch)) continue;
+        add_force_field_mesh(list, *ff, *topo, scratch, flags.shown(DisplayFlags::wireframe));
+        break;  // one drawing of the mesh per node
+      }
+    }
+    // Bodies' points: SOFA's MechanicalObject draws them with showObject; the others are kept
+    // for the end, drawn only when nothing else is (the picture of a scene without a visual model).
+    if (flags.shown(DisplayFlags::behavior_models) && !node.mechanical_mapping) {
+      const auto* show = dynamic_cast<const Field<bool>*>(state->find_field("showObject"));
+      if (show && show->get()) add_points(list, *state);
+      else deferred.push_back(state);
+    }
+  }
+  for (const auto& child : node.children()) visit(*child, flags, list, scratch, deferred);
+}
+
+}  // namespace
+
+void compute_normals(const std::vector<float>& xs, const std::vector<Triangle>& triangles,
+                     const std::vector<Quad>& quads, std::vector<float>& ns, const std::vector<unsigned>* norm_idx) {
+  const std::size_t n = xs.size() / 3;
+  ns.assign(n * 3, 0.f);
+  // With vertNormIdx (OBJ seams), the render vertices that share a normal index share the
+  // normal: faces are summed per normal index, then each vertex takes its index's normal.
+  std::size_t groups = n;
+  if (norm_idx && !norm_idx->empty()) {
+    groups = 0;
+    for (unsigned g : *norm_idx) groups = std::max<std::size_t>(groups, g + 1);
+  } else {
+    norm_idx = nullptr;
+  }
+  auto group = [&](unsigned v) { return norm_idx ? (*norm_idx)[v] : v; };
+  // Accumulated in double, as SOFA's Coord (Vec3d); stored as floats for the GPU.
+  const auto* x = reinterpret_cast<const float(*)[3]>(xs.data());
+  auto X = [&](unsigned i) { return Vec3(x[i][0], x[i][1], x[i][2]); };
+  thread_local std::vector<Vec3> acc;
+  acc.assign(groups, Vec3::Zero());
+  for (const Triangle& t : triangles) {
+    if (t[0] >= n || t[1] >= n || t[2] >= n) continue;
+    const Vec3 v1 = X(t[0]), v2 = X(t[1]), v3 = X(t[2]);
+    const Vec3 nrm = (v2 - v1).cross(v3 - v1);
+    acc[group(t[0])] += nrm, acc[group(t[1])] += nrm, acc[group(t[2])] += nrm;
+  }
+  for (const Quad& q : quads) {
+    if (q[0] >= n || q[1] >= n || q[2] >= n || q[3] >= n) continue;
+    const Vec3 v1 = X(q[0]), v2 = X(q[1]), v3 = X(q[2]), v4 = X(q[3]);
+    acc[group(q[0])] += (v2 - v1).cross(v4 - v1);
+    acc[group(q[1])] += (v3 - v2).cross(v1 - v2);
+    acc[group(q[2])] += (v4 - v3).cross(v2 - v3);
+    acc[group(q[3])] += (v1 - v4).cross(v3 - v4);
+  }
+  for (Vec3& a : acc) {
+    const double len = a.norm();
+    if (len > 1e-300) a /= len;  // SOFA's normalize leaves a zero vector unchanged
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3& u = acc[group(static_cast<unsigned>(i))];
+    for (int c = 0; c < 3; ++c) ns[i * 3 + c] = static_cast<float>(u[c]);
+  }
+}
+
+void gather(Node& root, DrawList& out) {
+  out.used = 0;
+  out.has_bounds = false;
+  thread_local std::vector<float> scratch;
+  thread_local std::vector<const MechanicalState*> deferred;
+  deferred.clear();
+  visit(root, DisplayFlags::viewer_defaults(), out, scratch, deferred);
+  bool surfaces = false;
+  for (std::size_t i = 0; i < out.used; ++i) surfaces |= out.batches[i].kind == Batch::Kind::triangles;
+  if (!surfaces)
+    for (const MechanicalState* s : deferred) add_points(out, *s);
+}
+
+}  // namespace sinew::render

@@ -1,0 +1,65 @@
+// What a picture shows, gathered from the scene graph as flat float arrays
+// ready to upload: one batch per drawn component.
+//
+// - Visual models (VisualStyle showVisualModels, on by default): each OglModel's
+//   vertices, SOFA's normals (VisualModelImpl::computeNormals: unnormalised face
+//   normals summed per vertex — per vertNormIdx group across OBJ seams —, quads per
+//   corner, then normalised), its triangles and
+//   its quads split in two, the material's colour.
+// - Force fields (showForceFields): the volume elements of a node's topology under a
+//   force field, drawn as SOFA's FEM force fields do (tetrahedra shrunk towards their
+//   centre with four blues, hexahedra shrunk with six face colours), flat shaded.
+// - Behaviour models (showBehaviorModels): the points of unmapped states with
+//   showObject (as SOFA's MechanicalObject); when nothing else is drawn, the points of
+//   every unmapped state under the flag, so such a scene still shows its bodies.
+//
+// gather() reuses the batches' storage: once the sizes are stable (no topology change),
+// a frame allocates nothing.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/roles.h"
+#include "render/material.h"
+
+namespace sinew {
+class Node;
+}
+
+namespace sinew::render {
+
+struct Batch {
+  enum class Kind { triangles, points };
+  Kind kind = Kind::triangles;
+  const Component* source = nullptr;
+  std::vector<float> positions;  // x y z per vertex
+  std::vector<float> normals;    // x y z per vertex (triangles)
+  std::vector<float> colors;     // r g b a per vertex; empty: shading.diffuse for all
+  std::vector<unsigned> indices;  // triangles; empty: vertices taken three by three
+  Shading shading{};
+  float color_ambient = 0.f;  // ambient term proportional to the vertex colour (SOFA's draw tool)
+  float point_size = 1.f;
+  bool wireframe = false;  // showWireframe: triangles drawn as their edges
+  std::uint64_t material_version = 0;  // the model's `material` version `shading` was read at (0: none)
+  std::size_t vertex_count() const { return positions.size() / 3; }
+};
+
+struct DrawList {
+  std::vector<Batch> batches;
+  std::size_t used = 0;  // batches[0, used) are this frame's
+  // Bounding box of what is drawn (valid when has_bounds).
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+  bool has_bounds = false;
+};
+
+void gather(Node& root, DrawList& out);
+
+// SOFA's VisualModelImpl::computeNormals for vertices `x` (xyz floats) into `n`; with
+// `norm_idx` (vertNormIdx, one per vertex), vertices of the same index share their normal.
+void compute_normals(const std::vector<float>& x, const std::vector<Triangle>& triangles,
+                     const std::vector<Quad>& quads, std::vector<float>& n,
+                     const std::vector<unsigned>* norm_idx = nullptr);
+
+}  // namespace sinew::render

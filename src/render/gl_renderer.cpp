@@ -1,0 +1,254 @@
+#include "render/gl_renderer.h"
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <cstring>
+
+namespace sinew::render {
+
+namespace {
+
+const char* kVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec4 a_color;
+uniform mat4 u_view;
+uniform mat4 u_proj;
+uniform float u_point_size;
+out vec3 v_eye;
+out vec3 v_normal;
+out vec4 v_color;
+void main() {
+  vec4 eye = u_view * vec4(a_position, 1.0);
+  v_eye = eye.xyz;
+  v_normal = mat3(u_view) * a_normal;  // the view is rigid: no inverse transpose needed
+  v_color = a_color;
+  gl_Position = u_proj * eye;
+  gl_PointSize = u_point_size;
+}
+)";
+
+// Headlight: the light sits at the eye, so the light and view directions coincide.
+// Two-sided: a back face is lit as if it faced the viewer (OglModel draws both sides).
+const char* kFragmentShader = R"(#version 330 core
+in vec3 v_eye;
+in vec3 v_normal;
+in vec4 v_color;
+uniform vec4 u_ambient;
+uniform vec4 u_specular;
+uniform vec4 u_emissive;
+uniform float u_shininess;
+uniform float u_color_ambient;
+uniform bool u_lit;
+out vec4 frag_color;
+void main() {
+  if (!u_lit) { frag_color = vec4(v_color.rgb, 1.0); return; }
+  vec3 n = normalize(v_normal);
+  vec3 to_eye = normalize(-v_eye);
+  float d = dot(n, to_eye);
+  if (d < 0.0) { n = -n; d = -d; }
+  float s = d > 0.0 ? pow(d, u_shininess) : 0.0;
+  vec3 c = u_emissive.rgb + u_ambient.rgb + u_color_ambient * v_color.rgb + v_color.rgb * d + u_specular.rgb * s;
+  frag_color = vec4(min(c, vec3(1.0)), 1.0);
+}
+)";
+
+unsigned compile(GLenum type, const char* src, std::string* error) {
+  const GLuint s = glCreateShader(type);
+  glShaderSource(s, 1, &src, nullptr);
+  glCompileShader(s);
+  GLint ok = 0;
+  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[1024] = {};
+    glGetShaderInfoLog(s, sizeof log, nullptr, log);
+    if (error) *error = std::string("shader compilation failed: ") + log;
+    glDeleteShader(s);
+    return 0;
+  }
+  return s;
+}
+
+// Uploads `bytes` into `buffer`, growing its storage only when it is too small.
+void upload(GLenum target, unsigned buffer, const void* data, std::size_t bytes, std::size_t& capacity) {
+  glBindBuffer(target, buffer);
+  if (bytes > capacity) {
+    glBufferData(target, static_cast<GLsizeiptr>(bytes), data, GL_DYNAMIC_DRAW);
+    capacity = bytes;
+  } else if (bytes > 0) {
+    glBufferSubData(target, 0, static_cast<GLsizeiptr>(bytes), data);
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int samples, std::string* error) {
+  std::unique_ptr<GlRenderer> r(new GlRenderer);
+  r->width_ = width, r->height_ = height;
+  GLint max_samples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  r->samples_ = std::max(0, std::min(samples, static_cast<int>(max_samples)));
+
+  glGenFramebuffers(1, &r->fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, r->fbo_);
+  glGenRenderbuffers(1, &r->color_rb_);
+  glBindRenderbuffer(GL_RENDERBUFFER, r->color_rb_);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, r->samples_, GL_RGBA8, width, height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, r->color_rb_);
+  glGenRenderbuffers(1, &r->depth_rb_);
+  glBindRenderbuffer(GL_RENDERBUFFER, r->depth_rb_);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, r->samples_, GL_DEPTH_COMPONENT24, width, height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, r->depth_rb_);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    if (error) *error = "the off-screen framebuffer is incomplete (size " + std::to_string(width) + "x" +
+                        std::to_string(height) + ")";
+    return nullptr;
+  }
+  if (r->samples_ > 0) {  // single-sample target the multisampled picture is resolved into
+    glGenFramebuffers(1, &r->resolve_fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, r->resolve_fbo_);
+    glGenRenderbuffers(1, &r->resolve_rb_);
+    glBindRenderbuffer(GL_RENDERBUFFER, r->resolve_rb_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, r->resolve_rb_);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      if (error) *error = "the off-screen resolve framebuffer is incomplete";
+      return nullptr;
+    }
+  }
+
+  const unsigned vs = compile(GL_VERTEX_SHADER, kVertexShader, error);
+  if (!vs) return nullptr;
+  const unsigned fs = compile(GL_FRAGMENT_SHADER, kFragmentShader, error);
+  if (!fs) {
+    glDeleteShader(vs);
+    return nullptr;
+  }
+  r->program_ = glCreateProgram();
+  glAttachShader(r->program_, vs);
+  glAttachShader(r->program_, fs);
+  glLinkProgram(r->program_);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = 0;
+  glGetProgramiv(r->program_, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[1024] = {};
+    glGetProgramInfoLog(r->program_, sizeof log, nullptr, log);
+    if (error) *error = std::string("shader link failed: ") + log;
+    return nullptr;
+  }
+  const unsigned p = r->program_;
+  r->u_view_ = glGetUniformLocation(p, "u_view");
+  r->u_proj_ = glGetUniformLocation(p, "u_proj");
+  r->u_ambient_ = glGetUniformLocation(p, "u_ambient");
+  r->u_specular_ = glGetUniformLocation(p, "u_specular");
+  r->u_emissive_ = glGetUniformLocation(p, "u_emissive");
+  r->u_shininess_ = glGetUniformLocation(p, "u_shininess");
+  r->u_lit_ = glGetUniformLocation(p, "u_lit");
+  r->u_color_ambient_ = glGetUniformLocation(p, "u_color_ambient");
+  r->u_point_size_ = glGetUniformLocation(p, "u_point_size");
+  return r;
+}
+
+GlRenderer::~GlRenderer() {
+  for (GpuBatch& g : gpu_) {
+    glDeleteVertexArrays(1, &g.vao);
+    glDeleteBuffers(3, g.vbo);
+    glDeleteBuffers(1, &g.ebo);
+  }
+  if (program_) glDeleteProgram(program_);
+  const unsigned rbs[] = {color_rb_, depth_rb_, resolve_rb_};
+  glDeleteRenderbuffers(3, rbs);
+  const unsigned fbos[] = {fbo_, resolve_fbo_};
+  glDeleteFramebuffers(2, fbos);
+}
+
+void GlRenderer::draw(const DrawList& list, const View& view, const std::array<float, 4>& background) {
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glViewport(0, 0, width_, height_);
+  glClearColor(background[0], background[1], background[2], background[3]);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glUseProgram(program_);
+  glUniformMatrix4fv(u_view_, 1, GL_FALSE, view.view.data());  // Eigen is column-major, as GL
+  glUniformMatrix4fv(u_proj_, 1, GL_FALSE, view.projection.data());
+
+  while (gpu_.size() < list.used) {
+    GpuBatch g;
+    glGenVertexArrays(1, &g.vao);
+    glGenBuffers(3, g.vbo);
+    glGenBuffers(1, &g.ebo);
+    gpu_.push_back(g);
+  }
+  for (std::size_t i = 0; i < list.used; ++i) {
+    const Batch& b = list.batches[i];
+    GpuBatch& g = gpu_[i];
+    glBindVertexArray(g.vao);
+    upload(GL_ARRAY_BUFFER, g.vbo[0], b.positions.data(), b.positions.size() * sizeof(float), g.capacity[0]);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(0);
+    if (!b.normals.empty()) {
+      upload(GL_ARRAY_BUFFER, g.vbo[1], b.normals.data(), b.normals.size() * sizeof(float), g.capacity[1]);
+      glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+      glEnableVertexAttribArray(1);
+    } else {
+      glDisableVertexAttribArray(1);
+      glVertexAttrib3f(1, 0.f, 0.f, 1.f);
+    }
+    if (!b.colors.empty()) {
+      upload(GL_ARRAY_BUFFER, g.vbo[2], b.colors.data(), b.colors.size() * sizeof(float), g.capacity[2]);
+      glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, 0, nullptr);
+      glEnableVertexAttribArray(2);
+    } else {  // one colour for the whole batch: the attribute's current value
+      glDisableVertexAttribArray(2);
+      glVertexAttrib4fv(2, b.shading.diffuse.data());
+    }
+    glUniform4fv(u_ambient_, 1, b.shading.ambient.data());
+    glUniform4fv(u_specular_, 1, b.shading.specular.data());
+    glUniform4fv(u_emissive_, 1, b.shading.emissive.data());
+    glUniform1f(u_shininess_, b.shading.shininess);
+    glUniform1f(u_color_ambient_, b.color_ambient);
+    glUniform1f(u_point_size_, b.point_size);
+    const GLsizei n = static_cast<GLsizei>(b.vertex_count());
+    if (b.kind == Batch::Kind::points) {
+      glUniform1i(u_lit_, 0);
+      glDrawArrays(GL_POINTS, 0, n);
+    } else {
+      glUniform1i(u_lit_, 1);
+      glPolygonMode(GL_FRONT_AND_BACK, b.wireframe ? GL_LINE : GL_FILL);
+      if (!b.indices.empty()) {
+        upload(GL_ELEMENT_ARRAY_BUFFER, g.ebo, b.indices.data(), b.indices.size() * sizeof(unsigned), g.capacity[3]);
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.indices.size()), GL_UNSIGNED_INT, nullptr);
+      } else {
+        glDrawArrays(GL_TRIANGLES, 0, n);
+      }
+    }
+  }
+  glBindVertexArray(0);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  if (samples_ > 0) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+}
+
+void GlRenderer::read(Image& out) {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, samples_ > 0 ? resolve_fbo_ : fbo_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  const std::size_t row = static_cast<std::size_t>(width_) * 4;
+  rows_.resize(row * height_);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rows_.data());
+  out.width = width_, out.height = height_;
+  out.rgba.resize(rows_.size());
+  for (int y = 0; y < height_; ++y)  // GL's first row is the bottom one
+    std::memcpy(&out.rgba[y * row], &rows_[(height_ - 1 - y) * row], row);
+}
+
+}  // namespace sinew::render

@@ -1,0 +1,46 @@
+// Draws a DrawList into an off-screen framebuffer and reads the picture back.
+//
+// OpenGL 3.3 core profile (GLSL 3.30): one program, headlight Phong shading (a white
+// light at the eye, two-sided, as OglModel's default lighting), per-batch vertex arrays.
+// Buffers are kept between frames and only grown, so once the scene's sizes are
+// stable a frame allocates nothing (glBufferSubData into the existing storage).
+// Multisampled (4× by default) into a renderbuffer, resolved before reading.
+// The GL context must be current.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "render/camera_view.h"
+#include "render/draw_list.h"
+#include "render/image.h"
+
+namespace sinew::render {
+
+class GlRenderer {
+ public:
+  // nullptr and *error when the framebuffer or the program cannot be made.
+  static std::unique_ptr<GlRenderer> create(int width, int height, int samples, std::string* error);
+  ~GlRenderer();
+
+  void draw(const DrawList& list, const View& view, const std::array<float, 4>& background);
+  // The last drawn picture, top row first.
+  void read(Image& out);
+
+ private:
+  GlRenderer() = default;
+  struct GpuBatch {
+    unsigned vao = 0, vbo[3] = {0, 0, 0}, ebo = 0;
+    std::size_t capacity[4] = {0, 0, 0, 0};  // bytes: positions, normals, colours, indices
+  };
+  int width_ = 0, height_ = 0, samples_ = 0;
+  unsigned fbo_ = 0, color_rb_ = 0, depth_rb_ = 0, resolve_fbo_ = 0, resolve_rb_ = 0;
+  unsigned program_ = 0;
+  int u_view_ = -1, u_proj_ = -1, u_ambient_ = -1, u_specular_ = -1, u_emissive_ = -1, u_shininess_ = -1,
+      u_lit_ = -1, u_color_ambient_ = -1, u_point_size_ = -1;
+  std::vector<GpuBatch> gpu_;
+  std::vector<std::uint8_t> rows_;  // read-back, bottom row first
+};
+
+}  // namespace sinew::render

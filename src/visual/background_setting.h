@@ -1,0 +1,15 @@
+// BackgroundSetting (Sofa.GL.Component / SofaGLFW): the viewer's background.
+#pragma once
+
+#include "core/roles.h"
+
+namespace sinew {
+
+class BackgroundSetting final : public VisualComponent {
+ public:
+  // Kept as text: SOFA's RGBAColor (a name, #rrggbb or 3–4 numbers), read by the renderer.
+  Field<std::string> color{this, "color", "1 1 1 1", "background colour", "Display"};
+  Field<std::string> image{this, "image", "", "background image file", "Display"};
+};
+
+}  // namespace sinew
