@@ -27,10 +27,9 @@ MergePoints::MergePoints(StateType type)
   add_output(&points);
 }
 
-void MergePoints::init() {
-  set_dirty();
-  update();
-}
+// Lazy, as SOFA's: the first read computes, so that a position2 filled by components initialised later (a
+// mapped state in a child node) is complete by then.
+void MergePoints::init() { set_dirty(); }
 
 void MergePoints::do_update() {
   if (no_update.get() && done_) return;
