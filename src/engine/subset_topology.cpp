@@ -5,24 +5,18 @@
 #include "core/node.h"
 #include "core/registry.h"
 #include "core/state_creator.h"
+#include "engine/box_roi.h"
+#include "engine/empty_coords.h"
 
 namespace sinew {
 
-namespace {
-FlatVec empty_flat(StateType t) {
-  FlatVec v;
-  v.width = state_type_info(t).coord_width;
-  return v;
-}
-}  // namespace
-
 SubsetTopology::SubsetTopology(StateType type)
-    : rest_position(this, "rest_position", empty_flat(type),
+    : rest_position(this, "rest_position", empty_coords(type),
                     "rest positions of the points (default: the 'position' of the mechanical state of this "
                     "template, here or above)",
                     "Inputs"),
-      points_in_roi(this, "pointsInROI", empty_flat(type), "points in the ROI", "Outputs"),
-      points_out_roi(this, "pointsOutROI", empty_flat(type), "points not in the ROI", "Outputs"),
+      points_in_roi(this, "pointsInROI", empty_coords(type), "points in the ROI", "Outputs"),
+      points_out_roi(this, "pointsOutROI", empty_coords(type), "points not in the ROI", "Outputs"),
       type_(type) {
   for (BaseField* f : std::initializer_list<BaseField*>{&box, &centers, &radii, &direction, &normal, &edge_angle,
                                                         &tri_angle, &tetrahedra_input, &rest_position, &edges,
@@ -201,11 +195,7 @@ void SubsetTopology::select_tetrahedra_by_index() {
 void SubsetTopology::do_update() {
   if (state() == ComponentState::invalid) return;
   boxes_ = box.get();
-  bool swapped = false;
-  for (VecN<6>& b : boxes_)
-    for (int a = 0; a < 3; ++a)
-      if (b[a] > b[a + 3]) std::swap(b[a], b[a + 3]), swapped = true;
-  if (swapped) box.edit() = boxes_;  // SOFA writes the ordered boxes back
+  if (order_box_corners(boxes_)) box.edit() = boxes_;  // SOFA writes the ordered boxes back
   n_roi_ = boxes_.size();
   if (spheres_) {
     const auto& c = centers.get();
