@@ -1,25 +1,18 @@
 #include "engine/base_roi.h"
 
 #include "core/node.h"
+#include "engine/empty_coords.h"
 #include "io/mesh_loader.h"
 
 namespace sinew {
 
-namespace {
-FlatVec empty_flat(StateType t) {
-  FlatVec v;
-  v.width = state_type_info(t).coord_width;
-  return v;
-}
-}  // namespace
-
 BaseROI::BaseROI(StateType type)
-    : position(this, "position", empty_flat(type),
+    : position(this, "position", empty_coords(type),
                "rest positions of the points (default: the local MechanicalObject's rest_position, else the local "
                "mesh loader's position, else the first MechanicalObject above)",
                "Inputs"),
-      points_in_roi(this, "pointsInROI", empty_flat(type), "points in the ROI", "Outputs"),
-      points_out_roi(this, "pointsOutROI", empty_flat(type), "points not in the ROI", "Outputs") {
+      points_in_roi(this, "pointsInROI", empty_coords(type), "points in the ROI", "Outputs"),
+      points_out_roi(this, "pointsOutROI", empty_coords(type), "points not in the ROI", "Outputs") {
   dim_ = std::min(3, state_type_info(type).spatial_dim);
   for (BaseField* f : std::initializer_list<BaseField*>{&position, &edges, &triangles, &quads, &tetrahedra, &hexahedra,
                                                         &compute_edges, &compute_triangles, &compute_quads,

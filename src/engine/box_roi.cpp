@@ -17,13 +17,17 @@ BoxROI::BoxROI(StateType type) : BaseROI(type) {
   quads_in_roi.add_alias("quadInROI");
 }
 
-void BoxROI::normalize_boxes() {
-  boxes_ = box.get();
+bool order_box_corners(std::vector<VecN<6>>& boxes) {
   bool swapped = false;
-  for (VecN<6>& b : boxes_)
+  for (VecN<6>& b : boxes)
     for (int a = 0; a < 3; ++a)
       if (b[a] > b[a + 3]) std::swap(b[a], b[a + 3]), swapped = true;
-  if (swapped) box.edit() = boxes_;  // SOFA writes the ordered boxes back
+  return swapped;
+}
+
+void BoxROI::normalize_boxes() {
+  boxes_ = box.get();
+  if (order_box_corners(boxes_)) box.edit() = boxes_;  // SOFA writes the ordered boxes back
 }
 
 void BoxROI::roi_init() {

@@ -8,6 +8,9 @@
 
 namespace sinew {
 
+// Puts each box (xmin ymin zmin xmax ymax zmax) in min/max order; true when some corner pair was swapped.
+bool order_box_corners(std::vector<VecN<6>>& boxes);
+
 class BoxROI final : public BaseROI {
  public:
   explicit BoxROI(StateType type);

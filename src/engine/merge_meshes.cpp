@@ -2,16 +2,11 @@
 
 #include "core/registry.h"
 #include "core/state_creator.h"
+#include "engine/empty_coords.h"
 
 namespace sinew {
 
 namespace {
-FlatVec empty_flat(StateType t) {
-  FlatVec v;
-  v.width = state_type_info(t).coord_width;
-  return v;
-}
-
 // Appends the elements of `in` (mesh `m`) shifted by `offset`; reports indices
 // beyond the mesh's own points (kept, as SOFA does).
 template <std::size_t N>
@@ -34,8 +29,8 @@ void append_shifted(Engine& e, const char* what, std::size_t m, const std::vecto
 }  // namespace
 
 MergeMeshes::MergeMeshes(StateType type)
-    : positions("position", "input positions of mesh ", empty_flat(type)),
-      position(this, "position", empty_flat(type), "points of the merged mesh", "Outputs") {
+    : positions("position", "input positions of mesh ", empty_coords(type)),
+      position(this, "position", empty_coords(type), "points of the merged mesh", "Outputs") {
   add_input(&nb_meshes);
   grow(nb_meshes.value());
   add_output(&npoints);

@@ -4,21 +4,14 @@
 
 #include "core/registry.h"
 #include "core/state_creator.h"
+#include "engine/empty_coords.h"
 
 namespace sinew {
 
-namespace {
-FlatVec empty_flat(StateType t) {
-  FlatVec v;
-  v.width = state_type_info(t).coord_width;
-  return v;
-}
-}  // namespace
-
 MergePoints::MergePoints(StateType type)
-    : position1(this, "position1", empty_flat(type), "coordinates of the first object", "Inputs"),
-      position2(this, "position2", empty_flat(type), "coordinates of the second object", "Inputs"),
-      points(this, "points", empty_flat(type), "the merged coordinates", "Outputs") {
+    : position1(this, "position1", empty_coords(type), "coordinates of the first object", "Inputs"),
+      position2(this, "position2", empty_coords(type), "coordinates of the second object", "Inputs"),
+      points(this, "points", empty_coords(type), "the merged coordinates", "Outputs") {
   add_input(&position1);
   add_input(&position2);
   add_input(&mapping_x2);
@@ -27,10 +20,9 @@ MergePoints::MergePoints(StateType type)
   add_output(&points);
 }
 
-void MergePoints::init() {
-  set_dirty();
-  update();
-}
+// Lazy, as SOFA's: the first read computes, so that a position2 filled by components initialised later (a
+// mapped state in a child node) is complete by then.
+void MergePoints::init() { set_dirty(); }
 
 void MergePoints::do_update() {
   if (no_update.get() && done_) return;

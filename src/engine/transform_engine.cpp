@@ -6,21 +6,14 @@
 
 #include "core/registry.h"
 #include "core/state_creator.h"
+#include "engine/empty_coords.h"
 #include "io/sofa_quat.h"
 
 namespace sinew {
 
-namespace {
-FlatVec empty_flat(StateType t) {
-  FlatVec v;
-  v.width = state_type_info(t).coord_width;
-  return v;
-}
-}  // namespace
-
 TransformEngine::TransformEngine(StateType type)
-    : input_position(this, "input_position", empty_flat(type), "points to transform", "Inputs"),
-      output_position(this, "output_position", empty_flat(type), "transformed points", "Outputs"),
+    : input_position(this, "input_position", empty_coords(type), "points to transform", "Inputs"),
+      output_position(this, "output_position", empty_coords(type), "transformed points", "Outputs"),
       type_(type) {
   for (BaseField* f :
        std::initializer_list<BaseField*>{&input_position, &translation, &rotation, &quaternion, &scale, &inverse})

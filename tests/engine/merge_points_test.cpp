@@ -41,6 +41,7 @@ TEST(MergePoints, InjectsAtMappingAndReportsBadIndices) {
   EXPECT_TRUE(test::any_contains(test::messages(s.root->diagnostics(), Severity::error),
                                  "mappingX2[0] = 4 is beyond the 1 points of position1"));
   auto* once = get<MergePoints>(*s.root, "once");
+  EXPECT_EQ(once->points.get().data, (D{0, 0, 0, 1, 1, 1}));  // computed at the first read (lazy, as SOFA)
   once->position2.set(FlatVec{3, {}});
-  EXPECT_EQ(once->points.get().data, (D{0, 0, 0, 1, 1, 1}));  // noUpdate: computed at init only
+  EXPECT_EQ(once->points.get().data, (D{0, 0, 0, 1, 1, 1}));  // noUpdate: never again
 }
