@@ -13,6 +13,7 @@ namespace py = pybind11;
 void define_graph(py::module_& m);       // Base, Node, Object, Python component bases
 void define_matrix_access(py::module_& m);
 void define_topology(py::module_& m);      // addPoints / removePoints / removeItems on modifiers
+void define_deformable(py::module_& m);    // LinearSpring, SpringForceField (Sofa.SofaDeformable)
 void define_simulation(py::module_& m);  // init, animate, reset, load, messages, factory
 
 // (kinetic, potential) energy of the subtree (SOFA's MechanicalComputeEnergyVisitor).
