@@ -18,6 +18,7 @@ void define_matrix_access(py::module_& m);
 void define_topology(py::module_& m);      // addPoints / removePoints / removeItems on modifiers
 void define_deformable(py::module_& m);    // LinearSpring, SpringForceField (Sofa.SofaDeformable)
 void define_linear_system(py::module_& m);  // linear systems and solvers' A, b, x (Sofa.SofaLinearSystem/Solver)
+void define_constraint_solver(py::module_& m);  // W, lambda_force, dfree (Sofa.SofaConstraintSolver)
 
 // A scipy.sparse CSR matrix from its three arrays (copied).
 py::object scipy_csr(const std::vector<double>& values, const std::vector<std::int32_t>& cols,
