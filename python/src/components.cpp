@@ -73,6 +73,8 @@ const char* event_class_name(const Event& e) {
     case Event::Kind::key_pressed: return "KeypressedEvent";
     case Event::Kind::key_released: return "KeyreleasedEvent";
     case Event::Kind::script: return "PythonScriptEvent";
+    case Event::Kind::build_constraint_system_end: return "BuildConstraintSystemEndEvent";
+    case Event::Kind::solve_constraint_system_end: return "SolveConstraintSystemEndEvent";
   }
   return "Event";
 }

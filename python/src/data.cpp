@@ -1,9 +1,12 @@
 #include "data.h"
 
+#include <algorithm>
 #include <cstring>
 
+#include "core/constraint_matrix_field.h"
 #include "core/node.h"
 #include "core/path.h"
+#include "graph.h"
 #include "handles.h"
 
 namespace sinew::python {
@@ -112,8 +115,45 @@ py::object wrap_field(BaseField* f, py::object owner) {
 
 py::object state_vector(MechanicalState& s, int id) { return py::cast(StateVecHandle{&s, id}); }
 
+namespace {
+
+// SofaPython3 gives a MatrixDeriv Data as a scipy.sparse CSR matrix of
+// (highest row id + 1) rows and (highest DoF + 1)·width columns: one row per
+// constraint row of the state, every scalar of the blocks it stores. Sinew's
+// projective constraints zero the blocks of fixed DoFs where SOFA's erase
+// them (clearColBlock): all-zero blocks are left out, as in SOFA.
+py::object constraint_matrix_value(ConstraintMatrixField& f) {
+  ConstraintMatrix& J = f.state().constraint_jacobian();
+  J.compress();
+  const int w = J.width();
+  auto zero = [&](int e) { return std::all_of(J.value(e), J.value(e) + w, [](double v) { return v == 0.0; }); };
+  int rows = 0, dofs = 0;
+  for (const ConstraintMatrix::Row& r : J.rows()) {
+    rows = std::max(rows, r.id + 1);
+    for (int e = r.begin; e < r.end; ++e)
+      if (!zero(e)) dofs = std::max(dofs, J.entries()[e].dof + 1);
+  }
+  std::vector<std::int32_t> row_begin(static_cast<std::size_t>(rows) + 1, 0), cols;
+  std::vector<double> values;
+  for (const ConstraintMatrix::Row& r : J.rows()) {  // ascending ids, entries by DoF
+    for (int e = r.begin; e < r.end; ++e) {
+      if (zero(e)) continue;
+      for (int c = 0; c < w; ++c) {
+        cols.push_back(J.entries()[e].dof * w + c);
+        values.push_back(J.value(e)[c]);
+      }
+      row_begin[static_cast<std::size_t>(r.id) + 1] += w;
+    }
+  }
+  for (std::size_t i = 0; i + 1 < row_begin.size(); ++i) row_begin[i + 1] += row_begin[i];
+  return scipy_csr(values, cols, row_begin, static_cast<std::size_t>(rows), static_cast<std::size_t>(dofs) * w);
+}
+
+}  // namespace
+
 py::object field_value(BaseField& f, py::handle base) {
   f.update();
+  if (auto* c = dynamic_cast<ConstraintMatrixField*>(&f)) return constraint_matrix_value(*c);
   const FieldLayout L = f.layout();
   if (L.scalar != FieldLayout::Scalar::none) {
     if (L.dims == 0) return scalar_value(L);

@@ -437,6 +437,9 @@ void define_graph(py::module_& m) {
 
   define_matrix_access(m);
   define_topology(m);
+  define_deformable(m);
+  define_linear_system(m);
+  define_constraint_solver(m);
 
   // Python components: subclass these and call the base __init__.
   py::class_<ControllerHandle, ObjectHandle>(m, "Controller", py::dynamic_attr(),

@@ -3,6 +3,9 @@
 
 #include <pybind11/pybind11.h>
 
+#include <cstdint>
+#include <vector>
+
 #include "core/node.h"
 #include "scene/resource_paths.h"
 
@@ -13,6 +16,13 @@ namespace py = pybind11;
 void define_graph(py::module_& m);       // Base, Node, Object, Python component bases
 void define_matrix_access(py::module_& m);
 void define_topology(py::module_& m);      // addPoints / removePoints / removeItems on modifiers
+void define_deformable(py::module_& m);    // LinearSpring, SpringForceField (Sofa.SofaDeformable)
+void define_linear_system(py::module_& m);  // linear systems and solvers' A, b, x (Sofa.SofaLinearSystem/Solver)
+void define_constraint_solver(py::module_& m);  // W, lambda_force, dfree (Sofa.SofaConstraintSolver)
+
+// A scipy.sparse CSR matrix from its three arrays (copied).
+py::object scipy_csr(const std::vector<double>& values, const std::vector<std::int32_t>& cols,
+                     const std::vector<std::int32_t>& row_begin, std::size_t n_rows, std::size_t n_cols);
 void define_simulation(py::module_& m);  // init, animate, reset, load, messages, factory
 
 // (kinetic, potential) energy of the subtree (SOFA's MechanicalComputeEnergyVisitor).

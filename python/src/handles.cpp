@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <unordered_map>
+#include <vector>
 
 #include "dynamic_data.h"
 
@@ -24,6 +25,11 @@ void on_destroyed(const Base* b) {
   if (it == map.end()) return;
   it->second->ptr = nullptr;
   map.erase(it);
+}
+
+std::vector<HandleMaker>& makers() {
+  static std::vector<HandleMaker> v;
+  return v;
 }
 
 bool g_print = false;
@@ -69,11 +75,19 @@ py::object wrap(Base* b) {
   // type, a Python subclass for Python components) from the handle's address.
   if (auto it = map.find(b); it != map.end()) return py::cast(it->second, py::return_value_policy::reference);
   BaseHandle* h = nullptr;
-  if (dynamic_cast<Node*>(b)) h = new NodeHandle{};
-  else h = new ObjectHandle{};
+  if (dynamic_cast<Node*>(b)) {
+    h = new NodeHandle{};
+  } else {
+    auto& c = static_cast<Component&>(*b);
+    for (HandleMaker make : makers())
+      if ((h = make(c))) break;
+    if (!h) h = new ObjectHandle{};
+  }
   adopt(*h, b);
   return py::cast(h, py::return_value_policy::take_ownership);
 }
+
+void register_handle_maker(HandleMaker maker) { makers().push_back(maker); }
 
 void install_handle_hooks() { set_base_destroyed_hook(&on_destroyed); }
 

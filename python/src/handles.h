@@ -41,6 +41,12 @@ struct ObjectHandle : BaseHandle {
 // The Python object for a graph object (its existing handle, or a new one);
 // None for nullptr.
 py::object wrap(Base* b);
+// Per-class Python types (SofaPython3's SpringForceField, linear system and
+// constraint solver bindings): a maker returns a new handle of its own
+// ObjectHandle subclass for the components it knows, else nullptr. wrap()
+// asks the makers in registration order; the first answer wins.
+using HandleMaker = ObjectHandle* (*)(Component&);
+void register_handle_maker(HandleMaker maker);
 // Registers `h` as the handle of `b` (its Python object is found from `h` by pybind11).
 void adopt(BaseHandle& h, Base* b);
 // Installs the destroyed hook (once).

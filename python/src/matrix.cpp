@@ -38,11 +38,7 @@ py::object to_csr(const MatrixSink& sink, const MechanicalState& s) {
     ++rows[r + 1];
   }
   for (std::size_t r = 0; r < n; ++r) rows[r + 1] += rows[r];
-  py::module_ sparse = py::module_::import("scipy.sparse");
-  py::array_t<double> pv(values.size(), values.data());
-  py::array_t<std::int32_t> pc(cols.size(), cols.data());
-  py::array_t<std::int32_t> pr(rows.size(), rows.data());
-  return sparse.attr("csr_matrix")(py::make_tuple(pv, pc, pr), py::arg("shape") = py::make_tuple(n, n));
+  return scipy_csr(values, cols, rows, n, n);
 }
 
 MechanicalState& state_of(ForceField& ff) {
@@ -53,6 +49,15 @@ MechanicalState& state_of(ForceField& ff) {
 }
 
 }  // namespace
+
+py::object scipy_csr(const std::vector<double>& values, const std::vector<std::int32_t>& cols,
+                     const std::vector<std::int32_t>& row_begin, std::size_t n_rows, std::size_t n_cols) {
+  py::module_ sparse = py::module_::import("scipy.sparse");
+  py::array_t<double> pv(values.size(), values.data());
+  py::array_t<std::int32_t> pc(cols.size(), cols.data());
+  py::array_t<std::int32_t> pr(row_begin.size(), row_begin.data());
+  return sparse.attr("csr_matrix")(py::make_tuple(pv, pc, pr), py::arg("shape") = py::make_tuple(n_rows, n_cols));
+}
 
 void define_matrix_access(py::module_& m) {
   auto object = py::reinterpret_borrow<py::object>(m.attr("Object"));

@@ -13,16 +13,11 @@ SCENES = [
     "access_energy", "access_stiffness_matrix", "access_constraint_matrix",
     "pointSetTopologyModifier", "ReadTheDocs_Example", "MessageHandler", "keyEvents", "scene_check",
     "import_python_scene",
+    "springForceField", "access_mass_matrix", "access_matrix", "access_compliance_matrix", "access_contact_forces",
 ]
 # Listed by issue 12 and not running yet: what each one lacks. Strict: a scene that
 # starts to run fails here until it moves to SCENES.
-PENDING = {
-    "springForceField": "Sofa.SofaDeformable (SpringForceField.addSpring/removeSpring)",
-    "access_mass_matrix": "Sofa.SofaLinearSystem (a linear system's matrices)",
-    "access_matrix": "Sofa.SofaLinearSystem, Sofa.SofaLinearSolver",
-    "access_compliance_matrix": "Sofa.SofaConstraintSolver (W(), lambda_force())",
-    "access_contact_forces": "VisualVectorField, MechanicalObject's lambda Data",
-}
+PENDING = {}
 
 
 @pytest.mark.parametrize("name", SCENES + sorted(PENDING))

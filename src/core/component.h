@@ -110,7 +110,18 @@ struct Event {
   // Key events come from a front end (viewer, script) with the key's character;
   // script events from a script (SofaPython3's Node.sendEvent), named, with a payload
   // only that front end reads.
-  enum class Kind { animate_begin, animate_end, simulation_init_done, key_pressed, key_released, script } kind;
+  // The two constraint events are sent by a constraint solver to its node and below once
+  // its problem is built (W, dfree) and once it is solved (λ), as SOFA's ConstraintSolverImpl.
+  enum class Kind {
+    animate_begin,
+    animate_end,
+    simulation_init_done,
+    key_pressed,
+    key_released,
+    script,
+    build_constraint_system_end,
+    solve_constraint_system_end
+  } kind;
   double dt = 0;
   bool handled = false;
   char key = 0;

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <numeric>
 
+#include "core/constraint_matrix_field.h"
+#include "core/roles.h"
+
 namespace sinew {
 
 void ConstraintMatrix::clear(int width) {
@@ -85,6 +88,21 @@ void ConstraintMatrix::zero_dof(int dof, int first_component, int count) {
 
 void ConstraintMatrix::zero_all() {
   for (double& v : values_) v = 0.0;
+}
+
+std::string ConstraintMatrixField::text() const {
+  ConstraintMatrix& J = state_->constraint_jacobian();
+  J.compress();
+  std::string out;
+  for (const ConstraintMatrix::Row& r : J.rows()) {
+    if (!out.empty()) out += '\n';
+    out += std::to_string(r.id) + ' ' + std::to_string(r.end - r.begin);
+    for (int e = r.begin; e < r.end; ++e) {
+      out += ' ' + std::to_string(J.entries()[e].dof);
+      for (int c = 0; c < J.width(); ++c) out += ' ' + parse::format_double(J.value(e)[c]);
+    }
+  }
+  return out;
 }
 
 }  // namespace sinew

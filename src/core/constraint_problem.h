@@ -191,6 +191,9 @@ class ConstraintSolver : public Component {
   virtual void solve_constraint(const ConstraintParams& p, int x_out, int v_out) = 0;
   // Vector id holding the applied corrections (to project and propagate).
   virtual int dx_vec() const = 0;
+  // The problem of the last solve (W, dfree, λ), for front ends; null when the
+  // solver keeps none.
+  virtual const ConstraintProblem* last_problem() const { return nullptr; }
 };
 
 }  // namespace sinew

@@ -93,6 +93,9 @@ class MechanicalState : public Component {
   // rebuilt by the constraint solver every step.
   ConstraintMatrix& constraint_jacobian() { return jacobian_; }
   const ConstraintMatrix& constraint_jacobian() const { return jacobian_; }
+  // Where a constraint solver stores Jᵀλ of its last solve (SOFA's "lambda" vector);
+  // null for states that keep none.
+  virtual Field<FlatVec>* lambda_field() { return nullptr; }
 
  private:
   ConstraintMatrix jacobian_;

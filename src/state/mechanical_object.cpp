@@ -45,6 +45,8 @@ MechanicalObject::MechanicalObject(StateType type)
                      "positions restored by reset", "State"),
       reset_velocity(this, "reset_velocity", empty_vec(state_type_info(type).deriv_width),
                      "velocities restored by reset", "State"),
+      lambda(this, "lambda", empty_vec(state_type_info(type).deriv_width),
+             "constraint forces Jᵀλ of the last constraint solve (output)", "State"),
       type_(type) {
   // Transforms and names never propagate through src= links.
   for (BaseField* f : {static_cast<BaseField*>(&translation), static_cast<BaseField*>(&rotation),
@@ -89,6 +91,7 @@ void MechanicalObject::resize(std::size_t n) {
   for (int id : {kRestPosition, kFreePosition, kFreeVelocity})
     if (!standard(id)->value().data.empty()) resize_vec(standard(id)->edit().data, is_coord_vec(id), n);
   for (auto& [id, v] : dynamic_) resize_vec(v, false, n);
+  if (!lambda.value().data.empty()) resize_vec(lambda.edit().data, false, n);
   size_field.set(static_cast<int>(n));
 }
 
@@ -104,6 +107,7 @@ void MechanicalObject::remove_points(const std::vector<unsigned>& decreasing) {
     remove_swap_last(f->edit().data, decreasing, is_coord_vec(id) ? inf.coord_width : inf.deriv_width);
   }
   for (auto& [id, v] : dynamic_) remove_swap_last(v, decreasing, inf.deriv_width);
+  if (!lambda.value().data.empty()) remove_swap_last(lambda.edit().data, decreasing, inf.deriv_width);
   size_ = decreasing.size() < size_ ? size_ - decreasing.size() : 0;
   size_field.set(static_cast<int>(size_));
 }
@@ -135,6 +139,10 @@ void MechanicalObject::add_points(std::size_t n, const std::vector<std::vector<u
   for (auto& [id, v] : dynamic_) {
     resize_vec(v, false, prev + n);
     vecs.push_back({&v, inf.deriv_width});
+  }
+  if (!lambda.value().data.empty()) {
+    resize_vec(lambda.edit().data, false, prev + n);
+    vecs.push_back({&lambda.edit().data, inf.deriv_width});
   }
   size_ = prev + n;
   size_field.set(static_cast<int>(size_));

@@ -9,6 +9,7 @@
 
 #include <map>
 
+#include "core/constraint_matrix_field.h"
 #include "core/roles.h"
 
 namespace sinew {
@@ -19,6 +20,12 @@ class MechanicalObject final : public MechanicalState {
 
   Field<FlatVec> position, velocity, force, external_force, rest_position, deriv_x, free_position, free_velocity,
       reset_position, reset_velocity;
+  // Outputs of the constraint solvers (SOFA's d_c and the "lambda" vector a
+  // GenericConstraintSolver allocates on every state): the Jacobian rows on this
+  // state, and Jᵀλ, the constraint force of the last solve on each DoF.
+  ConstraintMatrixField constraint{this, this};
+  Field<FlatVec> lambda;
+  Field<FlatVec>* lambda_field() override { return &lambda; }
   Field<Vec3> translation{this, "translation", Vec3::Zero(), "translation applied at init", "Transformation", "length"};
   Field<Vec3> rotation{this, "rotation", Vec3::Zero(), "rotation applied at init (Euler angles, degrees)",
                        "Transformation", "degrees"};

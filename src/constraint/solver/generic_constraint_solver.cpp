@@ -5,6 +5,7 @@
 
 #include "constraint/solver/resolution.h"
 #include "core/node.h"
+#include "core/simulation.h"
 #include "core/value_text.h"
 
 namespace sinew {
@@ -76,6 +77,7 @@ void GenericConstraintSolver::solve_constraint(const ConstraintParams& p, int x_
   const int n = build_constraint_jacobian(scope_, p, /*project=*/true);
   if (!fill_constraint_problem(scope_, p, n, problem_, *this)) return;
   build_system(p);
+  send_event(Event::Kind::build_constraint_system_end);
   disable_rigid_blocks();
   iterations_ = 0;
   error_ = 0.0;
@@ -98,7 +100,41 @@ void GenericConstraintSolver::solve_constraint(const ConstraintParams& p, int x_
                 parse::format_double(error_) + " > tolerance " + parse::format_double(effective_tolerance()) +
                 " (" + std::to_string(problem_.n) + " rows); the constraints may contradict each other (warned once)");
   }
+  send_event(Event::Kind::solve_constraint_system_end);
   apply_corrections(scope_, p, problem_.f, x_out, v_out, dx_);
+  store_lambdas();
+}
+
+void GenericConstraintSolver::send_event(Event::Kind kind) {
+  Event e{kind};
+  propagate_event(*node(), e);
+}
+
+void GenericConstraintSolver::store_lambdas() {
+  for (MechanicalState* st : scope_.ops->all_states()) {
+    Field<FlatVec>* out = st->lambda_field();
+    if (!out) continue;
+    const int w = st->info().deriv_width;
+    FlatVec& L = out->edit();
+    L.width = w;
+    L.data.assign(st->size() * static_cast<std::size_t>(w), 0.0);
+    // After the solve the Jacobian of an independent state is projected: at a DoF fixed
+    // by a projective constraint its lambda is 0 (SOFA, which accumulates the lambda of
+    // mapped states through the mappings, keeps the unprojected value there).
+    ConstraintMatrix& J = st->constraint_jacobian();
+    if (J.empty() || J.width() != w) continue;
+    J.compress();
+    for (const ConstraintMatrix::Row& r : J.rows()) {
+      if (r.id < 0 || r.id >= problem_.n) continue;
+      const double f = problem_.f[r.id];
+      for (int e = r.begin; e < r.end; ++e) {
+        const auto dof = static_cast<std::size_t>(J.entries()[e].dof);
+        if (dof >= st->size()) continue;
+        const double* v = J.value(e);
+        for (int c = 0; c < w; ++c) L.data[dof * w + c] += v[c] * f;
+      }
+    }
+  }
 }
 
 }  // namespace sinew

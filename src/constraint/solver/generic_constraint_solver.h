@@ -41,6 +41,7 @@ class GenericConstraintSolver : public ConstraintSolver {
   void solve_constraint(const ConstraintParams& p, int x_out, int v_out) override;
   int dx_vec() const override { return dx_; }
   const ConstraintProblem& problem() const { return problem_; }
+  const ConstraintProblem* last_problem() const override { return &problem_; }
 
  protected:
   // W (built solvers): every correction's compliance and the regularisation.
@@ -65,6 +66,11 @@ class GenericConstraintSolver : public ConstraintSolver {
   bool converged_ = true;
 
  private:
+  // Tells the solver's node and below (SOFA's postBuildSystem / postSolveSystem).
+  void send_event(Event::Kind kind);
+  // lambda = Jᵀλ on every state of the scope, from the Jacobian each state holds
+  // (SOFA's storeConstraintLambdas).
+  void store_lambdas();
   int dx_ = -1;
   bool warned_divergence_ = false;
   bool warned_rigid_rows_ = false;

@@ -9,6 +9,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "core/simulation.h"
 #include "core/value_text.h"
 
 namespace sinew {
@@ -62,6 +63,8 @@ void LCPConstraintSolver::solve_constraint(const ConstraintParams& p, int /*x_ou
     compute_initial_guess();
   }
   initial_forces_.assign(problem_.f.begin(), problem_.f.end());
+  Event built{Event::Kind::build_constraint_system_end};  // SOFA's postBuildSystem
+  propagate_event(*node(), built);
 
   // solveSystem: the solver's mu picks the algorithm.
   result_ = LcpResult{};
@@ -104,6 +107,9 @@ void LCPConstraintSolver::solve_constraint(const ConstraintParams& p, int /*x_ou
                 parse::format_double(result_.error) + " (tolerance " + parse::format_double(tolerance.value()) +
                 ", " + std::to_string(n) + " rows); the contacts may contradict each other (warned once)");
   }
+
+  Event solved{Event::Kind::solve_constraint_system_end};  // SOFA's postSolveSystem
+  propagate_event(*node(), solved);
 
   // applyCorrection
   if (initial_guess.value()) keep_contact_forces();

@@ -61,6 +61,7 @@ class LCPConstraintSolver : public ConstraintSolver {
 
   // The last problem (W is only the diagonal blocks when not build_lcp).
   const ConstraintProblem& problem() const { return problem_; }
+  const ConstraintProblem* last_problem() const override { return &problem_; }
   // The forces the last solve started from (the initial guess).
   const std::vector<double>& initial_forces() const { return initial_forces_; }
   const LcpResult& last_result() const { return result_; }

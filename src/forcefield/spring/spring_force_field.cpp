@@ -40,8 +40,10 @@ bool SpringForceField::bind_states() {
   if (t1 == StateType::vec1) dim_ = 1;
   else if (t1 == StateType::vec2) dim_ = 2;
   else if (t1 == StateType::vec3) dim_ = 3;
+  else if (t1 == StateType::rigid3) dim_ = 3;  // on the frames' centres (SOFA's getCPos/getDPos)
   else {
-    msg_error(std::string("states of type ") + s1_->info().name + " are not supported (Vec1d, Vec2d, Vec3d only)");
+    msg_error(std::string("states of type ") + s1_->info().name +
+              " are not supported (Vec1d, Vec2d, Vec3d, Rigid3d only)");
     set_state(ComponentState::invalid);
     return false;
   }
@@ -187,7 +189,7 @@ bool SpringForceField::sizes_ok() {
   return true;
 }
 
-template <int N>
+template <int N, int CS, int DS>
 void SpringForceField::add_force_n(const MechParams& p) {
   MechanicalState& a = *s1_;
   MechanicalState& b = *s2_;
@@ -199,11 +201,11 @@ void SpringForceField::add_force_n(const MechParams& p) {
   double* f2 = b.write(vec_for(b, p.f, kForce)).data();
   energy_ = 0;
   std::size_t k = 0;
-  for (const auto& s : springs_) springs::add_spring_force<N>(s, x1, v1, f1, x2, v2, f2, dfdx_[k++], energy_);
-  for (const auto& s : grid_springs_) springs::add_spring_force<N>(s, x1, v1, f1, x2, v2, f2, dfdx_[k++], energy_);
+  for (const auto& s : springs_) springs::add_spring_force<N, CS, DS>(s, x1, v1, f1, x2, v2, f2, dfdx_[k++], energy_);
+  for (const auto& s : grid_springs_) springs::add_spring_force<N, CS, DS>(s, x1, v1, f1, x2, v2, f2, dfdx_[k++], energy_);
 }
 
-template <int N>
+template <int N, int DS>
 void SpringForceField::add_dforce_n(const MechParams& p, double kfactor) {
   MechanicalState& a = *s1_;
   MechanicalState& b = *s2_;
@@ -212,34 +214,72 @@ void SpringForceField::add_dforce_n(const MechParams& p, double kfactor) {
   const double* dx2 = b.read(vec_for(b, p.dx, kDx)).data();
   double* df2 = b.write(vec_for(b, p.df, kDforce)).data();
   std::size_t k = 0;
-  for (const auto& s : springs_) springs::add_spring_dforce<N>(s, dfdx_[k++], dx1, df1, dx2, df2, kfactor);
-  for (const auto& s : grid_springs_) springs::add_spring_dforce<N>(s, dfdx_[k++], dx1, df1, dx2, df2, kfactor);
+  for (const auto& s : springs_) springs::add_spring_dforce<N, DS>(s, dfdx_[k++], dx1, df1, dx2, df2, kfactor);
+  for (const auto& s : grid_springs_) springs::add_spring_dforce<N, DS>(s, dfdx_[k++], dx1, df1, dx2, df2, kfactor);
 }
 
 void SpringForceField::add_force(const MechParams& p) {
   if (!sizes_ok()) return;
+  if (s1_->state_type() == StateType::rigid3) return add_force_n<3, 7, 6>(p);
   switch (dim_) {
-    case 1: add_force_n<1>(p); break;
-    case 2: add_force_n<2>(p); break;
-    default: add_force_n<3>(p); break;
+    case 1: add_force_n<1, 1, 1>(p); break;
+    case 2: add_force_n<2, 2, 2>(p); break;
+    default: add_force_n<3, 3, 3>(p); break;
   }
 }
 
 void SpringForceField::add_dforce(const MechParams& p, double kfactor) {
   if (!sizes_ok()) return;
+  if (s1_->state_type() == StateType::rigid3) return add_dforce_n<3, 6>(p, kfactor);
   switch (dim_) {
-    case 1: add_dforce_n<1>(p, kfactor); break;
-    case 2: add_dforce_n<2>(p, kfactor); break;
-    default: add_dforce_n<3>(p, kfactor); break;
+    case 1: add_dforce_n<1, 1>(p, kfactor); break;
+    case 2: add_dforce_n<2, 2>(p, kfactor); break;
+    default: add_dforce_n<3, 3>(p, kfactor); break;
   }
 }
 
+std::string SpringForceField::set_springs(std::vector<springs::LinearSpring> list) {
+  if (s1_ && s2_)
+    for (std::size_t i = 0; i < list.size(); ++i)
+      if (list[i].m1 >= s1_->size() || list[i].m2 >= s2_->size())
+        return "spring " + std::to_string(i) + " (" + std::to_string(list[i].m1) + ", " +
+               std::to_string(list[i].m2) + ") refers to a point out of range (object1 has " +
+               std::to_string(s1_->size()) + " points, object2 " + std::to_string(s2_->size()) + ")";
+  springs_ = std::move(list);
+  dfdx_.assign(springs_.size() + grid_springs_.size(), springs::Block{});
+  if (generated_) return "";  // the Data describe the generator, not a list
+  std::vector<unsigned> i1, i2;
+  std::vector<double> L, KS, KD, packed;
+  std::vector<int> EO, EN;
+  for (const auto& sp : springs_) {
+    i1.push_back(sp.m1);
+    i2.push_back(sp.m2);
+    L.push_back(sp.l0);
+    KS.push_back(sp.ks);
+    KD.push_back(sp.kd);
+    EO.push_back(sp.elongation_only ? 1 : 0);
+    EN.push_back(sp.enabled ? 1 : 0);
+    packed.insert(packed.end(), {double(sp.m1), double(sp.m2), sp.ks, sp.kd, sp.l0});
+  }
+  springs_indices1.set(std::move(i1));
+  springs_indices2.set(std::move(i2));
+  lengths.set(std::move(L));
+  stiffness.set(std::move(KS));
+  damping.set(std::move(KD));
+  elongation_only.set(std::move(EO));
+  enabled.set(std::move(EN));
+  if (spring.is_set()) spring.set(std::move(packed));
+  return "";
+}
+
 bool SpringForceField::build_stiffness(MatrixSink& K) {
+  if (!s1_ || !s2_) return false;
   const int N = dim_;
+  const std::size_t DS = static_cast<std::size_t>(s1_->info().deriv_width);  // Rigid3d: 6, translations first
   std::size_t e = 0;
   auto emit = [&](const springs::LinearSpring& s) {
     const springs::Block& m = dfdx_[e++];
-    const std::size_t p1 = static_cast<std::size_t>(s.m1) * N, p2 = static_cast<std::size_t>(s.m2) * N;
+    const std::size_t p1 = s.m1 * DS, p2 = s.m2 * DS;
     for (int i = 0; i < N; ++i)
       for (int j = 0; j < N; ++j) {
         const double k = m[i * N + j];
@@ -259,7 +299,7 @@ void register_spring_force_field(Registry& r) {
   info.name = "SpringForceField";
   info.category = "ForceField/Spring";
   info.description = "linear springs between the points of one or two states";
-  info.templates = {"Vec1d", "Vec2d", "Vec3d"};
+  info.templates = {"Vec1d", "Vec2d", "Vec3d", "Rigid3d"};
   info.default_template = "Vec3d";
   // object1/object2 may live elsewhere than the node's state: the types are checked at init.
   info.requirement = Requirement::none;

@@ -8,6 +8,7 @@
 // they fill `springs_` (and `grid_springs_`) before SpringForceField::init().
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "core/roles.h"
@@ -50,6 +51,13 @@ class SpringForceField : public ForceField {
   // The springs in use after init (explicit list, then generated grid springs).
   const std::vector<springs::LinearSpring>& spring_list() const { return springs_; }
   const std::vector<springs::LinearSpring>& grid_springs() const { return grid_springs_; }
+  // Replaces the spring list (SofaPython3's addSpring/removeSpring/clear): used from the
+  // next force computation on, and written back into the per-spring Data (indices1,
+  // indices2, lengths, stiffness, damping, elongationOnly, enabled; `spring` when it was
+  // given) as SOFA's updateTopologyIndicesFromSprings does, so the Data show the springs
+  // in use and a reinit keeps them. Returns why the list is refused (an end beyond its
+  // state), "" when accepted.
+  std::string set_springs(std::vector<springs::LinearSpring> list);
   // Σ ½·ks·(d − L0)² over the springs active in the last add_force (SOFA's addForce
   // sum; its getPotentialEnergy also counts disabled and slack elongation-only springs).
   std::optional<double> potential_energy() const override { return energy_; }
@@ -67,9 +75,9 @@ class SpringForceField : public ForceField {
   int dim_ = 3;
 
  private:
-  template <int N>
+  template <int N, int CS, int DS>  // dimension, coordinate and derivative strides
   void add_force_n(const MechParams& p);
-  template <int N>
+  template <int N, int DS>
   void add_dforce_n(const MechParams& p, double kfactor);
   // False (component invalid, springs dropped) when a resized state no longer holds every spring end.
   bool sizes_ok();
