@@ -204,6 +204,72 @@ bool PythonForceField::build_stiffness(MatrixSink& K) {
   return ok;
 }
 
+py::dict PythonMapping::params() const {
+  // SofaPython3 passes the mechanical parameters of the call; the mapping's own
+  // calls in Sinew carry none, so they are the defaults (SOFA's defaultInstance).
+  py::dict d;
+  d["time"] = node() ? node()->time.value() : 0.0;
+  d["mFactor"] = 0.0;
+  d["bFactor"] = 0.0;
+  d["kFactor"] = 0.0;
+  d["isImplicit"] = false;
+  d["energy"] = false;
+  return d;
+}
+
+// `a` and `b` make the two vector arguments (under the GIL).
+template <class A, class B>
+void PythonMapping::call_python(const char* method, A&& a, B&& b) {
+  call(*this, method, [&] {
+    py::object m = override_of(method);
+    if (m.is_none()) {
+      // SofaPython3 declares these methods pure: a mapping without one cannot run.
+      msg_error(std::string("defines no ") + method + "(): a Python mapping must define apply, applyJ and applyJT");
+      set_state(ComponentState::invalid);
+      return;
+    }
+    m(params(), a(), b());
+  });
+}
+
+void PythonMapping::apply(int x) {
+  if (!out_) return;  // a visual output: SofaPython3's mappings write mechanical states only
+  call_python("apply", [&] { return state_vector(*out_, vec_for(*out_, x, kPosition)); },
+              [&] { return state_vector(*in_[0], vec_for(*in_[0], x, kPosition)); });
+}
+
+void PythonMapping::apply_j(int v, int role) {
+  if (!out_) return;
+  call_python("applyJ", [&] { return state_vector(*out_, vec_for(*out_, v, role)); },
+              [&] { return state_vector(*in_[0], vec_for(*in_[0], v, role)); });
+}
+
+void PythonMapping::apply_jt(int f, int role) {
+  if (!out_) return;
+  call_python("applyJT", [&] { return state_vector(*in_[0], vec_for(*in_[0], f, role)); },
+              [&] { return state_vector(*out_, vec_for(*out_, f, role)); });
+}
+
+bool PythonMapping::apply_jt_constraints() {
+  if (!out_) return true;
+  // The states' constraint matrices, as SofaPython3 gives a MatrixDeriv Data (scipy.sparse).
+  BaseField* in_c = in_[0]->find_field("constraint");
+  BaseField* out_c = out_->find_field("constraint");
+  if (!in_c || !out_c) return false;
+  bool ok = true;
+  call(*this, "applyConstraintsJT", [&] {
+    py::object m = override_of("applyConstraintsJT");
+    if (m.is_none()) {
+      ok = false;
+      return;
+    }
+    py::dict d;
+    d["time"] = node() ? node()->time.value() : 0.0;
+    m(d, wrap_field(in_c, wrap(in_[0])), wrap_field(out_c, wrap(out_)));
+  });
+  return ok;
+}
+
 void PythonDataEngine::do_update() {
   call(*this, "update", [&] {
     py::object me = self();

@@ -1,5 +1,5 @@
 // The C++ side of components written in Python (SofaPython3's Controller,
-// ForceFieldVec3d/Rigid3d, DataEngine).
+// ForceFieldVec3d/Rigid3d, DataEngine, Mapping_Vec3d_Vec3d...).
 //
 // The Python instance is the component's handle. Its methods are called
 // with the GIL held; an exception becomes an error of the component, with
@@ -14,6 +14,7 @@
 #include "core/engine.h"
 #include "core/roles.h"
 #include "handles.h"
+#include "mapping/mapping_base.h"
 
 namespace sinew::python {
 
@@ -95,6 +96,31 @@ class PythonDataEngine final : public Engine, public PythonHost {
 
  protected:
   void do_update() override;
+};
+
+// SofaPython3's Mapping_<In>_<Out>: apply, applyJ, applyJT and
+// applyConstraintsJT are Python methods, called as SofaPython3 calls them:
+// (params dict, output vector, input vector) for apply and applyJ, (params,
+// input vector, output vector) for the transposed ones; the vectors behave as
+// Data (`.value`, `writeableArray()`). The output is not resized: the Python
+// code gives it its size (SofaPython3 does not either). SofaPython3 defines
+// no Jacobian matrix for these mappings, so assembled solvers cannot go
+// through them (an error says so).
+class PythonMapping final : public MappingBase, public PythonHost {
+ public:
+  PythonMapping(StateType in, StateType out) : MappingBase(in, out) { listening.set(true); }
+  void apply(int x) override;
+  void apply_j(int v, int role) override;
+  void apply_jt(int f, int role) override;
+  bool apply_jt_constraints() override;
+
+ protected:
+  bool init_mapping() override { return true; }
+
+ private:
+  py::dict params() const;
+  template <class A, class B>
+  void call_python(const char* method, A&& a, B&& b);
 };
 
 }  // namespace sinew::python

@@ -108,6 +108,11 @@ BaseField& DataHandle::get() const {
   return *field;
 }
 
+std::string LinkPath::text() const {
+  if (py::isinstance<DataHandle>(target)) return "@" + field_path(py::cast<DataHandle&>(target).get());
+  return to_sofa_text(target);
+}
+
 py::object wrap_field(BaseField* f, py::object owner) {
   if (!f) return py::none();
   return py::cast(DataHandle{f, std::move(owner)});
@@ -166,6 +171,7 @@ py::object field_value(BaseField& f, py::handle base) {
 
 std::string to_sofa_text(py::handle value) {
   if (py::isinstance<py::str>(value)) return py::cast<std::string>(value);
+  if (py::isinstance<LinkPath>(value)) return py::cast<LinkPath&>(value).text();
   if (py::isinstance<py::bool_>(value)) return py::cast<bool>(value) ? "1" : "0";
   if (py::isinstance<DataHandle>(value)) return py::cast<DataHandle&>(value).get().text();
   if (py::isinstance<BaseHandle>(value)) {
@@ -189,7 +195,8 @@ std::string to_sofa_text(py::handle value) {
 }
 
 void set_field_value(BaseField& f, py::handle value) {
-  if (py::isinstance<py::str>(value) || py::isinstance<DataHandle>(value) || py::isinstance<BaseHandle>(value)) {
+  if (py::isinstance<py::str>(value) || py::isinstance<DataHandle>(value) || py::isinstance<BaseHandle>(value) ||
+      py::isinstance<LinkPath>(value)) {
     const std::string text = to_sofa_text(value);
     if (!text.empty() && text[0] == '@' && !py::isinstance<DataHandle>(value)) {
       // A link given as text: made at once when its target exists, else at init.
@@ -266,7 +273,10 @@ void define_data(py::module_& m) {
       .def("getOwner", [](DataHandle& d) { d.get(); return d.owner; })
       .def("getPathName", [](DataHandle& d) { return field_path(d.get()); })
       .def("getLinkPath", [](DataHandle& d) { return "@" + field_path(d.get()); })
-      .def_property_readonly("linkpath", [](DataHandle& d) { return "@" + field_path(d.get()); })
+      .def_property_readonly("linkpath", [](py::object self) {
+        py::cast<DataHandle&>(self).get();
+        return LinkPath{self};
+      })
       .def("isSet", [](DataHandle& d) { return d.get().is_set(); })
       .def("unset", [](DataHandle& d) { d.get().unset(); })
       .def("read", [](DataHandle& d, const std::string& t) { return d.get().read(t); })
@@ -321,6 +331,11 @@ void define_data(py::module_& m) {
       })
       .def("__str__", [](py::object self) { return py::str(field_value(py::cast<DataHandle&>(self).get(), self)); })
       .def("__repr__", [](DataHandle& d) { return "<Data " + field_path(d.get()) + " = " + d.get().text().substr(0, 60) + ">"; });
+
+  py::class_<LinkPath>(m, "LinkPath", "A link to an object or a Data (\"@/path\", \"@/path.data\")")
+      .def("__str__", &LinkPath::text)
+      .def("__repr__", [](const LinkPath& l) { return "LinkPath(\"" + l.text() + "\")"; })
+      .def("target", [](const LinkPath& l) { return l.target; });
 
   py::class_<StateVecHandle>(m, "StateVector", "A state vector handed to a Python force field (as a Data)")
       .def_property_readonly("value", [](py::object self) {

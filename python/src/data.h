@@ -33,6 +33,14 @@ struct StateVecHandle {
   int id = 0;
 };
 
+// SofaPython3's LinkPath (`obj.linkpath`, `data.linkpath`): names an object or
+// a Data as "@/path" or "@/path.data"; given as a Data or link value it makes
+// a link. `target` is the object's or the Data's Python handle.
+struct LinkPath {
+  py::object target;
+  std::string text() const;
+};
+
 py::object wrap_field(BaseField* f, py::object owner);
 py::object state_vector(MechanicalState& s, int id);
 

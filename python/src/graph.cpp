@@ -1,6 +1,8 @@
 // Sofa.Core.Base, Node and Object (SofaPython3's Binding_Base/Node/BaseObject).
 #include <pybind11/stl.h>
 
+#include <algorithm>
+
 #include "components.h"
 #include "core/mechanical_ops.h"
 #include "core/path.h"
@@ -61,6 +63,13 @@ bool set_field_or_link(Base& b, const std::string& name, py::handle value) {
     return true;
   }
   if (BaseLink* l = b.find_link(name)) {
+    if (py::isinstance<LinkPath>(value)) {
+      py::object t = py::cast<LinkPath&>(value).target;
+      if (!py::isinstance<BaseHandle>(t))
+        throw py::type_error(b.describe() + ": link '" + name + "' is given a Data (" +
+                             py::cast<LinkPath&>(value).text() + "); a link points to an object");
+      return set_field_or_link(b, name, t);
+    }
     if (py::isinstance<BaseHandle>(value)) {
       Base& target = py::cast<BaseHandle&>(value).get();
       if (!l->accept(&target)) throw py::type_error(b.describe() + ": link '" + name + "' cannot point to " + target.describe());
@@ -103,6 +112,7 @@ py::object insert_object(Node& node, py::object obj) {
   if (c->where.file.empty()) c->where = python_location();
   std::unique_ptr<Component> owned(static_cast<Component*>(h.owned.release()));
   if (!node.add_object(std::move(owned))) {
+    h.owned = std::move(owned);  // refused: Python keeps it
     flush_messages(*node.root());
     throw py::value_error("cannot add " + c->describe() + " now (the graph is locked during a step)");
   }
@@ -139,13 +149,21 @@ py::object add_object_by_type(Node& node, const std::string& type, py::kwargs kw
 
 py::object add_child(Node& parent, py::object child) {
   auto& h = py::cast<NodeHandle&>(child);
-  if (!h.owned) throw py::value_error(h.get().describe() + " already has a parent; remove it first (removeChild)");
+  if (!h.owned) {
+    // A node of the graph already: it gains a further parent (SOFA's DAG).
+    if (!parent.add_linked_child(&h.node())) {
+      flush_messages(*parent.root());
+      throw py::value_error("cannot add " + h.node().describe() + " as a child of " + parent.describe() +
+                            " (see the error above)");
+    }
+    return child;
+  }
   std::unique_ptr<Node> owned(static_cast<Node*>(h.owned.release()));
-  Node* raw = owned.get();
   if (!parent.add_child(std::move(owned))) {
-    h.owned.reset(raw);  // refused (graph locked): Python keeps it
+    h.owned = std::move(owned);  // refused (a cycle, or the graph is locked): Python keeps it
     flush_messages(*parent.root());
-    throw py::value_error("cannot add a child now (the graph is locked during a step)");
+    throw py::value_error("cannot add " + h.node().describe() + " as a child of " + parent.describe() +
+                          " (see the error above)");
   }
   return child;
 }
@@ -251,10 +269,7 @@ H* make_python_component(std::unique_ptr<C> c, py::args args, py::kwargs kwargs)
   adopt(*h, raw);
   raw->bind_handle(h);
   if (args.size() == 1 && py::isinstance<py::str>(args[0])) raw->name.set(py::cast<std::string>(args[0]));
-  for (auto [k, v] : kwargs) {
-    const std::string key = py::cast<std::string>(k);
-    if (BaseField* f = raw->find_field(key)) set_field_value(*f, v);
-  }
+  for (auto [k, v] : kwargs) set_field_or_link(*raw, py::cast<std::string>(k), v);
   return h;
 }
 
@@ -262,6 +277,21 @@ struct ControllerHandle : ObjectHandle {};
 struct DataEngineHandle : ObjectHandle {};
 template <StateType T>
 struct ForceFieldHandle : ObjectHandle {};
+
+template <StateType In, StateType Out>
+struct MappingHandle : ObjectHandle {};
+
+// SofaPython3's Mapping_<In>_<Out> (e.g. Mapping_Vec3d_Vec1d).
+template <StateType In, StateType Out>
+void define_mapping(py::module_& m) {
+  const std::string name = std::string("Mapping_") + state_type_info(In).name + "_" + state_type_info(Out).name;
+  py::class_<MappingHandle<In, Out>, ObjectHandle>(m, name.c_str(), py::dynamic_attr(),
+                                                   "A mapping written in Python: override apply, applyJ, applyJT "
+                                                   "(and applyConstraintsJT for Lagrangian constraints)")
+      .def(py::init([](py::args a, py::kwargs k) {
+        return make_python_component<MappingHandle<In, Out>>(std::make_unique<PythonMapping>(In, Out), a, k);
+      }));
+}
 
 template <StateType T>
 void define_force_field(py::module_& m, const char* name) {
@@ -310,7 +340,10 @@ void define_graph(py::module_& m) {
            py::arg("group") = "", py::arg("type") = "")
       .def("getPathName", [](BaseHandle& h) { return path_of(h.get()); })
       .def("getLinkPath", [](BaseHandle& h) { return "@" + path_of(h.get()); })
-      .def_property_readonly("linkpath", [](BaseHandle& h) { return "@" + path_of(h.get()); })
+      .def_property_readonly("linkpath", [](py::object self) {
+        py::cast<BaseHandle&>(self).get();
+        return LinkPath{self};
+      })
       .def("__setattr__", &base_setattr)
       .def("__repr__", [](BaseHandle& h) {
         return h.ptr ? "<" + h.ptr->describe() + " at " + path_of(*h.ptr) + ">" : std::string("<destroyed object>");
@@ -359,20 +392,32 @@ void define_graph(py::module_& m) {
         if (py::isinstance<py::str>(child)) n = h.node().find_child_named(py::cast<std::string>(child));
         else n = &py::cast<NodeHandle&>(child).node();
         if (!n) throw py::value_error("no child named " + py::cast<std::string>(py::str(child)));
+        const auto& kids = h.node().children();
+        if (std::find(kids.begin(), kids.end(), n) == kids.end())
+          throw py::value_error(n->describe() + " is not a child of " + h.node().describe());
+        const bool last_parent = n->parents().size() == 1;
         auto owned = h.node().remove_child(n);
-        if (!owned) throw py::value_error(n->describe() + " is not a child of " + h.node().describe());
-        give_back(n, std::unique_ptr<Base>(owned.release()));
+        if (last_parent && !owned) {
+          flush_messages(*h.node().root());
+          throw py::value_error("cannot remove a child now (the graph is locked during a step)");
+        }
+        give_back(n, std::unique_ptr<Base>(owned.release()));  // nothing when other parents keep it
       })
       .def("detachFromGraph", [](NodeHandle& h) {
+        // Every parent lets go; the last one hands the node back to Python.
         Node& n = h.node();
-        if (Node* p = n.parent()) give_back(&n, std::unique_ptr<Base>(p->remove_child(&n).release()));
+        while (Node* p = n.parent()) {
+          auto owned = p->remove_child(&n);
+          if (owned) give_back(&n, std::unique_ptr<Base>(owned.release()));
+          else if (n.parent() == p) break;  // refused (graph locked)
+        }
       })
       .def("getChild", [](NodeHandle& h, const std::string& name) { return wrap(h.node().find_child_named(name)); })
       .def("getObject", [](NodeHandle& h, const std::string& name) { return wrap(h.node().find_object_named(name)); })
       .def("hasObject", [](NodeHandle& h, const std::string& name) { return h.node().find_object_named(name) != nullptr; })
       .def_property_readonly("children", [](NodeHandle& h) {
         py::list out;
-        for (auto& c : h.node().children()) out.append(wrap(c.get()));
+        for (Node* c : h.node().children()) out.append(wrap(c));
         return out;
       })
       .def_property_readonly("objects", [](NodeHandle& h) {
@@ -382,7 +427,7 @@ void define_graph(py::module_& m) {
       })
       .def_property_readonly("parents", [](NodeHandle& h) {
         py::list out;
-        if (Node* p = h.node().parent()) out.append(wrap(p));
+        for (Node* p : h.node().parents()) out.append(wrap(p));
         return out;
       })
       .def("getRoot", [](NodeHandle& h) { return wrap(h.node().root()); })
@@ -464,6 +509,25 @@ void define_graph(py::module_& m) {
   define_force_field<StateType::vec6>(m, "ForceFieldVec6d");
   define_force_field<StateType::rigid3>(m, "ForceFieldRigid3d");
   define_force_field<StateType::rigid2>(m, "ForceFieldRigid2d");
+  using S = StateType;  // SofaPython3's list of mapping pairs
+  define_mapping<S::vec1, S::vec1>(m);
+  define_mapping<S::vec1, S::vec2>(m);
+  define_mapping<S::vec1, S::vec3>(m);
+  define_mapping<S::vec2, S::vec2>(m);
+  define_mapping<S::vec2, S::vec1>(m);
+  define_mapping<S::vec3, S::vec3>(m);
+  define_mapping<S::vec3, S::vec2>(m);
+  define_mapping<S::vec3, S::vec1>(m);
+  define_mapping<S::vec6, S::vec6>(m);
+  define_mapping<S::vec6, S::vec3>(m);
+  define_mapping<S::vec6, S::vec1>(m);
+  define_mapping<S::rigid2, S::vec2>(m);
+  define_mapping<S::rigid2, S::rigid2>(m);
+  define_mapping<S::rigid3, S::vec6>(m);
+  define_mapping<S::rigid3, S::vec3>(m);
+  define_mapping<S::rigid3, S::vec1>(m);
+  define_mapping<S::rigid3, S::rigid3>(m);
+  define_mapping<S::vec3, S::rigid3>(m);
 }
 
 }  // namespace sinew::python

@@ -48,6 +48,37 @@ MechanicalState& state_of(ForceField& ff) {
   return *s;
 }
 
+// SofaPython3's mass classes (Sofa.Core.BaseMass, MassVec3d, MassRigid3d...):
+// the Python type of a mass follows its state's type, known when it is first
+// handed to Python if its state was added before it (the usual order);
+// otherwise it is a BaseMass.
+struct BaseMassHandle : ObjectHandle {};
+template <StateType T>
+struct MassHandle : BaseMassHandle {};
+
+ObjectHandle* make_mass_handle(Component& c) {
+  auto* mass = dynamic_cast<Mass*>(&c);
+  if (!mass) return nullptr;
+  const MechanicalState* s = mass->mstate.get();
+  if (!s && mass->node()) s = mass->node()->mechanical_state;
+  if (!s) return new BaseMassHandle{};
+  switch (s->state_type()) {
+    case StateType::vec1: return new MassHandle<StateType::vec1>{};
+    case StateType::vec2: return new MassHandle<StateType::vec2>{};
+    case StateType::vec3: return new MassHandle<StateType::vec3>{};
+    case StateType::vec6: return new MassHandle<StateType::vec6>{};
+    case StateType::rigid2: return new MassHandle<StateType::rigid2>{};
+    case StateType::rigid3: return new MassHandle<StateType::rigid3>{};
+  }
+  return new BaseMassHandle{};
+}
+
+template <StateType T>
+void define_mass(py::module_& m) {
+  const std::string name = std::string("Mass") + state_type_info(T).name;
+  py::class_<MassHandle<T>, BaseMassHandle>(m, name.c_str(), "A mass on a state of that type");
+}
+
 }  // namespace
 
 py::object scipy_csr(const std::vector<double>& values, const std::vector<std::int32_t>& cols,
@@ -85,6 +116,15 @@ void define_matrix_access(py::module_& m) {
       },
       py::is_method(object), py::name("assembleMMatrix"),
       py::doc("Mass matrix of this mass on its state (scipy.sparse CSR)"));
+
+  py::class_<BaseMassHandle, ObjectHandle>(m, "BaseMass", "A mass (SOFA's BaseMass)");
+  define_mass<StateType::vec3>(m);
+  define_mass<StateType::vec2>(m);
+  define_mass<StateType::vec1>(m);
+  define_mass<StateType::vec6>(m);
+  define_mass<StateType::rigid3>(m);
+  define_mass<StateType::rigid2>(m);
+  register_handle_maker(&make_mass_handle);
 }
 
 }  // namespace sinew::python

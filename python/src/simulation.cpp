@@ -127,7 +127,7 @@ void define_simulation(py::module_& m) {
   m.def("unload", [](NodeHandle& h) {
     Node& n = h.node();
     // The graph's contents go; the (root) node itself stays, empty, as in SOFA.
-    while (!n.children().empty()) n.remove_child(n.children().back().get());
+    while (!n.children().empty()) n.remove_child(n.children().back());
     while (!n.objects().empty()) n.remove_object(n.objects().back().get());
   });
   m.def("load", &load_file, "Load a scene file (XML or Python) and return its root");

@@ -98,9 +98,9 @@ def test_writes_resize_and_convert(scene):
 
 def test_links(scene):
     d = scene.n.dofs
-    assert d.position.linkpath == "@/n/dofs.position"
+    assert str(d.position.linkpath) == "@/n/dofs.position"
     assert d.position.getLinkPath() == "@/n/dofs.position"
-    assert d.linkpath == "@/n/dofs"
+    assert str(d.linkpath) == "@/n/dofs"
     assert d.position.hasParent()  # position="@topo.position"
     assert d.position.getParent().getOwner() is scene.n.topo
     other = scene.n.addObject("MechanicalObject", name="copy", position=d.position.linkpath)

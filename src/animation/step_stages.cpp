@@ -12,19 +12,23 @@ namespace sinew {
 
 namespace {
 
-void gather(Node& node, GraphView& v) {
-  if (!node.activated.value() || node.sleeping.value()) return;
-  if (!node.solvers.empty()) {
-    // A solver integrates its whole subtree; solvers below it never run.
-    v.solver_nodes.push_back(&node);
-    v.solve_order.push_back({&node, true});
-    return;
-  }
-  if (!node.interaction_force_fields.empty()) {
-    if (v.solver_nodes.empty()) v.early_interactions.push_back(&node);
-    else v.solve_order.push_back({&node, false});
-  }
-  for (std::size_t i = 0; i < node.children().size(); ++i) gather(*node.children()[i], v);
+void gather(Node& root, GraphView& v) {
+  traverse(root, [&](Node& node, bool pruned) {
+    if (!node.activated.value() || node.sleeping.value()) return Visit::skip;
+    // Below a solver (through every parent, in a DAG): integrated by that solver.
+    if (pruned) return Visit::prune;
+    if (!node.solvers.empty()) {
+      // A solver integrates its whole subtree; solvers below it never run.
+      v.solver_nodes.push_back(&node);
+      v.solve_order.push_back({&node, true});
+      return Visit::prune;
+    }
+    if (!node.interaction_force_fields.empty()) {
+      if (v.solver_nodes.empty()) v.early_interactions.push_back(&node);
+      else v.solve_order.push_back({&node, false});
+    }
+    return Visit::descend;
+  });
 }
 
 // Interaction force fields above the solver nodes are explicit: computed
@@ -48,12 +52,15 @@ long first_non_finite(const std::vector<double>& v) {
   return -1;
 }
 
-// The solver that integrates a state: the first one up the graph (valid or not).
-OdeSolver* solver_of(const Component& c) {
-  for (Node* n = c.node(); n; n = n->parent())
-    if (!n->solvers.empty()) return n->solvers.front();
+// The solver that integrates a state: the first one up the graph, through every parent (valid or not).
+OdeSolver* solver_up(const Node* n) {
+  if (!n) return nullptr;
+  if (!n->solvers.empty()) return n->solvers.front();
+  for (const Node* p : n->parents())
+    if (OdeSolver* s = solver_up(p)) return s;
   return nullptr;
 }
+OdeSolver* solver_of(const Component& c) { return solver_up(c.node()); }
 
 // States whose solver (or, without one, the state itself) was stopped are not checked again.
 bool stopped(const Component& c) {

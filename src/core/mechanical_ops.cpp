@@ -34,14 +34,14 @@ void MechanicalOps::rebuild() {
   // Top-down over the subtree, skipping inactive and sleeping nodes.
   // A node below a mechanical mapping with mapForces=false is "pruned": its
   // mappings are still propagated, but force and dx visitors skip it (§3.5).
+  // In a DAG a node is pruned only when all of its parents are (traverse()).
   std::vector<std::pair<Node*, bool>> order;
-  auto visit = [&](auto&& self, Node& n, bool pruned) -> void {
-    if (!n.activated.value() || n.sleeping.value()) return;
+  traverse(*node_, [&](Node& n, bool pruned) {
+    if (!n.activated.value() || n.sleeping.value()) return Visit::skip;
     if (Mapping* m = n.mechanical_mapping; m && !m->map_forces.value()) pruned = true;
     order.emplace_back(&n, pruned);
-    for (auto& c : n.children()) self(self, *c, pruned);
-  };
-  visit(visit, *node_, false);
+    return pruned ? Visit::prune : Visit::descend;
+  });
   for (auto [n, pruned] : order) {
     // Every mapping is propagated (positions, velocities); only mechanical ones carry forces and dx.
     if (Mapping* m = n->mechanical_mapping) {

@@ -1,6 +1,8 @@
 #include "core/node.h"
 
 #include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace sinew {
 
@@ -14,7 +16,25 @@ Node::Node(std::string n) {
   activated.set_change_hook(&on_scope_field_changed);
   sleeping.set_change_hook(&on_scope_field_changed);
 }
-Node::~Node() = default;
+Node::~Node() {
+  // Links with nodes that outlive this one are undone both ways; the children
+  // this node owns are destroyed with it (owned_), whatever else links them.
+  for (std::size_t i = 1; i < parents_.size(); ++i) {
+    Node* p = parents_[i];
+    std::erase(p->children_, this);
+    if (Node* r = p->root(); r->dag_links_ > 0) --r->dag_links_;
+  }
+  for (Node* c : children_)
+    if (c->parent() != this) c->unlink_parent(this);
+  children_.clear();
+}
+
+void Node::unlink_parent(Node* p) {
+  auto it = std::find(parents_.begin(), parents_.end(), p);
+  if (it == parents_.end()) return;
+  if (Node* r = root(); r->dag_links_ > 0) --r->dag_links_;
+  parents_.erase(it);
+}
 
 StepProfile& Node::profile() {
   Node* r = root();
@@ -32,7 +52,7 @@ bool Node::refuse_if_locked(const std::string& what) {
 
 Node* Node::root() {
   Node* n = this;
-  while (n->parent_) n = n->parent_;
+  while (!n->parents_.empty()) n = n->parents_.front();
   return n;
 }
 
@@ -43,24 +63,60 @@ Diagnostics& Node::diagnostics() {
 }
 
 std::string Node::path() const {
-  if (!parent_) return "/";
-  std::string p = parent_->path();
+  if (parents_.empty()) return "/";
+  std::string p = parents_.front()->path();
   if (p.back() != '/') p += '/';
   return p + name.value();
 }
 
-Node* Node::add_child(std::unique_ptr<Node> child) {
+Node* Node::add_child(std::unique_ptr<Node>&& child) {
   if (!child || refuse_if_locked("add child node '" + (child ? child->name.value() : "") + "'")) return nullptr;
-  child->parent_ = this;
+  if (!child->parents_.empty()) {
+    diagnostics().error(where, "cannot add " + child->describe() + " to " + describe() + ": it already has a parent");
+    return nullptr;
+  }
+  if (root() == child.get()) {  // a root given back to a node of its own graph
+    diagnostics().error(where, "cannot add " + child->describe() + " to " + describe() +
+                                   ": this node is below it (the graph would have a cycle)");
+    return nullptr;
+  }
+  child->parents_.push_back(this);
   // A subtree built on its own had its own root-owned data: messages move to this graph.
   if (child->diagnostics_) {
     for (const Message& m : child->diagnostics_->messages()) diagnostics().add(m.severity, m.where, m.who, m.text);
     child->diagnostics_.reset();
   }
   child->profile_.reset();
-  children_.push_back(std::move(child));
+  root()->dag_links_ += child->dag_links_;
+  child->dag_links_ = 0;
+  Node* raw = child.get();
+  owned_.push_back(std::move(child));
+  children_.push_back(raw);
   bump_structure_version();
-  return children_.back().get();
+  return raw;
+}
+
+bool Node::add_linked_child(Node* child) {
+  if (!child || refuse_if_locked("add child node '" + (child ? child->name.value() : "") + "'")) return false;
+  auto refuse = [&](const std::string& why) {
+    diagnostics().error(where, "cannot add " + child->describe() + " as a child of " + describe() + ": " + why);
+    return false;
+  };
+  if (child->root() != root()) return refuse("it is not in the same graph (add it to a node of this graph first)");
+  if (std::find(children_.begin(), children_.end(), child) != children_.end()) return refuse("it is already one");
+  // A cycle: this node is the child itself or below it.
+  std::vector<const Node*> stack{child};
+  while (!stack.empty()) {
+    const Node* n = stack.back();
+    stack.pop_back();
+    if (n == this) return refuse("this node is below it (the graph would have a cycle)");
+    stack.insert(stack.end(), n->children_.begin(), n->children_.end());
+  }
+  child->parents_.push_back(this);
+  children_.push_back(child);
+  ++root()->dag_links_;
+  bump_structure_version();
+  return true;
 }
 
 namespace {
@@ -72,7 +128,7 @@ void warn_replaced(Node& node, T* previous, Component* c, const char* what) {
 }
 }  // namespace
 
-Component* Node::add_object(std::unique_ptr<Component> c, bool at_front) {
+Component* Node::add_object(std::unique_ptr<Component>&& c, bool at_front) {
   if (!c || refuse_if_locked("add " + (c ? c->describe() : std::string("a component")))) return nullptr;
   bump_structure_version();
   Component* raw = c.get();
@@ -131,11 +187,12 @@ void Node::unfile(Component* c) {
 
 namespace {
 
-// Everything in a subtree: the nodes and their components.
+// Everything a subtree owns: the nodes and their components.
 void collect_subtree(Node& n, std::vector<const Base*>& out) {
   out.push_back(&n);
   for (auto& o : n.objects()) out.push_back(o.get());
-  for (auto& c : n.children()) collect_subtree(*c, out);
+  for (Node* c : n.children())
+    if (n.owns(c)) collect_subtree(*c, out);
 }
 
 // Cuts every link and data link from the rest of the graph into `gone`.
@@ -165,7 +222,8 @@ void cut_links_into(Node& root, const std::vector<const Base*>& gone) {
             }
           }
     }
-    for (auto& c : n.children()) self(self, *c);
+    for (Node* c : n.children())
+      if (n.owns(c)) self(self, *c);
   };
   visit(visit, root);
 }
@@ -207,29 +265,65 @@ void Node::move_to_end(Component* c) {
 }
 
 std::unique_ptr<Node> Node::remove_child(Node* child) {
-  auto it = std::find_if(children_.begin(), children_.end(), [child](auto& n) { return n.get() == child; });
+  auto it = std::find(children_.begin(), children_.end(), child);
   if (it == children_.end() || refuse_if_locked("remove child " + child->describe())) return nullptr;
-  std::unique_ptr<Node> out = std::move(*it);
   children_.erase(it);
-  std::vector<const Base*> gone;
-  collect_subtree(*out, gone);
-  cut_links_into(*root(), gone);
-  out->parent_ = nullptr;
   bump_structure_version();
+  if (!owns(child)) {  // a linked child: only the link goes
+    child->unlink_parent(this);
+    return nullptr;
+  }
+  auto own = std::find_if(owned_.begin(), owned_.end(), [child](auto& n) { return n.get() == child; });
+  std::unique_ptr<Node> out = std::move(*own);
+  owned_.erase(own);
+  if (child->parents_.size() > 1) {  // the next parent becomes the owner
+    Node* heir = child->parents_[1];
+    child->unlink_parent(this);
+    heir->owned_.push_back(std::move(out));
+    return nullptr;
+  }
+  // The subtree leaves as a tree: parent links across its border are cut both ways.
+  std::vector<const Base*> gone;
+  collect_subtree(*child, gone);
+  std::unordered_set<const Base*> inside(gone.begin(), gone.end());
+  Node* r = root();
+  for (const Base* b : gone) {
+    auto* n = dynamic_cast<Node*>(const_cast<Base*>(b));
+    if (!n) continue;
+    for (std::size_t i = n->parents_.size(); i-- > 1;)
+      if (!inside.contains(n->parents_[i])) {
+        std::erase(n->parents_[i]->children_, n);
+        n->parents_.erase(n->parents_.begin() + static_cast<std::ptrdiff_t>(i));
+        if (r->dag_links_ > 0) --r->dag_links_;
+      }
+    for (std::size_t i = n->children_.size(); i-- > 0;)
+      if (Node* c = n->children_[i]; !inside.contains(c)) {
+        n->children_.erase(n->children_.begin() + static_cast<std::ptrdiff_t>(i));
+        c->unlink_parent(n);
+      }
+  }
+  // Links inside the leaving subtree go with it.
+  std::size_t inner = 0;
+  for (const Base* b : gone)
+    if (auto* n = dynamic_cast<const Node*>(b)) inner += n->parents_.size() > 1 ? n->parents_.size() - 1 : 0;
+  r->dag_links_ -= std::min(r->dag_links_, inner);
+  child->dag_links_ = inner;
+  cut_links_into(*r, gone);
+  child->parents_.clear();
   return out;
 }
 
 MechanicalState* Node::get_mechanical_state() const {
   if (mechanical_state) return mechanical_state;
-  for (const Node* n = parent_; n; n = n->parent_)
-    if (auto* s = n->find_local<MechanicalState>()) return s;
+  for (const Node* p : parents_)
+    if (auto* s = p->find_up<MechanicalState>()) return s;
   return nullptr;
 }
 
 MeshTopologyBase* Node::get_mesh_topology_link() const {
   if (mesh_topology) return mesh_topology;
-  for (const Node* n = parent_; n; n = n->parent_)
-    if (auto* t = n->find_local<MeshTopologyBase>()) return t;
+  for (const Node* p : parents_)
+    if (auto* t = p->find_up<MeshTopologyBase>()) return t;
   return nullptr;
 }
 
@@ -240,25 +334,95 @@ Component* Node::find_object_named(std::string_view n) const {
 }
 
 Node* Node::find_child_named(std::string_view n) const {
-  for (auto& c : children_)
-    if (c->name.value() == n) return c.get();
+  for (Node* c : children_)
+    if (c->name.value() == n) return c;
   return nullptr;
 }
 
 void Node::update_context() {
-  if (parent_) {
+  if (Node* p = parent()) {
     // Child nodes' own dt/gravity are overwritten by the parent's (trap T3).
-    dt.set(parent_->dt.value());
-    gravity.set(parent_->gravity.value());
-    time.set(parent_->time.value());
+    dt.set(p->dt.value());
+    gravity.set(p->gravity.value());
+    time.set(p->time.value());
   }
   for (ContextObject* co : context_objects) co->apply(*this);
 }
 
-void for_each_node(Node& root, const std::function<void(Node&)>& f) {
-  if (!root.activated.value()) return;
-  f(root);
-  for (std::size_t i = 0; i < root.children().size(); ++i) for_each_node(*root.children()[i], f);
+bool graph_has_links(const Node& n) {
+  const Node* r = &n;
+  while (!r->parents_.empty()) r = r->parents_.front();
+  return r->dag_links_ > 0;
+}
+
+namespace {
+
+using Down = FunctionRef<Visit(Node&, bool)>;
+using Up = FunctionRef<void(Node&)>;
+
+// Trees: plain recursion. Children are read by index, so nodes added during
+// the traversal (by init, by an event handler) are reached too.
+void walk_tree(Node& n, bool pruned, Down down, Up up) {
+  const Visit v = down(n, pruned);
+  if (v == Visit::skip) return;
+  pruned = pruned || v == Visit::prune;
+  for (std::size_t i = 0; i < n.children().size(); ++i) walk_tree(*n.children()[i], pruned, down, up);
+  if (up) up(n);
+}
+
+// DAGs: SOFA's status map. A node waits for all of its parents inside the
+// traversal; it is pruned when they all are.
+struct DagWalk {
+  Down down;
+  Up up;
+  Node* top;
+  std::unordered_set<const Node*> inside;
+  std::unordered_map<const Node*, bool> pruned;  // visited nodes → pruned
+
+  void walk(Node& n) {
+    if (pruned.contains(&n)) return;
+    bool all_pruned = true, has_parent = false;
+    if (&n != top) {
+      for (const Node* p : n.parents()) {
+        if (!inside.contains(p)) continue;
+        auto it = pruned.find(p);
+        if (it == pruned.end()) return;  // the last parent to be visited brings it
+        all_pruned = all_pruned && it->second;
+        has_parent = true;
+      }
+    }
+    const bool inherited = all_pruned && has_parent;
+    const Visit v = down(n, inherited);
+    pruned[&n] = inherited || v != Visit::descend;
+    if (v == Visit::skip) return;
+    for (std::size_t i = 0; i < n.children().size(); ++i) walk(*n.children()[i]);
+    if (up) up(n);
+  }
+};
+
+}  // namespace
+
+void traverse(Node& top, Down down, Up up) {
+  if (!graph_has_links(top)) {
+    walk_tree(top, false, down, up);
+    return;
+  }
+  DagWalk w{down, up, &top, {}, {}};
+  std::vector<const Node*> stack{&top};
+  while (!stack.empty()) {
+    const Node* n = stack.back();
+    stack.pop_back();
+    if (w.inside.insert(n).second) stack.insert(stack.end(), n->children().begin(), n->children().end());
+  }
+  w.walk(top);
+}
+
+void for_each_node(Node& root, FunctionRef<void(Node&)> f) {
+  traverse(root, [&](Node& n, bool) {
+    if (!n.activated.value()) return Visit::skip;
+    f(n);
+    return Visit::descend;
+  });
 }
 
 }  // namespace sinew

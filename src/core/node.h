@@ -4,6 +4,12 @@
 // §3.1): single slots hold the last inserted component of that role, lists
 // keep insertion order. The context (dt, gravity, time) is copied from the
 // root at init and every step.
+//
+// The graph is a DAG, as SOFA's: a node may be the child of several nodes
+// (SofaPython3 scenes do `simulation.addChild(modelling)` to put a subtree
+// that lives elsewhere under a solver). Its first parent owns it and gives it
+// its context, path and root; the others only link to it. Traversals visit
+// such a node once, after all of its parents (traverse() below).
 #pragma once
 
 #include <functional>
@@ -13,6 +19,7 @@
 
 #include "core/base.h"
 #include "core/field.h"
+#include "core/function_ref.h"
 #include "core/constraint_problem.h"
 #include "core/profile.h"
 #include "core/roles.h"
@@ -42,23 +49,43 @@ class Node final : public Base {
   std::string describe() const override { return "node '" + name.value() + "'"; }
 
   // ------------------------------------------------------------ structure
-  Node* parent() const { return parent_; }
+  // The first parent (the owner), nullptr for a root.
+  Node* parent() const { return parents_.empty() ? nullptr : parents_.front(); }
+  // Every parent, the owner first, then the nodes that linked this one as a child.
+  const std::vector<Node*>& parents() const { return parents_; }
   Node* root();
-  const std::vector<std::unique_ptr<Node>>& children() const { return children_; }
+  // Children in insertion order: the ones this node owns and the ones it links.
+  const std::vector<Node*>& children() const { return children_; }
+  // Whether this node owns `child` (is its first parent).
+  bool owns(const Node* child) const { return child && child->parent() == this; }
   const std::vector<std::unique_ptr<Component>>& objects() const { return objects_; }
   // Structural edits. Each bumps the root's structure version. While the
   // graph is locked (the mechanical stages of a step) they are refused: an
   // error is reported and nullptr returned, the graph is left unchanged.
-  Node* add_child(std::unique_ptr<Node> child);
+  // Additions take ownership only when they succeed: on refusal the caller's
+  // pointer still holds the node or component (when it is a unique_ptr<Node>
+  // or unique_ptr<Component> itself: one of a derived type converts to a
+  // temporary, which is destroyed).
+  Node* add_child(std::unique_ptr<Node>&& child);
+  // Adds `child`, a node of this same graph, as a further child: it keeps its
+  // owner and gains this node as a parent (SOFA's addChild of a node that
+  // already has one). Refused with an error (false) when it would make a
+  // cycle, when `child` is already a child of this node or in another graph.
+  bool add_linked_child(Node* child);
   // Inserts a component at the end (or at the front) and files it in its slots.
-  Component* add_object(std::unique_ptr<Component> c, bool at_front = false);
+  Component* add_object(std::unique_ptr<Component>&& c, bool at_front = false);
   // Takes a component out of this node: unfiled from its slots (a single slot
   // that held it becomes empty, as in SOFA), links and data links elsewhere in
   // the graph that pointed to it are cut (their components are told, and
   // become invalid when the link was required). Returns the component (nullptr
   // when it is not an object of this node or the graph is locked).
   std::unique_ptr<Component> remove_object(Component* c);
-  // Takes a child node (and its subtree) out; links into the subtree are cut as above.
+  // Takes a child node out of this node. When the child has other parents it
+  // stays in the graph under them (the next parent becomes its owner) and
+  // nullptr is returned. Otherwise its subtree leaves the graph and is
+  // returned: links into it are cut as above, and so are the parent links
+  // between the subtree and the rest of the graph (it leaves as a tree).
+  // nullptr too when `child` is not a child of this node or the graph is locked.
   std::unique_ptr<Node> remove_child(Node* child);
   // Moves an object to the end of the object list and of its slot lists, as
   // if removed and added again, without cutting links (a contact response is
@@ -99,11 +126,12 @@ class Node final : public Base {
       if (auto* t = dynamic_cast<T*>(o.get())) return t;
     return nullptr;
   }
-  // First in this node, then ancestors.
+  // First in this node, then its parents in order, each searched upwards (SOFA's SearchUp).
   template <class T>
   T* find_up() const {
-    for (const Node* n = this; n; n = n->parent_)
-      if (T* t = n->find_local<T>()) return t;
+    if (T* t = find_local<T>()) return t;
+    for (const Node* p : parents_)
+      if (T* t = p->find_up<T>()) return t;
     return nullptr;
   }
   // First in this node, then children depth-first.
@@ -114,18 +142,15 @@ class Node final : public Base {
       if (T* t = c->find_down<T>()) return t;
     return nullptr;
   }
-  // Objects of type T in this subtree, top-down (node objects in order, then children).
+  // Objects of type T in this subtree, each once, top-down in traverse() order
+  // (node objects in order, then children), inactive nodes included.
   template <class T>
-  void collect_down(std::vector<T*>& out) const {
-    for (auto& o : objects_)
-      if (auto* t = dynamic_cast<T*>(o.get())) out.push_back(t);
-    for (auto& c : children_) c->collect_down(out);
-  }
+  void collect_down(std::vector<T*>& out) const;
   Component* find_object_named(std::string_view n) const;
   Node* find_child_named(std::string_view n) const;
 
   // ------------------------------------------------------------ context
-  // Copies dt, gravity and time from the parent, then applies context objects.
+  // Copies dt, gravity and time from the first parent, then applies context objects.
   void update_context();
   // Diagnostics sink of the whole graph (owned by the root).
   Diagnostics& diagnostics();
@@ -153,8 +178,10 @@ class Node final : public Base {
   // writes caches such as PrecomputedConstraintCorrection's compliance).
   std::vector<std::string> data_dirs;
  private:
-  Node* parent_ = nullptr;
-  std::vector<std::unique_ptr<Node>> children_;
+  std::vector<Node*> parents_;                  // owner first
+  std::vector<Node*> children_;                 // owned and linked, in insertion order
+  std::vector<std::unique_ptr<Node>> owned_;    // the children this node owns
+  std::size_t dag_links_ = 0;                   // root only: parent links beyond the owners
   std::vector<std::unique_ptr<Component>> objects_;
   std::map<std::string, int> default_names_;
   std::unique_ptr<Diagnostics> diagnostics_;  // root only
@@ -165,9 +192,43 @@ class Node final : public Base {
 
   bool refuse_if_locked(const std::string& what);
   void unfile(Component* c);
+  void unlink_parent(Node* p);
+  friend bool graph_has_links(const Node& n);
 };
 
-// Depth-first pre-order over active nodes (SOFA's DAG order for trees).
-void for_each_node(Node& root, const std::function<void(Node&)>& f);
+// ------------------------------------------------------------ traversal
+
+// What a traversal callback asks for a node (SOFA's visitor results).
+enum class Visit : unsigned char {
+  descend,  // go on into the children
+  prune,    // the children see this node as pruned (they are still reached)
+  skip,     // stop here: the children are not reached from this node (inactive, asleep)
+};
+
+// Top-down over `top` and the nodes below it in SOFA's order for a DAG
+// (Node::executeVisitorTopDown): depth-first, children in order; a node with
+// several parents is visited once, when the last of its parents below `top`
+// was (parents outside `top`'s subtree are ignored). `down(node, pruned)` is
+// called for every node reached; `pruned` is true when all of its parents in
+// the traversal pruned it (SOFA does not execute such a node but goes on to
+// its children, which may have an unpruned parent elsewhere). `up(node)`, when
+// given, runs after the node's children (not for skipped nodes). For a tree
+// this is plain pre-order and allocates nothing.
+void traverse(Node& top, FunctionRef<Visit(Node&, bool pruned)> down, FunctionRef<void(Node&)> up = {});
+
+// Pre-order over active nodes, each once (SOFA's DAG order; for trees, depth-first pre-order).
+void for_each_node(Node& root, FunctionRef<void(Node&)> f);
+
+// Whether some node of `n`'s graph has several parents.
+bool graph_has_links(const Node& n);
+
+template <class T>
+void Node::collect_down(std::vector<T*>& out) const {
+  traverse(const_cast<Node&>(*this), [&](Node& n, bool) {
+    for (auto& o : n.objects_)
+      if (auto* t = dynamic_cast<T*>(o.get())) out.push_back(t);
+    return Visit::descend;
+  });
+}
 
 }  // namespace sinew

@@ -11,43 +11,50 @@ namespace sinew {
 
 namespace {
 
-// Init top-down in node order; components already initialised are left alone.
-// New nodes are collected for the projection that follows.
-void init_node(Node& node, std::vector<Node*>& new_nodes, std::vector<Component*>& fresh) {
-  if (!node.activated.value()) return;  // inactive subtrees are not even initialised
-  if (!node.initialised) {
-    node.initialised = true;
-    new_nodes.push_back(&node);
-  }
-  node.update_context();
-  // Objects added during this loop (e.g. helper objects) are initialised too.
-  for (std::size_t i = 0; i < node.objects().size(); ++i) {
-    Component* c = node.objects()[i].get();
-    if (c->initialised()) continue;
-    c->mark_initialised();
-    c->init();
-    fresh.push_back(c);
-  }
-  for (std::size_t i = 0; i < node.children().size(); ++i) init_node(*node.children()[i], new_nodes, fresh);
+// Init top-down in traversal order; components already initialised are left
+// alone. Inactive subtrees are not even initialised. New nodes are collected
+// for the projection that follows; `order` receives the nodes visited, for
+// bwd_init in reverse.
+void init_nodes(Node& root, std::vector<Node*>& new_nodes, std::vector<Component*>& fresh, std::vector<Node*>& order) {
+  traverse(root, [&](Node& node, bool) {
+    if (!node.activated.value()) return Visit::skip;
+    if (!node.initialised) {
+      node.initialised = true;
+      new_nodes.push_back(&node);
+    }
+    order.push_back(&node);
+    node.update_context();
+    // Objects added during this loop (e.g. helper objects) are initialised too.
+    for (std::size_t i = 0; i < node.objects().size(); ++i) {
+      Component* c = node.objects()[i].get();
+      if (c->initialised()) continue;
+      c->mark_initialised();
+      c->init();
+      fresh.push_back(c);
+    }
+    return Visit::descend;
+  });
 }
 
-// bwd_init bottom-up in reverse order, on the components init_node just initialised (sorted).
-void bwd_init_node(Node& node, const std::vector<Component*>& fresh) {
-  if (!node.activated.value()) return;
-  for (std::size_t i = node.children().size(); i-- > 0;) bwd_init_node(*node.children()[i], fresh);
-  for (std::size_t i = node.objects().size(); i-- > 0;) {
-    Component* c = node.objects()[i].get();
-    if (std::binary_search(fresh.begin(), fresh.end(), c)) c->bwd_init();
+// bwd_init bottom-up (the reverse of the init order, objects in reverse), on
+// the components init_nodes just initialised (sorted).
+void bwd_init_nodes(const std::vector<Node*>& order, const std::vector<Component*>& fresh) {
+  for (std::size_t k = order.size(); k-- > 0;) {
+    Node& node = *order[k];
+    for (std::size_t i = node.objects().size(); i-- > 0;) {
+      Component* c = node.objects()[i].get();
+      if (std::binary_search(fresh.begin(), fresh.end(), c)) c->bwd_init();
+    }
   }
 }
 
 // Init then bwd_init of everything not initialised yet; returns the new nodes.
 std::vector<Node*> init_fresh(Node& root) {
-  std::vector<Node*> new_nodes;
+  std::vector<Node*> new_nodes, order;
   std::vector<Component*> fresh;
-  init_node(root, new_nodes, fresh);
+  init_nodes(root, new_nodes, fresh, order);
   std::sort(fresh.begin(), fresh.end());
-  bwd_init_node(root, fresh);
+  bwd_init_nodes(order, fresh);
   return new_nodes;
 }
 
@@ -60,13 +67,16 @@ void store_reset(Node& node) {
 }  // namespace
 
 void propagate_event(Node& root, Event& e) {
-  if (!root.activated.value()) return;
-  for (std::size_t i = 0; i < root.objects().size(); ++i) {
-    Component* c = root.objects()[i].get();
-    if (c->wants_events()) c->handle_event(e);
-  }
-  if (e.handled) return;
-  for (std::size_t i = 0; i < root.children().size(); ++i) propagate_event(*root.children()[i], e);
+  // A handled event goes no further down that branch (SOFA's PropagateEventVisitor prunes).
+  traverse(root, [&](Node& n, bool pruned) {
+    if (!n.activated.value()) return Visit::skip;
+    if (pruned) return Visit::prune;
+    for (std::size_t i = 0; i < n.objects().size(); ++i) {
+      Component* c = n.objects()[i].get();
+      if (c->wants_events()) c->handle_event(e);
+    }
+    return e.handled ? Visit::prune : Visit::descend;
+  });
 }
 
 void project_and_propagate(Node& root, double t) {

@@ -41,7 +41,7 @@ const BaseCamera* find_camera(const Node& node) {
   for (const auto& o : node.objects())
     if (const auto* c = dynamic_cast<const BaseCamera*>(o.get()))
       if (c->activated.get() && c->state() == ComponentState::valid) return c;
-  for (const auto& child : node.children())
+  for (const Node* child : node.children())
     if (const BaseCamera* c = find_camera(*child)) return c;
   return nullptr;
 }

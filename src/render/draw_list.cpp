@@ -200,9 +200,16 @@ void add_points(DrawList& list, const MechanicalState& state) {
   grow_bounds(list, b.positions);
 }
 
+// SOFA's visual traversal (tree order without repetition): a node is drawn
+// once, reached through the first of its parents visited, with that parent's
+// display flags. `seen` lists the nodes with several parents already drawn.
 void visit(Node& node, const DisplayFlags& inherited, DrawList& list, std::vector<float>& scratch,
-           std::vector<const MechanicalState*>& deferred) {
+           std::vector<const MechanicalState*>& deferred, std::vector<const Node*>& seen) {
   if (!node.activated.value()) return;
+  if (node.parents().size() > 1) {
+    if (std::find(seen.begin(), seen.end(), &node) != seen.end()) return;
+    seen.push_back(&node);
+  }
   DisplayFlags flags = inherited;
   for (const auto& o : node.objects())
     if (const auto* s = dynamic_cast<const VisualStyle*>(o.get())) flags = flags.merged(s->flags());
@@ -232,7 +239,7 @@ void visit(Node& node, const DisplayFlags& inherited, DrawList& list, std::vecto
       else deferred.push_back(state);
     }
   }
-  for (const auto& child : node.children()) visit(*child, flags, list, scratch, deferred);
+  for (Node* child : node.children()) visit(*child, flags, list, scratch, deferred, seen);
 }
 
 }  // namespace
@@ -285,8 +292,10 @@ void gather(Node& root, DrawList& out) {
   out.has_bounds = false;
   thread_local std::vector<float> scratch;
   thread_local std::vector<const MechanicalState*> deferred;
+  thread_local std::vector<const Node*> seen;
   deferred.clear();
-  visit(root, DisplayFlags::viewer_defaults(), out, scratch, deferred);
+  seen.clear();
+  visit(root, DisplayFlags::viewer_defaults(), out, scratch, deferred, seen);
   bool surfaces = false;
   for (std::size_t i = 0; i < out.used; ++i) surfaces |= out.batches[i].kind == Batch::Kind::triangles;
   if (!surfaces)

@@ -1,5 +1,7 @@
 #include "runner/probes.h"
 
+#include <unordered_map>
+
 #include "regression/state_file.h"
 #include "regression/topology_file.h"
 
@@ -12,34 +14,49 @@ bool has_mapping(const Node& n) {
   return n.find_local<Mapping>() != nullptr;
 }
 
-void select_states_rec(Node& n, bool solver_above, bool mapping_above, bool mapped, std::vector<StateTarget>& out) {
-  if (!n.activated.value()) return;
-  const bool solver = solver_above || !n.solvers.empty();
-  const bool mapping = mapping_above || has_mapping(n);
-  if (n.mechanical_state && solver && (mapped || !mapping))
-    out.push_back({&n, n.mechanical_state, static_cast<int>(out.size()), n.mechanical_state->name.value()});
-  for (auto& c : n.children()) select_states_rec(*c, solver, mapping, mapped, out);
-}
+// What a node inherits from the nodes above it (through every parent, in a DAG).
+struct Above {
+  bool solver = false;
+  bool mapping = false;
+};
 
-void select_topologies_rec(Node& n, bool mapping_above, bool mapped, std::vector<TopologyTarget>& out) {
-  if (!n.activated.value()) return;
-  const bool mapping = mapping_above || has_mapping(n);
-  if (auto* t = n.find_local<MeshTopologyBase>(); t && (mapped || !mapping))
-    out.push_back({&n, t, static_cast<int>(out.size()), t->name.value()});
-  for (auto& c : n.children()) select_topologies_rec(*c, mapping, mapped, out);
+// Visits the active nodes top-down with what is above each (its own solver and mapping included).
+template <class F>
+void visit_with_above(Node& root, F&& f) {
+  std::unordered_map<const Node*, Above> above;
+  traverse(root, [&](Node& n, bool) {
+    if (!n.activated.value()) return Visit::skip;
+    Above a;
+    for (const Node* p : n.parents())
+      if (auto it = above.find(p); it != above.end()) {
+        a.solver = a.solver || it->second.solver;
+        a.mapping = a.mapping || it->second.mapping;
+      }
+    a.solver = a.solver || !n.solvers.empty();
+    a.mapping = a.mapping || has_mapping(n);
+    above[&n] = a;
+    f(n, a);
+    return Visit::descend;
+  });
 }
 
 }  // namespace
 
 std::vector<StateTarget> select_states(Node& root, bool mapped) {
   std::vector<StateTarget> out;
-  select_states_rec(root, false, false, mapped, out);
+  visit_with_above(root, [&](Node& n, const Above& a) {
+    if (n.mechanical_state && a.solver && (mapped || !a.mapping))
+      out.push_back({&n, n.mechanical_state, static_cast<int>(out.size()), n.mechanical_state->name.value()});
+  });
   return out;
 }
 
 std::vector<TopologyTarget> select_topologies(Node& root, bool mapped) {
   std::vector<TopologyTarget> out;
-  select_topologies_rec(root, false, mapped, out);
+  visit_with_above(root, [&](Node& n, const Above& a) {
+    if (auto* t = n.find_local<MeshTopologyBase>(); t && (mapped || !a.mapping))
+      out.push_back({&n, t, static_cast<int>(out.size()), t->name.value()});
+  });
   return out;
 }
 

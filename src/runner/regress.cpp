@@ -9,6 +9,7 @@
 #include <cstring>
 #include <cstdlib>
 #include <map>
+#include <unordered_map>
 #include <sstream>
 
 #include "regression/state_file.h"
@@ -44,17 +45,20 @@ template <class Probe, class ErrorOf>
 double aggregate(Node& root, ErrorOf error_of) {
   double sum = 0;
   int count = 0;
-  auto rec = [&](auto&& self, Node& n, Probe* inherited) -> void {
-    if (!n.activated.value()) return;
-    Probe* mine = inherited;
-    if (Probe* p = n.find_local<Probe>()) mine = p;
+  // In a DAG a node takes the comparer of its first parent that has one.
+  std::unordered_map<const Node*, Probe*> taken;
+  traverse(root, [&](Node& n, bool) {
+    if (!n.activated.value()) return Visit::skip;
+    Probe* mine = n.find_local<Probe>();
+    for (const Node* p : n.parents())
+      if (auto it = taken.find(p); !mine && it != taken.end()) mine = it->second;
+    taken[&n] = mine;
     if (mine) {
       sum += error_of(*mine);
       ++count;
     }
-    for (auto& c : n.children()) self(self, *c, mine);
-  };
-  rec(rec, root, nullptr);
+    return Visit::descend;
+  });
   return count == 0 ? std::numeric_limits<double>::quiet_NaN() : sum / count;
 }
 

@@ -17,6 +17,14 @@ ForceFieldVec6d = _sinew.ForceFieldVec6d
 ForceFieldRigid2d = _sinew.ForceFieldRigid2d
 ForceFieldRigid3d = _sinew.ForceFieldRigid3d
 TaskScheduler = _sinew.TaskScheduler
+LinkPath = _sinew.LinkPath
+BaseMass = _sinew.BaseMass
+
+# SofaPython3's Mapping_<In>_<Out> and Mass<T> classes, as many as the module defines.
+for _name in dir(_sinew):
+    if _name.startswith("Mapping_") or (_name.startswith("Mass") and _name != "Mass"):
+        globals()[_name] = getattr(_sinew, _name)
+del _name
 
 
 class ClassEntry:

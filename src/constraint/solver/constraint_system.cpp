@@ -11,11 +11,13 @@ namespace {
 
 bool usable(const Component& c) { return c.state() == ComponentState::valid; }
 
-void gather(Node& n, ConstraintScope& s) {
-  if (!n.activated.value() || n.sleeping.value()) return;
-  for (LagrangianConstraint* c : n.lagrangian_constraints) s.constraints.push_back(c);
-  for (ConstraintCorrection* c : n.constraint_corrections) s.corrections.push_back(c);
-  for (auto& child : n.children()) gather(*child, s);
+void gather(Node& root, ConstraintScope& s) {
+  traverse(root, [&](Node& n, bool) {
+    if (!n.activated.value() || n.sleeping.value()) return Visit::skip;
+    for (LagrangianConstraint* c : n.lagrangian_constraints) s.constraints.push_back(c);
+    for (ConstraintCorrection* c : n.constraint_corrections) s.corrections.push_back(c);
+    return Visit::descend;
+  });
 }
 
 }  // namespace

@@ -71,35 +71,47 @@ void PointSetTopologyModifier::warn(TopologyChange change) {
 
 namespace {
 // SOFA's TopologyChangeVisitor, top-down from the modifier's node.
-void visit_topology_change(Node& n, MeshTopologyBase& source) {
-  for (const auto& o : n.objects())
-    if (auto* tm = dynamic_cast<TopologicalMapping*>(o.get()); tm && tm->input.get() == &source)
-      tm->update_top_down();
-  for (const auto& o : n.objects()) o->handle_topology_change(source);
-  for (const auto& c : n.children()) visit_topology_change(*c, source);
-  // SOFA's TopologyChangeVisitor::processNodeBottomUp: mappings whose output is the source.
-  for (const auto& o : n.objects())
-    if (auto* tm = dynamic_cast<TopologicalMapping*>(o.get());
-        tm && tm->output.get() && static_cast<MeshTopologyBase*>(tm->output.get()) == &source)
-      tm->update_bottom_up();
+void visit_topology_change(Node& top, MeshTopologyBase& source) {
+  traverse(
+      top,
+      [&](Node& n, bool) {
+        for (const auto& o : n.objects())
+          if (auto* tm = dynamic_cast<TopologicalMapping*>(o.get()); tm && tm->input.get() == &source)
+            tm->update_top_down();
+        for (const auto& o : n.objects()) o->handle_topology_change(source);
+        return Visit::descend;
+      },
+      // SOFA's TopologyChangeVisitor::processNodeBottomUp: mappings whose output is the source.
+      [&](Node& n) {
+        for (const auto& o : n.objects())
+          if (auto* tm = dynamic_cast<TopologicalMapping*>(o.get());
+              tm && tm->output.get() && static_cast<MeshTopologyBase*>(tm->output.get()) == &source)
+            tm->update_bottom_up();
+      });
 }
 
 // SOFA's StateChangeVisitor: the states of the subtree whose topology is `source` lose the
 // points; a node under a mapping that does not keep the points (not sameTopology) is pruned.
-void visit_state_change(Node& n, bool root, MeshTopologyBase& source, const std::vector<unsigned>& decreasing) {
-  if (!root && n.mechanical_mapping && !n.mechanical_mapping->same_topology()) return;
-  if (n.mechanical_state && n.get_mesh_topology_link() == &source) n.mechanical_state->remove_points(decreasing);
-  for (const auto& c : n.children()) visit_state_change(*c, false, source, decreasing);
+// Each state once (traverse()); `f` runs on the states reached.
+template <class F>
+void visit_states(Node& top, MeshTopologyBase& source, F&& f) {
+  traverse(top, [&](Node& n, bool pruned) {
+    if (pruned) return Visit::prune;
+    if (&n != &top && n.mechanical_mapping && !n.mechanical_mapping->same_topology()) return Visit::prune;
+    if (n.mechanical_state && n.get_mesh_topology_link() == &source) f(*n.mechanical_state);
+    return Visit::descend;
+  });
+}
+
+void visit_state_change(Node& top, MeshTopologyBase& source, const std::vector<unsigned>& decreasing) {
+  visit_states(top, source, [&](MechanicalState& s) { s.remove_points(decreasing); });
 }
 
 // The same visit for point additions.
-void visit_state_add(Node& n, bool root, MeshTopologyBase& source, unsigned count,
+void visit_state_add(Node& top, MeshTopologyBase& source, unsigned count,
                      const std::vector<std::vector<unsigned>>& ancestors,
                      const std::vector<std::vector<double>>& coefficients) {
-  if (!root && n.mechanical_mapping && !n.mechanical_mapping->same_topology()) return;
-  if (n.mechanical_state && n.get_mesh_topology_link() == &source)
-    n.mechanical_state->add_points(count, ancestors, coefficients);
-  for (const auto& c : n.children()) visit_state_add(*c, false, source, count, ancestors, coefficients);
+  visit_states(top, source, [&](MechanicalState& s) { s.add_points(count, ancestors, coefficients); });
 }
 }  // namespace
 
@@ -123,7 +135,7 @@ bool PointSetTopologyModifier::add_points(unsigned n, std::vector<std::vector<un
   topo::DynamicMesh& m = c.begin_edit();
   topo::add_points_process(m, n);
   c.end_edit(false, false, false);
-  if (add_dof && node()) visit_state_add(*node(), true, c, n, ancestors, coefficients);
+  if (add_dof && node()) visit_state_add(*node(), c, n, ancestors, coefficients);
   TopologyChange added{TopologyChangeType::points_added, {}, std::move(ancestors), std::move(coefficients)};
   for (unsigned i = 0; i < n; ++i) added.indices.push_back(before + i);
   warn(std::move(added));
@@ -137,15 +149,13 @@ namespace {
 // new values are appended (add_points interpolates every allocated vector) and the moved slots
 // removed: removal moves the last DoF into each slot in decreasing order, so appending in
 // increasing slot order puts each value in its slot.
-void visit_state_move(Node& n, bool root, MeshTopologyBase& source, const std::vector<unsigned>& increasing,
+void visit_state_move(Node& top, MeshTopologyBase& source, const std::vector<unsigned>& increasing,
                       const std::vector<std::vector<unsigned>>& ancestors,
                       const std::vector<std::vector<double>>& coefficients) {
-  if (!root && n.mechanical_mapping && !n.mechanical_mapping->same_topology()) return;
-  if (n.mechanical_state && n.get_mesh_topology_link() == &source) {
-    n.mechanical_state->add_points(increasing.size(), ancestors, coefficients);
-    n.mechanical_state->remove_points(std::vector<unsigned>(increasing.rbegin(), increasing.rend()));
-  }
-  for (const auto& c : n.children()) visit_state_move(*c, false, source, increasing, ancestors, coefficients);
+  visit_states(top, source, [&](MechanicalState& s) {
+    s.add_points(increasing.size(), ancestors, coefficients);
+    s.remove_points(std::vector<unsigned>(increasing.rbegin(), increasing.rend()));
+  });
 }
 
 }  // namespace
@@ -179,7 +189,7 @@ bool PointSetTopologyModifier::move_points(const std::vector<unsigned>& ids,
     anc.push_back(ancestors[k]);
     coef.push_back(coefficients[k]);
   }
-  visit_state_move(*node(), true, *container_, increasing, anc, coef);
+  visit_state_move(*node(), *container_, increasing, anc, coef);
   return true;
 }
 
@@ -219,7 +229,7 @@ void PointSetTopologyModifier::remove_points_process(const std::vector<unsigned>
   topo::remove_points_process(m, decreasing);
   c.end_edit(!m.edges->empty(), !m.triangles->empty(), !m.tetrahedra->empty(), !m.quads->empty(),
              !m.hexahedra->empty());
-  if (remove_dof && node()) visit_state_change(*node(), true, c, decreasing);
+  if (remove_dof && node()) visit_state_change(*node(), c, decreasing);
 }
 
 void PointSetTopologyModifier::remove_points(std::vector<unsigned> ids, bool remove_dof) {
