@@ -36,6 +36,13 @@ std::string executable_dir() {
 
 void ensure_interpreter() {
   if (Py_IsInitialized()) return;
+  // UTF-8 mode (PEP 540), as python3 itself runs under a C or C.UTF-8 locale:
+  // an embedding program does not set its locale, and Python would otherwise
+  // print through ASCII (SofaPython3's examples print emoji).
+  PyPreConfig pre;
+  PyPreConfig_InitPythonConfig(&pre);
+  pre.utf8_mode = 1;
+  if (PyStatus st = Py_PreInitialize(&pre); PyStatus_Exception(st)) Py_ExitStatusException(st);
   py::initialize_interpreter();
   {
     py::module_ sys = py::module_::import("sys");

@@ -5,8 +5,7 @@ import sys
 
 import pytest
 
-# Scenes that need no GUI and no plugin outside SOFA. The ones not listed at all
-# need Python mappings on a graph with two parents per node (example-mapping*).
+# Scenes that need no GUI and no plugin outside SOFA.
 SCENES = [
     "basic", "emptyController", "emptyDataEngine", "emptyForceField", "example-forcefield",
     "example-scriptcontroller", "liver", "liver-scriptcontroller", "loadXMLfromPython",
@@ -14,6 +13,7 @@ SCENES = [
     "pointSetTopologyModifier", "ReadTheDocs_Example", "MessageHandler", "keyEvents", "scene_check",
     "import_python_scene",
     "springForceField", "access_mass_matrix", "access_matrix", "access_compliance_matrix", "access_contact_forces",
+    "example-mapping", "example-mapping_3_to_1",
 ]
 # Listed by issue 12 and not running yet: what each one lacks. Strict: a scene that
 # starts to run fails here until it moves to SCENES.
@@ -27,6 +27,30 @@ def test_example_runs_10_steps(name, sofa_data, run_sinew, request):
     scene = sofa_data / "sofapython3" / (name + ".py")
     r = run_sinew(scene, 10)
     assert r.returncode == 0, r.stdout[-3000:] + r.stderr[-3000:]
+
+
+def test_example_mapping_moves_the_mapped_points_with_the_object(sofa_data, capfd):
+    """example-mapping.py: the Modelling subtree has two parents (root and Simulation), the
+    solver in Simulation integrates it, and the Python IdentityMapping keeps the mapped points
+    at their initial offset from the falling object."""
+    import importlib.util
+    import numpy as np
+    import Sofa.Core
+    import Sofa.Simulation
+    spec = importlib.util.spec_from_file_location("example_mapping", sofa_data / "sofapython3" / "example-mapping.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    root = Sofa.Core.Node("root")
+    module.createScene(root)
+    Sofa.Simulation.initRoot(root)
+    for _ in range(10):
+        Sofa.Simulation.animate(root, root.dt.value)
+    x = root.Modelling.Object.mechanical.position.value
+    y = root.Modelling.Object.MappedDof.mapped_quantities.position.value
+    assert x[0][1] < -0.05  # ten steps of free fall: y = -g dt² (1 + 2 + ... + 10)
+    np.testing.assert_allclose(x[:, 1], -9.81 * 0.01 ** 2 * 55, rtol=1e-9)
+    np.testing.assert_array_equal(y, x + [[0, 0.5, 0]] * 2)
+    assert "PYTHON(🐍) APPLY" in capfd.readouterr().out
 
 
 def test_sofacarving_python_example_runs(sofa_data, run_sinew):
@@ -56,3 +80,16 @@ def test_python_errors_point_at_the_scene_line(tmp_path, run_sinew):
     scene.write_text("x = 1\n")
     r = run_sinew(scene, 1)
     assert r.returncode != 0 and "Missing createScene" in r.stderr
+
+
+@pytest.mark.parametrize("locale", ["C", "C.UTF-8"])
+def test_embedded_python_prints_unicode_under_any_locale(tmp_path, sinew_bin, locale):
+    """`sinew run` embeds Python in UTF-8 mode, as python3 runs: example-mapping.py prints 🐍."""
+    scene = tmp_path / "snake.py"
+    scene.write_text("def createScene(root):\n    print('PYTHON(🐍)')\n    root.addObject('DefaultAnimationLoop')\n",
+                     encoding="utf-8")
+    env = dict(os.environ, LC_ALL=locale, LANG=locale)
+    r = subprocess.run([sinew_bin, "run", str(scene), "-n", "1", "--hideProgressBar"], capture_output=True,
+                       env=env, timeout=120)
+    assert r.returncode == 0, r.stderr.decode("utf-8", "replace")
+    assert "PYTHON(🐍)".encode("utf-8") in r.stdout
