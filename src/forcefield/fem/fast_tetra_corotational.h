@@ -1,6 +1,7 @@
-// Kernel of FastTetrahedralCorotationalForceField (spec/mechanics.md): linear
-// elasticity of 4-node tetrahedra written with shape vectors, corotated per
-// element by one of four rotations, the stiffness stored per mesh edge.
+// Kernel of FastTetrahedralCorotationalForceField (SOFA's component of that
+// name; the spec has no section on it): linear elasticity of 4-node tetrahedra
+// written with shape vectors, corotated per element by one of four rotations,
+// the stiffness stored per mesh edge.
 //
 // Per tetrahedron, at rest (positions X, signed volume V = −det/6 of SOFA's
 // geometry helper, Lamé λ, μ scaled by |V|):

@@ -9,7 +9,8 @@
 // Poisson's ratio outside [0, 0.5) by 0.45, with a warning. The topology must
 // give its edges and the edges of each tetrahedron (SOFA's edge-based storage);
 // when its tetrahedra or edges change the element data are rebuilt from the
-// rest positions (the same values SOFA keeps per element).
+// rest positions (the same values SOFA keeps per element). Material rules:
+// spec/mechanics.md §0.4.
 #pragma once
 
 #include <cstdint>
