@@ -108,9 +108,10 @@ std::string FastTetraCorotational::init(std::span<const Vec3> rest, const std::v
     const Vec3 a = p[1] - p[0], b = p[2] - p[0], c = p[3] - p[0];
     const double volume = -(dot3(cross3(a, b), c) / 6.0);
     // A flat element has no shape vectors (SOFA divides by its zero volume).
-    if (volume == 0.0 || !std::isfinite(volume))
-      return "tetrahedron " + std::to_string(t) + " (points " + std::to_string(tv[0]) + " " + std::to_string(tv[1]) +
-             " " + std::to_string(tv[2]) + " " + std::to_string(tv[3]) + ") is flat: zero volume at rest";
+    const std::string which = "tetrahedron " + std::to_string(t) + " (points " + std::to_string(tv[0]) + " " +
+                              std::to_string(tv[1]) + " " + std::to_string(tv[2]) + " " + std::to_string(tv[3]) + ")";
+    if (!std::isfinite(volume)) return which + " has a non-finite rest position";
+    if (volume == 0.0) return which + " is flat: zero volume at rest";
     el.rest_volume = volume;
     mu *= std::fabs(volume);
     lambda *= std::fabs(volume);

@@ -29,10 +29,15 @@ void FastTetrahedralCorotationalForceField::init() {
   }
   // SOFA's checks on the material, once, values replaced in the fields.
   auto& ym = young_modulus.edit();
+  bool warned_zero = false;
   for (double& e : ym)
     if (e < 0) {
       msg_warning("youngModulus " + parse::format_double(e) + " must be positive: replaced by 5000");
       e = 5000.0;
+    } else if (e == 0 && !warned_zero) {
+      // Accepted as in SOFA, but worth saying.
+      msg_warning("youngModulus 0: the elements using it have no stiffness");
+      warned_zero = true;
     }
   auto& pr = poisson_ratio.edit();
   for (double& v : pr)
