@@ -17,6 +17,7 @@ struct FemCase {
   const char* type;
   const char* tmpl;  // "" for the default template
   Elem elem;
+  bool any_orientation = false;  // both vertex orders are valid (no inverted element)
 };
 
 std::ostream& operator<<(std::ostream& os, const FemCase& c) { return os << c.type << "<" << c.tmpl << ">"; }
@@ -84,6 +85,7 @@ TEST_P(BadInputFem, InvertedElementIsReportedWithItsIndex) {
   const FemCase c = GetParam();
   const Mesh m = mesh_for(c.elem);
   if (m.inverted.empty()) GTEST_SKIP() << "no orientation for triangles in 3D";
+  if (c.any_orientation) GTEST_SKIP() << "shape vectors divide by the signed volume: either order is valid";
   const Outcome o = run_xml(dir, fem_scene(c, m.good + "  " + m.inverted, kMaterial), 5);
   EXPECT_TRUE(any_contains_all(o.problems(), {who(c), "element 1"})) << o.all();
   EXPECT_FALSE(any_contains_all(o.problems(), {who(c), "element 0"})) << o.all();
@@ -165,6 +167,7 @@ INSTANTIATE_TEST_SUITE_P(
     All, BadInputFem,
     ::testing::Values(FemCase{"TetrahedronFEMForceField", "", Elem::tetra},
                       FemCase{"TetrahedralCorotationalFEMForceField", "", Elem::tetra},
+                      FemCase{"FastTetrahedralCorotationalForceField", "", Elem::tetra, true},
                       FemCase{"LinearSmallStrainFEMForceField", "Vec3d,Tetrahedron", Elem::tetra},
                       FemCase{"CorotationalFEMForceField", "Vec3d,Tetrahedron", Elem::tetra},
                       FemCase{"HexahedronFEMForceField", "", Elem::hexa},
