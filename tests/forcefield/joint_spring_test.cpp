@@ -389,4 +389,5 @@ TEST_P(JointSpringExample, RunsToTheEnd) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, JointSpringExample,
                          ::testing::Values("Component/SolidMechanics/Spring/JointSpringForceField.scn",
-                                           "Component/Mapping/NonLinear/RigidRigidMapping.scn"));
+                                           "Component/Mapping/NonLinear/RigidRigidMapping.scn",
+                                           "Component/Constraint/Projective/FixedRotationProjectiveConstraint.scn"));
