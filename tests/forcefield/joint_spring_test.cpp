@@ -211,7 +211,7 @@ TEST(JointSpringForceField, HeldTranslationsPullWithTheHardStiffness) {
   expect_vec(f, 3, Vec3(0, 0, 0), 1e-12);
   expect_vec(f, 6, Vec3(-1500, -200, 300), 1e-9);
   expect_vec(f, 9, Vec3(0, 0, 0), 1e-12);
-  EXPECT_EQ(p.ff->potential_energy().value(), 0.0);  // as SOFA reports it
+  EXPECT_FALSE(p.ff->potential_energy().has_value());  // SOFA computes none (reports 0)
 }
 
 TEST(JointSpringForceField, StiffnessPerAxisOfTheFirstFrame) {
@@ -391,3 +391,37 @@ INSTANTIATE_TEST_SUITE_P(Scenes, JointSpringExample,
                          ::testing::Values("Component/SolidMechanics/Spring/JointSpringForceField.scn",
                                            "Component/Mapping/NonLinear/RigidRigidMapping.scn",
                                            "Component/Constraint/Projective/FixedRotationProjectiveConstraint.scn"));
+
+// infile: one line of 6 numbers per spring and evaluation (first frame's axes),
+// from the start again after the end; outfile: SOFA's text record of each spring.
+TEST(JointSpringForceField, InfileForcesAndOutfileRecords) {
+  test::TempDir dir;
+  const std::string in = dir.write("forces.txt", "1 2 3 0 0 0.5\n-1 0 0 0 0 0\n");
+  const std::string out = (std::filesystem::path(in).parent_path() / "out.txt").string();
+  const Quat q1 = axis_angle(Vec3(0, 0, 1), M_PI / 2);
+  auto s = load(R"(<Node gravity="0 0 0"><MechanicalObject template="Rigid3" name="dofs" position=")" +
+                rigid_text(Vec3(0, 0, 0), q1) + "  " + rigid_text(Vec3(0, 0, 0), q1) +
+                R"("/><JointSpringForceField name="ff" template="Rigid3" infile=")" + in + R"(" outfile=")" + out +
+                R"(" spring="BEGIN_SPRING 0 1 END_SPRING"/></Node>)");
+  auto* ff = get<JointSpringForceField>(*s.root, "ff");
+  ASSERT_NE(ff, nullptr);
+  ASSERT_EQ(ff->state(), ComponentState::valid);
+  MechanicalState& st = *s.root->mechanical_state;
+  auto f = force_at(*ff, st, st.write(kPosition));
+  expect_vec(f, 0, Vec3(-2, 1, 3), 1e-12);  // (1, 2, 3) in the frame turned 90° about z
+  expect_vec(f, 3, Vec3(0, 0, 0.5), 1e-12);
+  f = force_at(*ff, st, st.write(kPosition));
+  expect_vec(f, 0, Vec3(0, -1, 0), 1e-12);
+  // As std::getline in SOFA: the read after the last line gives an empty line (no
+  // force) and sets eof; the next one starts again from the first line.
+  f = force_at(*ff, st, st.write(kPosition));
+  expect_vec(f, 0, Vec3(0, 0, 0), 1e-12);
+  f = force_at(*ff, st, st.write(kPosition));
+  expect_vec(f, 0, Vec3(-2, 1, 3), 1e-12);
+  std::ifstream rec(out);
+  std::string first, second;
+  std::getline(rec, first);
+  std::getline(rec, second);
+  EXPECT_EQ(first, "T= 0");
+  EXPECT_EQ(second.rfind("  Xrel= 0 0 0 0 0 0 1", 0), 0u) << second;
+}

@@ -7,7 +7,7 @@
 // As SOFA's: the stiffness used by add_dforce is the diagonal per-axis
 // stiffness of the last add_force (the rotation-dependent terms of the exact
 // tangent are left out), the damping kd is applied in add_force only (no
-// damping matrix), and the potential energy is reported as 0.
+// damping matrix), and no potential energy is computed.
 // build_stiffness assembles the same K as add_dforce (SOFA has no matrix for
 // this component: with a direct solver it adds nothing and logs an error).
 #pragma once
@@ -55,8 +55,7 @@ class JointSpringForceField : public ForceField {
   std::vector<MechanicalState*> states() const override;
   MechanicalState* single_state() const override { return s1_ && s1_ == s2_ ? s1_ : nullptr; }
   bool build_stiffness(MatrixSink& K) override;
-  // SOFA's getPotentialEnergy of this component: 0 (it never sums an energy).
-  std::optional<double> potential_energy() const override { return 0.0; }
+  // potential_energy(): not provided (SOFA's getPotentialEnergy returns 0, it never sums one).
 
   const std::vector<joints::JointSpring>& springs() const { return springs_; }
   const std::vector<joints::JointWork>& work() const { return work_; }
