@@ -425,3 +425,13 @@ TEST(JointSpringForceField, InfileForcesAndOutfileRecords) {
   EXPECT_EQ(first, "T= 0");
   EXPECT_EQ(second.rfind("  Xrel= 0 0 0 0 0 0 1", 0), 0u) << second;
 }
+
+TEST(JointSpringForceField, AStateThatLosesASpringEndStopsTheForceField) {
+  Pair p(Vec3(0, 0, 0), Quat{}, Vec3(1, 0, 0), Quat{}, "BEGIN_SPRING 0 1 KS_T 0 10 END_SPRING");
+  p.force();
+  p.st->resize(1);
+  std::vector<double> x = {0, 0, 0, 0, 0, 0, 1};
+  const auto f = force_at(*p.ff, *p.st, x);
+  EXPECT_EQ(p.ff->state(), ComponentState::invalid);
+  EXPECT_EQ(f, std::vector<double>(6, 0.0));
+}

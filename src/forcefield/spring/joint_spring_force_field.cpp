@@ -88,11 +88,30 @@ void JointSpringForceField::bwd_init() {
     // q2·q1⁻¹ (SOFA's order; the force uses q1⁻¹·q2·init_rot).
     s.init_rot = quat_mul(Quat::from(b + 3), quat_inverse(Quat::from(a + 3)));
   }
+  n1_ = n1;
+  n2_ = n2;
   ready_ = true;
 }
 
+bool JointSpringForceField::sizes_ok() {
+  if (s1_->size() == n1_ && s2_->size() == n2_) return true;
+  n1_ = s1_->size();
+  n2_ = s2_->size();
+  for (std::size_t i = 0; i < springs_.size(); ++i)
+    if (springs_[i].m1 >= n1_ || springs_[i].m2 >= n2_) {
+      msg_error("spring " + std::to_string(i) + " (" + std::to_string(springs_[i].m1) + ", " +
+                std::to_string(springs_[i].m2) + ") refers to a frame removed from its state: the force field stops");
+      set_state(ComponentState::invalid);
+      springs_.clear();
+      work_.clear();
+      ready_ = false;
+      return false;
+    }
+  return true;
+}
+
 void JointSpringForceField::add_force(const MechParams& p) {
-  if (!ready_) return;
+  if (!ready_ || !sizes_ok()) return;
   MechanicalState& a = *s1_;
   MechanicalState& b = *s2_;
   const double* x1 = a.read(vec_for(a, p.x, kPosition)).data();
@@ -147,7 +166,7 @@ void JointSpringForceField::write_output(const joints::JointSpring& s, const joi
 }
 
 void JointSpringForceField::add_dforce(const MechParams& p, double kfactor) {
-  if (!ready_) return;
+  if (!ready_ || !sizes_ok()) return;
   MechanicalState& a = *s1_;
   MechanicalState& b = *s2_;
   const double* dx1 = a.read(vec_for(a, p.dx, kDx)).data();
@@ -160,7 +179,7 @@ void JointSpringForceField::add_dforce(const MechParams& p, double kfactor) {
 
 // ∂f1/∂x1 = ∂f2/∂x2 = −K, ∂f1/∂x2 = ∂f2/∂x1 = K (K of the last add_force).
 bool JointSpringForceField::build_stiffness(MatrixSink& K) {
-  if (!ready_) return true;  // no spring in use
+  if (!ready_ || !sizes_ok()) return true;  // no spring in use
   for (std::size_t e = 0; e < springs_.size(); ++e) {
     const auto& s = springs_[e];
     const auto m = joints::joint_stiffness_block(work_[e]);

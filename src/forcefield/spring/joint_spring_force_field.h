@@ -68,6 +68,9 @@ class JointSpringForceField : public ForceField {
   std::vector<joints::JointWork> work_;
   MechanicalState* s1_ = nullptr;
   MechanicalState* s2_ = nullptr;
+  // False (component invalid, springs dropped) when a resized state no longer holds every spring end.
+  bool sizes_ok();
+  std::size_t n1_ = 0, n2_ = 0;  // state sizes the indices were checked against
   std::unique_ptr<std::ifstream> in_;
   std::unique_ptr<std::ofstream> out_;
   double last_time_ = 0;
