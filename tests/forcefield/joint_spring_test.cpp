@@ -435,3 +435,27 @@ TEST(JointSpringForceField, AStateThatLosesASpringEndStopsTheForceField) {
   EXPECT_EQ(p.ff->state(), ComponentState::invalid);
   EXPECT_EQ(f, std::vector<double>(6, 0.0));
 }
+
+// A frame hanging from a fixed one by a joint spring held in translation
+// (REST_T: rest offset from the initial positions): under gravity it settles
+// m·g/k lower, without turning, with the iterative solver (add_dforce) and with
+// a direct one (build_stiffness).
+TEST(JointSpringForceField, HangingFrameSettlesAtMgOverK) {
+  for (const char* linear : {"<CGLinearSolver iterations='100' tolerance='1e-16' threshold='1e-20'/>",
+                             "<SparseLDLSolver/>"}) {
+    auto s = load(std::string(R"(<Node gravity="0 -10 0" dt="0.02"><DefaultAnimationLoop/>
+      <EulerImplicitSolver rayleighStiffness="0.1" rayleighMass="1"/>)") + linear + R"(
+      <MechanicalObject template="Rigid3" position="0 0 0 0 0 0 1  1 0 0 0 0 0 1"/>
+      <UniformMass vertexMass="2 1 [1 0 0,0 1 0,0 0 1]"/>
+      <FixedProjectiveConstraint indices="0"/>
+      <JointSpringForceField name="ff" spring="BEGIN_SPRING 0 1 FREE_AXIS 0 0 0 0 0 0 KS_T 0 1000 KS_R 0 500 REST_T 0 0 0 END_SPRING"/>
+    </Node>)");
+    for (int i = 0; i < 2000; ++i) animate(*s.root);
+    const auto& x = s.root->mechanical_state->read(kPosition);
+    EXPECT_NEAR(x[7], 1.0, 1e-9) << linear;
+    EXPECT_NEAR(x[8], -2 * 10.0 / 1000, 1e-9) << linear;
+    EXPECT_NEAR(x[9], 0.0, 1e-9) << linear;
+    EXPECT_NEAR(x[13], 1.0, 1e-9) << linear;  // no rotation
+    for (const Message& m : s.root->diagnostics().messages()) EXPECT_NE(m.severity, Severity::error) << Diagnostics::format(m);
+  }
+}
