@@ -390,7 +390,8 @@ TEST_P(JointSpringExample, RunsToTheEnd) {
 INSTANTIATE_TEST_SUITE_P(Scenes, JointSpringExample,
                          ::testing::Values("Component/SolidMechanics/Spring/JointSpringForceField.scn",
                                            "Component/Mapping/NonLinear/RigidRigidMapping.scn",
-                                           "Component/Constraint/Projective/FixedRotationProjectiveConstraint.scn"));
+                                           "Component/Constraint/Projective/FixedRotationProjectiveConstraint.scn",
+                                           "Component/Mapping/Linear/SkinningMapping.scn"));
 
 // infile: one line of 6 numbers per spring and evaluation (first frame's axes),
 // from the start again after the end; outfile: SOFA's text record of each spring.
