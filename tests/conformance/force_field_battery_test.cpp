@@ -179,6 +179,18 @@ const std::vector<ForceFieldCase> kCases = {
      node("<MechanicalObject name='dofs' template='Vec2d' position='0 0  1 0  0 1'/>" +
           ff("RestShapeSpringsForceField", "points='0 2' stiffness='70' activeDirections='1 0'")),
      kEnergy | kStiffness},
+    // Three frames, a clamped joint (0-1) and one with two free rotations (1-2, general case);
+    // REST_T: rest offsets from the initial positions. SOFA's tangent is the per-axis stiffness
+    // of the last force (no frame-rotation or rotation-vector Jacobian terms): exact at rest,
+    // first order in the deformation elsewhere. The rest offset is a world vector (no kRigidRest)
+    // and the centres carry no lever arm (no kMomentum); SOFA reports no energy (no kEnergy).
+    {"JointSpringForceField",
+     node("<MechanicalObject name='dofs' template='Rigid3d'"
+          " position='0 0 0 0 0 0 1  1 0.2 0 0 0 0 1  1.8 0.9 0.3 0 0 0 1'/>" +
+          ff("JointSpringForceField", "template='Rigid3d' spring='"
+             "BEGIN_SPRING 0 1 FREE_AXIS 0 0 0 0 0 0 KS_T 0 900 KS_R 0 300 REST_T 0 0 0 END_SPRING "
+             "BEGIN_SPRING 1 2 FREE_AXIS 0 1 0 1 0 1 KS_T 40 700 KS_R 60 500 REST_T 0 0 0 END_SPRING'")),
+     kStiffness | kNetForce | kExactAtRest, 0.05, 1e-3},
     // Loads
     {"ConstantForceField", tetras(ff("ConstantForceField", "indices='1 3 4' forces='1 2 3  -4 0 1  0.5 0.5 -2'")),
      kEnergy | kStiffness},

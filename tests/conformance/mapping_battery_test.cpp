@@ -106,6 +106,9 @@ const std::vector<MappingCase> kCases = {
             "", "<TetrahedronSetTopologyContainer name='topo' " + kTetPoints + "/>"),
      kJacobian | kTranslationRowsOnly},
     // No assembled geometric stiffness (build_geometric_stiffness returns false).
+    // Each point blends its two nearest frames (1/d² weights); J is the derivative of apply,
+    // SOFA gives no geometric stiffness.
+    {"SkinningMapping", mapped(kFrames, kPoints, "SkinningMapping", "nbRef='2'"), kJacobian},
     {"RigidMapping",
      mapped(kFrames, "position='1 0 0  0 0.5 1  -0.3 0.2 0.1'", "RigidMapping", kExact + "rigidIndexPerPoint='0 1 1'"),
      kJacobian | kGeometric},
