@@ -9,33 +9,15 @@
 #include "core/mechanical_ops.h"
 #include "core/node.h"
 #include "core/roles.h"
+#include "fake_roles.h"
 
 using namespace sinew;
+using sinew::fakes::TestState;
+using sinew::fakes::TestSolver;
 
 namespace {
 
-class TestState final : public MechanicalState {
- public:
-  StateType state_type() const override { return StateType::vec3; }
-  std::size_t size() const override { return 0; }
-  void resize(std::size_t) override {}
-  void remove_points(const std::vector<unsigned>&) override {}
-  void add_points(std::size_t, const std::vector<std::vector<unsigned>>&, const std::vector<std::vector<double>>&) override {}
-  bool has_vec(int) const override { return false; }
-  const std::vector<double>& read(int) const override { return data_; }
-  std::vector<double>& write(int) override { return data_; }
-  void touch(int) override {}
-  void add_deriv_to_coord(int, int, int, double) override {}
-  void end_integration() override {}
 
- private:
-  std::vector<double> data_;
-};
-
-class TestSolver final : public OdeSolver {
- public:
-  void solve(double, int, int) override {}
-};
 
 Node* child(Node& parent, const std::string& name) { return parent.add_child(std::make_unique<Node>(name)); }
 

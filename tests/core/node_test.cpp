@@ -10,29 +10,15 @@
 
 #include "core/matrix_sink.h"
 #include "core/roles.h"
+#include "fake_roles.h"
 
 using namespace sinew;
+using sinew::fakes::TestState;
+using sinew::fakes::TestSolver;
 
 namespace {
 
 // Minimal implementations of the roles, enough to be filed in slots.
-class TestState final : public MechanicalState {
- public:
-  StateType state_type() const override { return StateType::vec3; }
-  std::size_t size() const override { return 0; }
-  void resize(std::size_t) override {}
-  void remove_points(const std::vector<unsigned>&) override {}
-  void add_points(std::size_t, const std::vector<std::vector<unsigned>>&, const std::vector<std::vector<double>>&) override {}
-  bool has_vec(int) const override { return false; }
-  const std::vector<double>& read(int) const override { return data_; }
-  std::vector<double>& write(int) override { return data_; }
-  void touch(int) override {}
-  void add_deriv_to_coord(int, int, int, double) override {}
-  void end_integration() override {}
-
- private:
-  std::vector<double> data_;
-};
 
 class TestForceField : public ForceField {
  public:
@@ -87,10 +73,6 @@ class TestConstraint final : public ProjectiveConstraint {
   void project_position(int, double) override {}
 };
 
-class TestSolver final : public OdeSolver {
- public:
-  void solve(double, int, int) override {}
-};
 
 // Sets gravity of its node to (0, 0, -1) (like SOFA's Gravity component).
 class TestGravity final : public ContextObject {

@@ -10,30 +10,13 @@
 
 #include "core/node.h"
 #include "core/roles.h"
+#include "fake_roles.h"
 
 using namespace sinew;
+using sinew::fakes::TestState;
 
 namespace {
 
-class TestState final : public MechanicalState {
- public:
-  explicit TestState(StateType t) : type_(t) {}
-  StateType state_type() const override { return type_; }
-  std::size_t size() const override { return 0; }
-  void resize(std::size_t) override {}
-  void remove_points(const std::vector<unsigned>&) override {}
-  void add_points(std::size_t, const std::vector<std::vector<unsigned>>&, const std::vector<std::vector<double>>&) override {}
-  bool has_vec(int) const override { return false; }
-  const std::vector<double>& read(int) const override { return data_; }
-  std::vector<double>& write(int) override { return data_; }
-  void touch(int) override {}
-  void add_deriv_to_coord(int, int, int, double) override {}
-  void end_integration() override {}
-
- private:
-  StateType type_;
-  std::vector<double> data_;
-};
 
 // A "mass" whose template must match the state's type.
 class FakeMass final : public Component {
