@@ -1,0 +1,31 @@
+// `sinew view SCENE`: the interactive viewer (spec/user-interfaces.md §3), a GLFW window
+// drawn by the same renderer as `sinew render`, with Dear ImGui panels.
+//
+// Controls as SOFA's GLFW/ImGui viewer: Space play/pause, Backspace reset (SOFA's reset),
+// Ctrl+R reload the file, Esc quit, S screenshot (<scene>_NNNN.png), W save the camera
+// (<scene>.view), B background; left-drag turns, right-drag pans, middle-drag and the
+// wheel zoom; Shift + left-drag grabs a body with a spring (while playing);
+// Ctrl+Shift+key sends a key event to the scene.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace sinew::viewer {
+
+struct ViewerOptions {
+  std::string scene;
+  std::vector<std::string> data_paths;   // as `sinew run --data-path`
+  std::vector<std::string> script_args;  // a Python scene's sys.argv[1:]
+  int width = 0, height = 0;             // 0: ViewerSetting's resolution, else 1024×768
+  bool play = false;                     // start animating
+  long quit_after = 0;                   // frames, 0: run until the window closes
+  std::string screenshot;                // picture of the 3D view written when quitting
+  std::string input_script;              // scripted input (viewer/input_script.h)
+  bool stats = false;                    // print frame and step timings when quitting
+};
+
+// Runs until the window closes; the process exit code.
+int run_viewer(const ViewerOptions& options);
+
+}  // namespace sinew::viewer
