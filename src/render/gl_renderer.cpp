@@ -247,6 +247,9 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
     if (b.kind == Batch::Kind::points) {
       glUniform1i(u_lit_, 0);
       glDrawArrays(GL_POINTS, 0, n);
+    } else if (b.kind == Batch::Kind::lines) {
+      glUniform1i(u_lit_, 0);
+      glDrawArrays(GL_LINES, 0, n);
     } else {
       glUniform1i(u_lit_, 1);
       glPolygonMode(GL_FRONT_AND_BACK, b.wireframe ? GL_LINE : GL_FILL);
