@@ -19,6 +19,9 @@ namespace sinew::render {
 Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind);
 void grow_bounds(DrawList& list, const std::vector<float>& x);
 
+// Springs (SpringForceField and the force fields built on it) of `node`: draw_springs.cpp.
+void add_springs(DrawList& list, Node& node, const DisplayFlags& flags);
+
 // Every collision model of `node`, as `flags` ask.
 void add_collision_models(DrawList& list, Node& node, const DisplayFlags& flags);
 

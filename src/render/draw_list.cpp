@@ -222,6 +222,8 @@ void visit(Node& node, const DisplayFlags& inherited, DrawList& list, std::vecto
 
   if (flags.shown(DisplayFlags::collision_models) || flags.shown(DisplayFlags::bounding_collision_models))
     add_collision_models(list, node, flags);
+  if (flags.shown(DisplayFlags::force_fields) || flags.shown(DisplayFlags::interaction_force_fields))
+    add_springs(list, node, flags);
 
   MechanicalState* state = node.mechanical_state;
   if (state && state->state() == ComponentState::valid) {

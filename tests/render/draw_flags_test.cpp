@@ -1,8 +1,10 @@
-// Collision models in pictures (showCollisionModels, showBoundingCollisionModels), as SOFA's
-// collision models draw themselves.
+// What the display flags add to pictures, as SOFA's components draw themselves: collision
+// models (showCollisionModels), bounding trees (showBoundingCollisionModels), springs
+// (showForceFields / showInteractionForceFields).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <regex>
 
 #include "render/draw_collision.h"
 #include "render/offscreen.h"
@@ -86,6 +88,41 @@ TEST(CollisionDraw, PictureOfTheCollisionSquare) {
   const auto centre = img.rgb(100, 100);
   EXPECT_EQ(centre[2], 255);
   EXPECT_EQ(centre[0] + centre[1], 0);
+}
+
+TEST(SpringDraw, LinesColouredByCompressionAndByKind) {
+  const std::string scene = R"(<Node name="root" gravity="0 0 0">
+      <VisualStyle displayFlags="FLAGS"/>
+      <Node name="a"><MechanicalObject name="a" position="0 0 0  1 0 0  3 0 0"/>
+        <SpringForceField name="inner" spring="0 1 10 0 2"/></Node>
+      <Node name="b"><MechanicalObject name="b" position="0 1 0  0 2 0"/></Node>
+      <SpringForceField name="outer" object1="@a/a" object2="@b/b" spring="0 0 10 0 0.5  2 1 10 0 5"/>
+    </Node>)";
+  auto with = [&](const std::string& flags) {
+    auto s = test::load(std::regex_replace(scene, std::regex("FLAGS"), flags));
+    render::DrawList list;
+    render::gather(*s.root, list);
+    return std::make_pair(std::move(s), std::move(list));
+  };
+  {
+    auto [s, list] = with("showForceFields");  // the spring within one state only
+    ASSERT_EQ(list.used, 1u);
+    const render::Batch& b = list.batches[0];
+    EXPECT_EQ(b.kind, render::Batch::Kind::lines);
+    ASSERT_EQ(b.vertex_count(), 2u);
+    // Length 1 below its rest length 2: compressed, orange.
+    EXPECT_EQ(std::vector<float>(b.colors.begin(), b.colors.begin() + 4), (std::vector<float>{1, 0.5f, 0, 1}));
+    EXPECT_EQ(b.positions[3], 1.f);
+  }
+  {
+    auto [s, list] = with("showInteractionForceFields");  // the two springs between states
+    ASSERT_EQ(list.used, 1u);
+    const render::Batch& b = list.batches[0];
+    ASSERT_EQ(b.vertex_count(), 4u);
+    // (0,0,0)–(0,1,0): length 1 over rest 0.5, stretched: green. (3,0,0)–(0,2,0): 3.6 < 5: red.
+    EXPECT_EQ(std::vector<float>(b.colors.begin(), b.colors.begin() + 4), (std::vector<float>{0, 1, 0, 1}));
+    EXPECT_EQ(std::vector<float>(b.colors.begin() + 8, b.colors.begin() + 12), (std::vector<float>{1, 0, 0, 1}));
+  }
 }
 
 }  // namespace
