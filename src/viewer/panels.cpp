@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/diagnostics.h"
 #include "core/node.h"
 #include "imgui.h"
 #include "viewer/viewer_app.h"
@@ -175,6 +176,33 @@ void performance_panel(ViewerApp& app) {
   ImGui::End();
 }
 
+// SOFA's ImGui "Log": every message of the scene with its level, filtered by level.
+void log_panel(const Diagnostics& d, bool show[3]) {
+  if (!ImGui::Begin("Log")) {
+    ImGui::End();
+    return;
+  }
+  ImGui::Checkbox("info", &show[0]);
+  ImGui::SameLine();
+  ImGui::Checkbox("warnings", &show[1]);
+  ImGui::SameLine();
+  ImGui::Checkbox("errors", &show[2]);
+  ImGui::Separator();
+  ImGui::BeginChild("messages", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
+  static const ImVec4 kColour[3] = {ImVec4(0.7f, 0.7f, 0.7f, 1), ImVec4(1, 0.8f, 0.2f, 1), ImVec4(1, 0.3f, 0.3f, 1)};
+  static const char* kTag[3] = {"[INFO]", "[WARNING]", "[ERROR]"};
+  for (const Message& m : d.messages()) {
+    const int level = static_cast<int>(m.severity);
+    if (!show[level]) continue;
+    ImGui::TextColored(kColour[level], "%s", kTag[level]);
+    ImGui::SameLine();
+    ImGui::TextUnformatted(Diagnostics::format(m).c_str());
+  }
+  if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY()) ImGui::SetScrollHereY(1.0f);  // follow new messages
+  ImGui::EndChild();
+  ImGui::End();
+}
+
 }  // namespace
 
 void ViewerApp::draw_panels() {
@@ -211,6 +239,10 @@ void ViewerApp::draw_panels() {
   ImGui::SetNextWindowPos(ImVec2(right, 90), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
   performance_panel(*this);
+  ImGui::SetNextWindowPos(ImVec2(right, 120), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(600, 250), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+  log_panel(session->diagnostics(), log_levels);
 
   // The mouse spring, drawn while grabbing (SOFA draws the interaction force field then).
   if (attach.active()) {

@@ -54,6 +54,7 @@ class ViewerApp {
   std::string status;        // one line at the bottom (picking messages, errors)
   Timings timings;
   int screenshot_counter = 0;
+  bool log_levels[3] = {false, true, true};  // Log panel: info, warnings, errors
   std::string window_shot;  // picture of the whole window (panels included) to write after this frame
 
   void reset_scene();
