@@ -206,7 +206,7 @@ void log_panel(const Diagnostics& d, bool show[3]) {
 }  // namespace
 
 void ViewerApp::draw_panels() {
-  Node& root = session->root();
+  Node& root = this->root();
   if (ImGui::BeginMainMenuBar()) {
     if (ImGui::Button(animating ? "Pause" : "Play")) animating = !animating;
     ImGui::BeginDisabled(animating);
@@ -242,7 +242,7 @@ void ViewerApp::draw_panels() {
   ImGui::SetNextWindowPos(ImVec2(right, 120), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(600, 250), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
-  log_panel(session->diagnostics(), log_levels);
+  log_panel(root.diagnostics(), log_levels);
 
   // The mouse spring, drawn while grabbing (SOFA draws the interaction force field then).
   if (attach.active()) {

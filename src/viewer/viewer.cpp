@@ -26,6 +26,7 @@ namespace sinew::viewer {
 namespace {
 
 std::string glfw_error;  // the last GLFW error, for the message when no window opens
+ViewerApp* running = nullptr;  // the viewer in this process's window loop (one at a time)
 
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
@@ -54,6 +55,12 @@ std::string setting_text(Node& root, const char* cls, const char* field) {
   return out;
 }
 
+// AttachBodyButtonSetting's stiffness, else SOFA's default 1000.
+double stiffness_setting(Node& root) {
+  const std::string k = setting_text(root, "AttachBodyButtonSetting", "stiffness");
+  return k.empty() ? 1000.0 : std::atof(k.c_str());
+}
+
 void print_new_messages(const Diagnostics& d, std::size_t& printed) {
   const auto& all = d.messages();
   for (; printed < all.size(); ++printed)
@@ -65,6 +72,18 @@ void print_new_messages(const Diagnostics& d, std::size_t& printed) {
 
 int run_viewer(const ViewerOptions& options) {
   ViewerApp app(options);
+  return app.run();
+}
+
+bool request_screenshot(const std::string& path) {
+  if (!running) return false;
+  running->pending_shot = path;
+  return true;
+}
+
+int run_viewer_on(Node& root, const ViewerOptions& options) {
+  ViewerApp app(options);
+  app.use_root(root);
   return app.run();
 }
 
@@ -83,7 +102,7 @@ bool ViewerApp::open_window(std::string* error) {
   if (w <= 0 || h <= 0) {  // ViewerSetting's resolution, else 1024×768
     w = 1024, h = 768;
     int rw = 0, rh = 0;
-    if (std::sscanf(setting_text(session->root(), "ViewerSetting", "resolution").c_str(), "%d %d", &rw, &rh) == 2 &&
+    if (std::sscanf(setting_text(root(), "ViewerSetting", "resolution").c_str(), "%d %d", &rw, &rh) == 2 &&
         rw > 0 && rh > 0 && rw <= 16384 && rh <= 16384)
       w = rw, h = rh;
   }
@@ -145,13 +164,13 @@ bool ViewerApp::load(std::string* error) {
   attach.stop();
   selected = nullptr;
   session = std::move(s);
-  const std::string k = setting_text(session->root(), "AttachBodyButtonSetting", "stiffness");
-  attach_stiffness = k.empty() ? 1000.0 : std::atof(k.c_str());
+  root_ = &session->root();
+  attach_stiffness = stiffness_setting(root());
   return true;
 }
 
 void ViewerApp::frame_camera(bool use_view_file) {
-  Node& root = session->root();
+  Node& root = this->root();
   render::gather(root, list);
   Vec3 min = list.has_bounds ? list.min : Vec3::Zero(), max = list.has_bounds ? list.max : Vec3::Ones();
   if (const auto& b = root.bbox.get(); b.size() == 6 && b[0] <= b[3] && b[1] <= b[4] && b[2] <= b[5])
@@ -168,13 +187,32 @@ void ViewerApp::frame_camera(bool use_view_file) {
   camera.reset(f, (min + max) * 0.5);
 }
 
+bool ViewerApp::step() {
+  if (session) return session->step();
+  // A graph built by a script (Sofa.Gui.GUIManager.MainLoop): stepped as Sofa.Simulation.animate does.
+  Node& r = root();
+  if (r.diagnostics().has_errors()) return false;
+  try {
+    r.step_index = static_cast<long>(r.step_index + 1);
+    animate(r);
+  } catch (const std::exception& e) {
+    r.diagnostics().error({}, std::string("step failed: ") + e.what());
+    return false;
+  }
+  return !r.diagnostics().has_errors();
+}
+
 void ViewerApp::reset_scene() {
   attach.stop();
-  reset_root(session->root());
+  reset_root(root());
   status = "reset to the initial state";
 }
 
 bool ViewerApp::reload_scene() {
+  if (!session) {
+    status = "this graph was built by a script: nothing to reload";
+    return false;
+  }
   std::string err;
   if (!load(&err)) {
     status = err;
@@ -219,7 +257,7 @@ void ViewerApp::save_camera() {
 
 void ViewerApp::select_named(const std::string& name) {
   selected = nullptr;
-  for_each_node(session->root(), [&](Node& n) {
+  for_each_node(root(), [&](Node& n) {
     if (selected) return;
     if (n.name.get() == name) selected = &n;
     else if (Component* c = n.find_object_named(name)) selected = c;
@@ -230,10 +268,10 @@ void ViewerApp::select_named(const std::string& name) {
 void ViewerApp::send_key(char c) {
   Event e{Event::Kind::key_pressed};
   e.key = c;
-  propagate_event(session->root(), e);
+  propagate_event(root(), e);
   Event r{Event::Kind::key_released};
   r.key = c;
-  propagate_event(session->root(), r);
+  propagate_event(root(), r);
 }
 
 // ------------------------------------------------------------------ input
@@ -293,7 +331,7 @@ void ViewerApp::on_button(int button, int action) {
       return;
     }
     const Ray ray = ray_through(view, mx_, my_, w, h);
-    const Pick p = pick(session->root(), list, ray, 0.02 * (bbox_max_ - bbox_min_).norm());
+    const Pick p = pick(root(), list, ray, 0.02 * (bbox_max_ - bbox_min_).norm());
     std::string why;
     if (!p) {
       status = "nothing to grab under the cursor";
@@ -373,7 +411,7 @@ std::array<float, 4> ViewerApp::background_color() const {
     case 3: return {0.5f, 0.5f, 0.5f, 1.f};
     default: break;
   }
-  if (const auto* bg = session->root().find_down<BackgroundSetting>())
+  if (const auto* bg = root().find_down<BackgroundSetting>())
     if (auto c = render::parse_color(bg->color.get())) return {(*c)[0], (*c)[1], (*c)[2], 1.f};
   return {0.f, 0.f, 0.f, 1.f};
 }
@@ -386,7 +424,7 @@ void ViewerApp::draw_frame() {
     status = err;
     return;
   }
-  Node& root = session->root();
+  Node& root = this->root();
   render::gather(root, list);
   // Clip planes from what is drawn now and the box framed at loading.
   Vec3 min = bbox_min_, max = bbox_max_;
@@ -402,10 +440,11 @@ int ViewerApp::run() {
     std::fprintf(stderr, "sinew: %s\n", err.c_str());
     return 1;
   }
-  if (!load(&err)) {
+  if (!root_ && !load(&err)) {
     std::fprintf(stderr, "sinew: %s\n", err.c_str());
     return 1;
   }
+  if (root_ && !session) attach_stiffness = stiffness_setting(root());
   if (!open_window(&err)) {
     std::fprintf(stderr, "sinew: %s\n", err.c_str());
     if (window_) glfwDestroyWindow(window_);
@@ -413,27 +452,28 @@ int ViewerApp::run() {
     return 1;
   }
   frame_camera(true);
+  running = this;
   animating = options.play;
-  std::size_t printed = session->diagnostics().messages().size();
+  std::size_t printed = root().diagnostics().messages().size();
   const auto start = Clock::now();
   int exit_code = 0;
   while (!quit && !glfwWindowShouldClose(window_)) {
     const auto t_frame = Clock::now();
     glfwPollEvents();
     // The view the input sees is this frame's camera (the clip planes follow at drawing).
-    view = render::view_of(camera.frame(), session->root(), bbox_min_, bbox_max_, std::max(fb_width(), 1),
+    view = render::view_of(camera.frame(), root(), bbox_min_, bbox_max_, std::max(fb_width(), 1),
                            std::max(fb_height(), 1));
     run_script_events(frame_);
     if (animating || step_once) {
       step_once = false;
       const auto t0 = Clock::now();
-      const bool ok = session->step();
+      const bool ok = step();
       const double ms = ms_since(t0);
       timings.last_step_ms = ms;
       timings.step_total_ms += ms;
       ++timings.steps;
       timings.step_ms[timings.cursor] = static_cast<float>(ms);
-      print_new_messages(session->diagnostics(), printed);
+      print_new_messages(root().diagnostics(), printed);
       if (!ok) {
         animating = false;
         attach.stop();
@@ -443,6 +483,10 @@ int ViewerApp::run() {
     }
     const auto t_draw = Clock::now();
     draw_frame();
+    if (!pending_shot.empty()) {
+      save_screenshot(pending_shot);
+      pending_shot.clear();
+    }
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -473,6 +517,7 @@ int ViewerApp::run() {
                 timings.steps ? timings.step_total_ms / timings.steps : 0.0);
     std::printf("drawing: %.3f ms/frame\n", timings.frames ? timings.draw_total_ms / timings.frames : 0.0);
   }
+  running = nullptr;
   attach.stop();
   gl.reset();  // GL objects go while the context exists
   ImGui_ImplOpenGL3_Shutdown();

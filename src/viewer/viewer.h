@@ -11,6 +11,10 @@
 #include <string>
 #include <vector>
 
+namespace sinew {
+class Node;
+}
+
 namespace sinew::viewer {
 
 struct ViewerOptions {
@@ -25,7 +29,16 @@ struct ViewerOptions {
   bool stats = false;                    // print frame and step timings when quitting
 };
 
-// Runs until the window closes; the process exit code.
+// Loads options.scene and runs until the window closes; the process exit code.
 int run_viewer(const ViewerOptions& options);
+
+// Shows `root`, a graph built and initialised elsewhere (SofaPython3's
+// Sofa.Gui.GUIManager.MainLoop); options.scene only names it (title, `.view` file).
+// Reload is not available. The exit code as run_viewer's.
+int run_viewer_on(Node& root, const ViewerOptions& options);
+
+// Asks the running viewer for a picture of its 3D view after its next frame
+// (Sofa.Gui.GUIManager.SaveScreenshot, called by a controller); false when none runs.
+bool request_screenshot(const std::string& path);
 
 }  // namespace sinew::viewer

@@ -35,11 +35,14 @@ struct Timings {
 class ViewerApp {
  public:
   explicit ViewerApp(const ViewerOptions& o) : options(o) {}
+  // Shows a graph built elsewhere (initialised) instead of loading options.scene.
+  void use_root(Node& root) { root_ = &root; }
   int run();
+  Node& root() const { return *root_; }
 
   // ---- what the panels read and change
   ViewerOptions options;
-  std::unique_ptr<runner::Session> session;
+  std::unique_ptr<runner::Session> session;  // null when showing a graph built elsewhere
   std::unique_ptr<render::GlRenderer> gl;
   render::DrawList list;
   render::View view;
@@ -55,6 +58,7 @@ class ViewerApp {
   Timings timings;
   int screenshot_counter = 0;
   bool log_levels[3] = {false, true, true};  // Log panel: info, warnings, errors
+  std::string pending_shot;  // picture of the 3D view to write after this frame's drawing
   std::string window_shot;  // picture of the whole window (panels included) to write after this frame
 
   void reset_scene();
@@ -75,6 +79,7 @@ class ViewerApp {
 
  private:
   bool open_window(std::string* error);
+  bool step();
   bool load(std::string* error);
   void run_script_events(long frame);
   void draw_frame();
@@ -83,6 +88,7 @@ class ViewerApp {
   int fb_width() const;
   int fb_height() const;
 
+  Node* root_ = nullptr;
   GLFWwindow* window_ = nullptr;
   std::vector<ScriptEvent> script_;
   std::size_t script_next_ = 0;

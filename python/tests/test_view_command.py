@@ -9,34 +9,21 @@ import tempfile
 
 import pytest
 
-SINEW = os.environ.get("SINEW_BIN", "build/bin/sinew")
-DATA = os.environ.get("SINEW_DATA_DIR", "../shared/sofa-data")
-HERE = os.path.dirname(os.path.abspath(__file__))
+from conftest import REPO, _data_dir
+
+DATA = str(_data_dir())
+HERE = str(REPO / "tests" / "viewer")  # grab_cube.scn
 
 
 @pytest.fixture(scope="module")
-def display():
-    xvfb = shutil.which("Xvfb")
-    if not xvfb:
-        pytest.skip("Xvfb is not installed (Debian: xvfb)")
-    # -displayfd: Xvfb picks a free display number and writes it to the pipe when ready.
-    r, w = os.pipe()
-    proc = subprocess.Popen([xvfb, "-displayfd", str(w), "-screen", "0", "1280x1024x24", "-nolisten", "tcp"],
-                            pass_fds=(w,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    os.close(w)
-    with os.fdopen(r) as f:
-        number = f.readline().strip()
-    if not number:
-        proc.kill()
-        pytest.skip("Xvfb did not start")
-    yield ":" + number
-    proc.terminate()
-    proc.wait(timeout=10)
+def view(display, sinew_bin):
+    """Runs `sinew view ARGS` on the test display; returns the CompletedProcess."""
 
+    def run(args, timeout=300):
+        env = dict(os.environ, DISPLAY=display)
+        return subprocess.run([sinew_bin, "view"] + args, env=env, capture_output=True, text=True, timeout=timeout)
 
-def view(display, args, timeout=300, cwd=None):
-    env = dict(os.environ, DISPLAY=display)
-    return subprocess.run([SINEW, "view"] + args, env=env, capture_output=True, text=True, timeout=timeout, cwd=cwd)
+    return run
 
 
 def png_size(path):
@@ -69,12 +56,12 @@ def test_the_scene_list_is_there():
 
 
 @pytest.mark.parametrize("scene", SCENES)
-def test_every_regression_scene_opens_and_quits_with_a_screenshot(display, scene, tmp_path):
+def test_every_regression_scene_opens_and_quits_with_a_screenshot(view, sinew_bin, scene, tmp_path):
     path = os.path.join(DATA, "examples", scene)
-    check = subprocess.run([SINEW, "check", path, "--data-path", os.path.join(DATA, "share"),
+    check = subprocess.run([sinew_bin, "check", path, "--data-path", os.path.join(DATA, "share"),
                             os.path.join(DATA, "examples")], capture_output=True, text=True, timeout=300)
     shot = tmp_path / "shot.png"
-    r = view(display, [path, "--play", "--quit-after", "3", "--size", "320x240", "--screenshot", str(shot),
+    r = view([path, "--play", "--quit-after", "3", "--size", "320x240", "--screenshot", str(shot),
                        "--data-path", os.path.join(DATA, "share"), os.path.join(DATA, "examples")])
     if check.returncode != 0:
         # A scene Sinew cannot load (missing components) is refused with a message, not a crash.
@@ -99,11 +86,11 @@ GRAB_SCRIPT = """
 """
 
 
-def test_shift_drag_pulls_the_body_towards_the_cursor(display, tmp_path):
+def test_shift_drag_pulls_the_body_towards_the_cursor(view, tmp_path):
     moves = "\n".join("%d move 400 %d" % (4 + 2 * k, 280 - 20 * k) for k in range(6))  # up to y = 180
     script = tmp_path / "grab.txt"
     script.write_text(GRAB_SCRIPT.format(moves=moves))
-    r = view(display, [os.path.join(HERE, "grab_cube.scn"), "--size", "800x600", "--script", str(script)])
+    r = view([os.path.join(HERE, "grab_cube.scn"), "--size", "800x600", "--script", str(script)])
     assert r.returncode == 0, r.stdout + r.stderr
     num = r"([-\d.e+]+)"
     point = r"\(" + num + " " + num + " " + num + r"\)"
@@ -122,28 +109,28 @@ def test_shift_drag_pulls_the_body_towards_the_cursor(display, tmp_path):
     assert "released at" in r.stdout
 
 
-def test_grabbing_while_paused_moves_nothing(display, tmp_path):
+def test_grabbing_while_paused_moves_nothing(view, tmp_path):
     script = tmp_path / "paused.txt"
     script.write_text("1 shift down\n1 move 400 300\n2 press left\n3 report\n4 quit\n")
-    r = view(display, [os.path.join(HERE, "grab_cube.scn"), "--size", "800x600", "--script", str(script)])
+    r = view([os.path.join(HERE, "grab_cube.scn"), "--size", "800x600", "--script", str(script)])
     assert r.returncode == 0, r.stderr
     assert "nothing grabbed (Animation is not running" in r.stdout
 
 
-def test_without_a_display_the_error_says_what_to_do(tmp_path):
+def test_without_a_display_the_error_says_what_to_do(sinew_bin, tmp_path):
     env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
-    r = subprocess.run([SINEW, "view", os.path.join(HERE, "grab_cube.scn"), "--quit-after", "1"], env=env,
+    r = subprocess.run([sinew_bin, "view", os.path.join(HERE, "grab_cube.scn"), "--quit-after", "1"], env=env,
                        capture_output=True, text=True, timeout=120)
     assert r.returncode == 1
     assert "cannot open a window" in r.stderr and "xvfb-run" in r.stderr
 
 
-def test_bad_script_and_size_are_refused(display, tmp_path):
+def test_bad_script_and_size_are_refused(view, tmp_path):
     script = tmp_path / "bad.txt"
     script.write_text("0 play\n1 fly away\n")
-    r = view(display, [os.path.join(HERE, "grab_cube.scn"), "--script", str(script)])
+    r = view([os.path.join(HERE, "grab_cube.scn"), "--script", str(script)])
     assert r.returncode == 1 and "bad.txt:2: unknown command 'fly'" in r.stderr
-    r = view(display, [os.path.join(HERE, "grab_cube.scn"), "--size", "0x10"])
+    r = view([os.path.join(HERE, "grab_cube.scn"), "--size", "0x10"])
     assert r.returncode == 1 and "--size" in r.stderr
 
 
@@ -155,7 +142,7 @@ def lit_extent(path):
     return cols[-1] - cols[0] + 1, rows[-1] - rows[0] + 1
 
 
-def test_the_scene_camera_file_is_applied(display, tmp_path):
+def test_the_scene_camera_file_is_applied(view, tmp_path):
     # W saves <scene>.view next to the scene: work on a copy in a temporary folder.
     scene = tmp_path / "cube.scn"
     shutil.copy(os.path.join(HERE, "grab_cube.scn"), scene)
@@ -163,11 +150,11 @@ def test_the_scene_camera_file_is_applied(display, tmp_path):
         '<?xml version="1.0" ?>\n<Camera version="1.0">\n  <position value="0 0 30" />\n'
         '  <orientation value="0 0 0 1" />\n  <distance value="30" />\n</Camera>\n')
     far = tmp_path / "far.png"
-    r = view(display, [str(scene), "--size", "200x200", "--quit-after", "2", "--screenshot", str(far)])
+    r = view([str(scene), "--size", "200x200", "--quit-after", "2", "--screenshot", str(far)])
     assert r.returncode == 0, r.stderr
     (tmp_path / "cube.scn.view").unlink()
     near = tmp_path / "near.png"
-    r = view(display, [str(scene), "--size", "200x200", "--quit-after", "2", "--screenshot", str(near)])
+    r = view([str(scene), "--size", "200x200", "--quit-after", "2", "--screenshot", str(near)])
     assert r.returncode == 0, r.stderr
     # The front face (2 x 2, at z = 1) seen with a 45 deg field of view from distance d covers
     # a square of 200 / (tan 22.5 deg (d - 1)) pixels: SOFA's default view stands 3
