@@ -320,6 +320,11 @@ int view(const ViewArgs& a) {
   o.screenshot = a.screenshot;
   o.input_script = a.script;
   o.stats = a.stats;
+  if (a.samples != -1 && (a.samples < 0 || a.samples > 16)) {
+    std::fprintf(stderr, "sinew: --samples takes 0 to 16\n");
+    return 1;
+  }
+  o.samples = a.samples;
   if (a.quit_after < 0) {
     std::fprintf(stderr, "sinew: --quit-after must be >= 0\n");
     return 1;

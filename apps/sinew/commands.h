@@ -41,6 +41,7 @@ struct ViewArgs {
   std::string script;
   std::string size;  // WxH; empty: the scene's ViewerSetting, else 1024x768
   bool stats = false;
+  int samples = -1;
   std::vector<std::string> data_paths;
   std::vector<std::string> script_args;
 };

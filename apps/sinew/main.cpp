@@ -40,6 +40,8 @@ int main(int argc, char** argv) {
   view_cmd->add_option("--script", view_args.script,
                        "input events to replay, one per line: FRAME COMMAND [ARGS] (docs/viewer.md)");
   view_cmd->add_option("--size", view_args.size, "window size WxH (default: the scene's ViewerSetting, else 1024x768)");
+  view_cmd->add_option("--samples", view_args.samples,
+                       "multisampling (default 4, none with Mesa's software renderer)");
   view_cmd->add_flag("--stats", view_args.stats, "print frames per second and step times when closing");
   view_cmd->add_option("--data-path", view_args.data_paths, "extra folder searched for meshes and includes");
   view_cmd->add_option("--argv", view_args.script_args, "arguments given to a Python scene (its sys.argv[1:])");

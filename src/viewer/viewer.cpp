@@ -134,7 +134,16 @@ bool ViewerApp::open_window(std::string* error) {
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 
-  gl = render::GlRenderer::create(std::max(fb_width(), 1), std::max(fb_height(), 1), 4, error);
+  // Multisampling: 4× on a GPU; none on Mesa's software renderers, where 4× halves the frame
+  // rate and its 4× larger framebuffer evicts the simulation's data from the caches between steps.
+  int samples = options.samples;
+  if (samples < 0) {
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string r = renderer ? renderer : "";
+    const bool software = r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos;
+    samples = software ? 0 : 4;
+  }
+  gl = render::GlRenderer::create(std::max(fb_width(), 1), std::max(fb_height(), 1), samples, error);
   return gl != nullptr;
 }
 

@@ -27,6 +27,7 @@ struct ViewerOptions {
   std::string screenshot;                // picture of the 3D view written when quitting
   std::string input_script;              // scripted input (viewer/input_script.h)
   bool stats = false;                    // print frame and step timings when quitting
+  int samples = -1;                      // multisampling; -1: 4, none on a software renderer
 };
 
 // Loads options.scene and runs until the window closes; the process exit code.
