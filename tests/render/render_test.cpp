@@ -280,5 +280,35 @@ TEST_F(RenderTest, TetrahedronFEMForceFieldSceneBendsBetweenSteps0And100) {
   EXPECT_GT(lowest(last), lowest(first) + 3);
 }
 
+// The other check: SOFA's liver.scn (a red OglModel mapped from a tetrahedral FEM body,
+// with collision) at steps 0 and 100: two different, non-blank pictures of a red liver.
+TEST_F(RenderTest, LiverSceneIsRedAndMovesBetweenSteps0And100) {
+  const std::string root_dir = SINEW_DATA_DIR;
+  const std::string scene = root_dir + "/examples/Demos/liver.scn";
+  if (!std::filesystem::exists(scene)) GTEST_SKIP() << "SOFA data not found at " << root_dir;
+  runner::SessionOptions so;
+  so.data_paths = runner::sofa_data_paths(root_dir);
+  runner::Session session(scene, so);
+  ASSERT_TRUE(session.ok());
+  std::string err;
+  ASSERT_TRUE(renderer_->frame(session.root(), &err)) << err;
+  const Image first = render(session.root());
+  for (int i = 0; i < 100; ++i) ASSERT_TRUE(session.step());
+  const Image last = render(session.root());
+  // Red dominant (the specular highlights are pink, the grazing edges dark red).
+  auto reddish = [](auto c) { return c[0] > 20 && c[0] > c[1] + 10 && c[0] > c[2] + 10; };
+  const long red0 = count_if(first, reddish), red1 = count_if(last, reddish);
+  const long lit0 = count_if(first, [](auto c) { return !is_background(c); });
+  RecordProperty("red0", static_cast<int>(red0));
+  RecordProperty("red100", static_cast<int>(red1));
+  EXPECT_GT(red0, 2000);
+  EXPECT_GT(red1, 2000);
+  EXPECT_GT(red0, 0.97 * lit0);  // the liver is all there is, and it is red
+  long changed = 0;
+  for (std::size_t i = 0; i < first.rgba.size(); i += 4) changed += first.rgba[i] != last.rgba[i];
+  RecordProperty("changed_pixels", static_cast<int>(changed));
+  EXPECT_GT(changed, 500);
+}
+
 }  // namespace
 }  // namespace sinew
