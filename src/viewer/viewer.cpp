@@ -174,6 +174,7 @@ bool ViewerApp::load(std::string* error) {
   selected = nullptr;
   session = std::move(s);
   root_ = &session->root();
+  list = {};  // its batches name the old graph's components
   attach_stiffness = stiffness_setting(root());
   return true;
 }
@@ -227,7 +228,7 @@ bool ViewerApp::reload_scene() {
     status = err;
     return false;
   }
-  frame_camera(false);  // keep the user's way of looking at it? SOFA frames the new scene
+  frame_camera(true);  // as when opened: the scene's camera, then its .view file
   status = "reloaded " + options.scene;
   return true;
 }
