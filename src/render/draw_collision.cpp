@@ -48,8 +48,7 @@ Shading flat_color(const std::array<float, 4>& c, bool lit) {
 }
 
 void triangles(DrawList& list, const TriangleCollisionModel& m, const std::array<float, 4>& color, bool wireframe) {
-  Batch& b = next_batch(list, &m, Batch::Kind::triangles);
-  b.positions.clear(), b.normals.clear(), b.colors.clear(), b.indices.clear();
+  Batch& b = fresh_batch(list, &m, Batch::Kind::triangles);
   const MechanicalState& s = *m.mstate();
   for (unsigned i = 0; i < m.size(); ++i) {
     const Triangle& t = m.triangle(i);
@@ -64,16 +63,11 @@ void triangles(DrawList& list, const TriangleCollisionModel& m, const std::array
   }
   b.shading = flat_color(color, true);
   b.wireframe = wireframe;
-  if (b.positions.empty()) {
-    --list.used;
-    return;
-  }
-  grow_bounds(list, b.positions);
+  close_batch(list, b);
 }
 
 void lines_of(DrawList& list, const CollisionModelBase& m, const std::array<float, 4>& color) {
-  Batch& b = next_batch(list, &m, Batch::Kind::lines);
-  b.positions.clear(), b.normals.clear(), b.colors.clear(), b.indices.clear();
+  Batch& b = fresh_batch(list, &m, Batch::Kind::lines);
   const MechanicalState& s = *m.mstate();
   float p[4][3];
   if (m.kind() == CollisionModelBase::Kind::line) {
@@ -94,34 +88,24 @@ void lines_of(DrawList& list, const CollisionModelBase& m, const std::array<floa
     }
   }
   b.shading = flat_color(color, false);
-  if (b.positions.empty()) {
-    --list.used;
-    return;
-  }
-  grow_bounds(list, b.positions);
+  close_batch(list, b);
 }
 
 void points_of(DrawList& list, const CollisionModelBase& m, const std::array<float, 4>& color) {
-  Batch& b = next_batch(list, &m, Batch::Kind::points);
-  b.positions.clear(), b.normals.clear(), b.colors.clear(), b.indices.clear();
+  Batch& b = fresh_batch(list, &m, Batch::Kind::points);
   const MechanicalState& s = *m.mstate();
   float p[3];
   for (unsigned i = 0; i < s.size(); ++i)
     if (point(s, i, p)) push(b.positions, p);
   b.shading = flat_color(color, false);
   b.point_size = 3.f;
-  if (b.positions.empty()) {
-    --list.used;
-    return;
-  }
-  grow_bounds(list, b.positions);
+  close_batch(list, b);
 }
 
 // Each sphere as a latitude–longitude mesh of 8 × 12 quads (SOFA's drawSpheres tessellates too).
 void spheres(DrawList& list, const SphereCollisionModel& m, const std::array<float, 4>& color, bool wireframe) {
   constexpr int kLat = 8, kLon = 12;
-  Batch& b = next_batch(list, &m, Batch::Kind::triangles);
-  b.positions.clear(), b.normals.clear(), b.colors.clear(), b.indices.clear();
+  Batch& b = fresh_batch(list, &m, Batch::Kind::triangles);
   for (unsigned i = 0; i < m.size(); ++i) {
     const SphereElem e = m.elem(i);
     if (!(e.r > 0) || !e.c.allFinite()) continue;
@@ -143,11 +127,7 @@ void spheres(DrawList& list, const SphereCollisionModel& m, const std::array<flo
   }
   b.shading = flat_color(color, true);
   b.wireframe = wireframe;
-  if (b.positions.empty()) {
-    --list.used;
-    return;
-  }
-  grow_bounds(list, b.positions);
+  close_batch(list, b);
 }
 
 // The cubes of every level of the bounding tree by their twelve edges, the root white and
@@ -155,8 +135,7 @@ void spheres(DrawList& list, const SphereCollisionModel& m, const std::array<flo
 void bounding_tree(DrawList& list, const CollisionModelBase& m) {
   const CubeTree& t = m.tree();
   if (!t.built()) return;
-  Batch& b = next_batch(list, &m, Batch::Kind::lines);
-  b.positions.clear(), b.normals.clear(), b.colors.clear(), b.indices.clear();
+  Batch& b = fresh_batch(list, &m, Batch::Kind::lines);
   const auto& levels = t.levels();
   for (std::size_t l = 0; l < levels.size(); ++l) {
     const float f = levels.size() > 1 ? float(l) / float(levels.size() - 1) : 0.f;
@@ -178,11 +157,7 @@ void bounding_tree(DrawList& list, const CollisionModelBase& m) {
       }
     }
   }
-  if (b.positions.empty()) {
-    --list.used;
-    return;
-  }
-  grow_bounds(list, b.positions);
+  close_batch(list, b);
 }
 
 }  // namespace

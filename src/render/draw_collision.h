@@ -19,6 +19,18 @@ namespace sinew::render {
 Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind);
 void grow_bounds(DrawList& list, const std::vector<float>& x);
 
+// A batch rebuilt from nothing this frame (its arrays emptied, their storage kept), and its
+// end: dropped when it drew nothing, else counted in the list's bounds.
+inline Batch& fresh_batch(DrawList& list, const Component* source, Batch::Kind kind) {
+  Batch& b = next_batch(list, source, kind);
+  b.positions.clear(), b.normals.clear(), b.colors.clear(), b.indices.clear();
+  return b;
+}
+inline void close_batch(DrawList& list, const Batch& b) {
+  if (b.positions.empty()) --list.used;
+  else grow_bounds(list, b.positions);
+}
+
 // Springs (SpringForceField and the force fields built on it) of `node`: draw_springs.cpp.
 void add_springs(DrawList& list, Node& node, const DisplayFlags& flags);
 

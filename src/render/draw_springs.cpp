@@ -34,8 +34,7 @@ void add_springs(DrawList& list, Node& node, const DisplayFlags& flags) {
     if (!flags.shown(external ? DisplayFlags::interaction_force_fields : DisplayFlags::force_fields)) continue;
     static const float kCompressed[2][4] = {{1, 0.5f, 0, 1}, {1, 0, 0, 1}};  // [external]
     static const float kStretched[2][4] = {{0, 1, 0.5f, 1}, {0, 1, 0, 1}};
-    Batch& b = next_batch(list, ff, Batch::Kind::lines);
-    b.positions.clear(), b.normals.clear(), b.colors.clear(), b.indices.clear();
+    Batch& b = fresh_batch(list, ff, Batch::Kind::lines);
     for (const auto* springs : {&ff->spring_list(), &ff->grid_springs()})
       for (const springs::LinearSpring& sp : *springs) {
         if (!sp.enabled) continue;
@@ -48,11 +47,7 @@ void add_springs(DrawList& list, Node& node, const DisplayFlags& flags) {
         b.positions.insert(b.positions.end(), c, c + 3);
         for (int k = 0; k < 2; ++k) b.colors.insert(b.colors.end(), rgba, rgba + 4);
       }
-    if (b.positions.empty()) {
-      --list.used;
-      continue;
-    }
-    grow_bounds(list, b.positions);
+    close_batch(list, b);
   }
 }
 
