@@ -27,6 +27,7 @@
 #include "runner/probes.h"
 #include "runner/regress.h"
 #include "runner/session.h"
+#include "viewer/viewer.h"
 
 namespace sinew::cli {
 
@@ -308,6 +309,36 @@ int render(const RenderArgs& a) {
   std::printf("%s: %ld steps, picture %dx%d written to %s (%s)\n", a.scene.c_str(), session.steps_done(), width,
               height, a.output.c_str(), renderer->gl_description().c_str());
   return ok ? 0 : 1;
+}
+
+int view(const ViewArgs& a) {
+  viewer::ViewerOptions o;
+  o.scene = a.scene;
+  o.data_paths = data_paths_for(a.data_paths);
+  o.script_args = a.script_args;
+  o.play = a.play;
+  o.screenshot = a.screenshot;
+  o.input_script = a.script;
+  o.stats = a.stats;
+  if (a.samples != -1 && (a.samples < 0 || a.samples > 16)) {
+    std::fprintf(stderr, "sinew: --samples takes 0 to 16\n");
+    return 1;
+  }
+  o.samples = a.samples;
+  if (a.quit_after < 0) {
+    std::fprintf(stderr, "sinew: --quit-after must be >= 0\n");
+    return 1;
+  }
+  o.quit_after = a.quit_after;
+  if (!a.size.empty()) {
+    char tail = 0;
+    if (std::sscanf(a.size.c_str(), "%dx%d%c", &o.width, &o.height, &tail) != 2 || o.width <= 0 || o.height <= 0 ||
+        o.width > 16384 || o.height > 16384) {
+      std::fprintf(stderr, "sinew: --size must be WIDTHxHEIGHT (e.g. 1024x768), not '%s'\n", a.size.c_str());
+      return 1;
+    }
+  }
+  return viewer::run_viewer(o);
 }
 
 int check(const CheckArgs& a) {

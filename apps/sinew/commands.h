@@ -33,6 +33,21 @@ struct RenderArgs {
 // Steps a scene and writes off-screen pictures of its visual models (src/render).
 int render(const RenderArgs& a);
 
+struct ViewArgs {
+  std::string scene;
+  bool play = false;
+  long quit_after = 0;
+  std::string screenshot;
+  std::string script;
+  std::string size;  // WxH; empty: the scene's ViewerSetting, else 1024x768
+  bool stats = false;
+  int samples = -1;
+  std::vector<std::string> data_paths;
+  std::vector<std::string> script_args;
+};
+// Opens a scene in the interactive viewer (src/viewer).
+int view(const ViewArgs& a);
+
 struct CheckArgs {
   std::vector<std::string> scenes;
   std::vector<std::string> data_paths;

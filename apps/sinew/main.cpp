@@ -31,6 +31,21 @@ int main(int argc, char** argv) {
   bool hide_progress = false;
   run_cmd->add_flag("--hideProgressBar", hide_progress, "no progress bar");
 
+  ViewArgs view_args;
+  auto* view_cmd = app.add_subcommand("view", "open a scene in the interactive viewer (OpenGL window, Dear ImGui)");
+  view_cmd->add_option("scene", view_args.scene, "scene file (.scn, .xml or SofaPython3 .py)")->required();
+  view_cmd->add_flag("--play", view_args.play, "start animating at once (else press Space)");
+  view_cmd->add_option("--quit-after", view_args.quit_after, "close after this many frames (scripted use)");
+  view_cmd->add_option("--screenshot", view_args.screenshot, "PNG of the 3D view written when the viewer closes");
+  view_cmd->add_option("--script", view_args.script,
+                       "input events to replay, one per line: FRAME COMMAND [ARGS] (docs/viewer.md)");
+  view_cmd->add_option("--size", view_args.size, "window size WxH (default: the scene's ViewerSetting, else 1024x768)");
+  view_cmd->add_option("--samples", view_args.samples,
+                       "multisampling (default 4, none with Mesa's software renderer)");
+  view_cmd->add_flag("--stats", view_args.stats, "print frames per second and step times when closing");
+  view_cmd->add_option("--data-path", view_args.data_paths, "extra folder searched for meshes and includes");
+  view_cmd->add_option("--argv", view_args.script_args, "arguments given to a Python scene (its sys.argv[1:])");
+
   RenderArgs render_args;
   auto* render_cmd = app.add_subcommand("render", "run a scene and write a picture of it (off-screen OpenGL, no window)");
   render_cmd->add_option("scene", render_args.scene, "scene file (.scn, .xml or SofaPython3 .py)")->required();
@@ -73,6 +88,7 @@ int main(int argc, char** argv) {
     return run(run_args);
   }
   if (*render_cmd) return render(render_args);
+  if (*view_cmd) return view(view_args);
   if (*check_cmd) return check(check_args);
   if (*comp_cmd) return components(component_name);
   if (*reg_cmd) {

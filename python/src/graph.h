@@ -24,6 +24,7 @@ void define_constraint_solver(py::module_& m);  // W, lambda_force, dfree (Sofa.
 py::object scipy_csr(const std::vector<double>& values, const std::vector<std::int32_t>& cols,
                      const std::vector<std::int32_t>& row_begin, std::size_t n_rows, std::size_t n_cols);
 void define_simulation(py::module_& m);  // init, animate, reset, load, messages, factory
+void define_gui(py::module_& m);         // the viewer under Sofa.Gui.GUIManager
 
 // (kinetic, potential) energy of the subtree (SOFA's MechanicalComputeEnergyVisitor).
 py::tuple compute_energy(Node& node);

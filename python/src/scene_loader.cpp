@@ -22,6 +22,7 @@ void define_module(py::module_& m) {
   define_data(m);
   define_graph(m);
   define_simulation(m);
+  define_gui(m);
 }
 
 namespace {

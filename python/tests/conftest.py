@@ -47,3 +47,26 @@ def run_sinew(sinew_bin, sofa_data):
         return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
 
     return run
+
+
+@pytest.fixture(scope="session")
+def display():
+    """A private X display (Xvfb) for the viewer's window; skips when Xvfb is absent."""
+    import shutil
+
+    xvfb = shutil.which("Xvfb")
+    if not xvfb:
+        pytest.skip("Xvfb is not installed (Debian: xvfb)")
+    # -displayfd: Xvfb picks a free display number and writes it to the pipe when ready.
+    r, w = os.pipe()
+    proc = subprocess.Popen([xvfb, "-displayfd", str(w), "-screen", "0", "1280x1024x24", "-nolisten", "tcp"],
+                            pass_fds=(w,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    os.close(w)
+    with os.fdopen(r) as f:
+        number = f.readline().strip()
+    if not number:
+        proc.kill()
+        pytest.skip("Xvfb did not start")
+    yield ":" + number
+    proc.terminate()
+    proc.wait(timeout=10)

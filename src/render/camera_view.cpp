@@ -11,17 +11,9 @@ namespace sinew::render {
 
 namespace {
 
-struct Frame {
-  Vec3 position;
-  Mat3 rotation;  // columns: the camera's x, y, z in the world (it looks along −z)
-  double fov_deg = 45.0;
-  bool ortho = false;
-  Vec3 look_at;
-};
-
 // BaseCamera::setDefaultView.
-Frame default_frame(const Vec3& gravity, const Vec3& min, const Vec3& max) {
-  Frame f;
+CameraFrame default_frame(const Vec3& gravity, const Vec3& min, const Vec3& max) {
+  CameraFrame f;
   const Vec3 centre = (min + max) * 0.5;
   Vec3 x(1, 0, 0);
   Vec3 y = gravity == Vec3::Zero() ? Vec3(0, 1, 0) : Vec3(-gravity);
@@ -48,17 +40,16 @@ const BaseCamera* find_camera(const Node& node) {
 
 }  // namespace
 
-View view_for(const Node& root, const Vec3& min, const Vec3& max, int width, int height) {
-  View v;
+CameraFrame camera_frame(const Node& root, const Vec3& min, const Vec3& max, bool* from_scene) {
   const BaseCamera* cam = find_camera(root);
-  Frame f;
-  if (cam && !cam->wants_default_view()) {
+  CameraFrame f;
+  const bool scene = cam && !cam->wants_default_view();
+  if (scene) {
     f.position = cam->position.get();
     f.rotation = quat_matrix(cam->orientation.get());
     f.fov_deg = cam->field_of_view.get();
     f.ortho = cam->orthographic();
     f.look_at = cam->look_at.get();
-    v.from_scene_camera = true;
   } else {
     f = default_frame(root.gravity.get(), min, max);
     if (cam) {
@@ -66,6 +57,21 @@ View view_for(const Node& root, const Vec3& min, const Vec3& max, int width, int
       f.ortho = cam->orthographic();
     }
   }
+  if (from_scene) *from_scene = scene;
+  return f;
+}
+
+View view_for(const Node& root, const Vec3& min, const Vec3& max, int width, int height) {
+  bool scene = false;
+  const CameraFrame f = camera_frame(root, min, max, &scene);
+  View v = view_of(f, root, min, max, width, height);
+  v.from_scene_camera = scene;
+  return v;
+}
+
+View view_of(const CameraFrame& f, const Node& root, const Vec3& min, const Vec3& max, int width, int height) {
+  View v;
+  const BaseCamera* cam = find_camera(root);
   v.eye = f.position;
 
   // World → eye: the inverse of the camera's rigid frame.

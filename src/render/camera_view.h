@@ -22,6 +22,25 @@ struct View {
   bool from_scene_camera = false;
 };
 
+// Where a camera is and how it projects: the rigid frame (it looks along −z of `rotation`),
+// the vertical field of view, and the point it looks at.
+struct CameraFrame {
+  Vec3 position = Vec3::Zero();
+  Mat3 rotation = Mat3::Identity();  // columns: the camera's x, y, z in the world
+  double fov_deg = 45.0;
+  bool ortho = false;
+  Vec3 look_at = Vec3::Zero();
+};
+
+// The frame of the scene's first active camera, else SOFA's default view of [min, max]
+// (with the camera's field of view and projection type when it asks for the default view).
+// *from_scene (optional) tells which.
+CameraFrame camera_frame(const Node& root, const Vec3& min, const Vec3& max, bool* from_scene = nullptr);
+
+// The view of `frame`: clip planes from the scene camera (or computed from [min, max]
+// as BaseCamera::computeZ does), projection for a width × height picture.
+View view_of(const CameraFrame& frame, const Node& root, const Vec3& min, const Vec3& max, int width, int height);
+
 // `min`/`max`: the scene's bounding box (the root's `bbox` when set, else what is drawn).
 View view_for(const Node& root, const Vec3& min, const Vec3& max, int width, int height);
 

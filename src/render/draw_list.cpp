@@ -6,12 +6,11 @@
 #include <Eigen/Geometry>
 
 #include "core/node.h"
+#include "render/draw_collision.h"
 #include "visual/ogl_model.h"
 #include "visual/visual_style.h"
 
 namespace sinew::render {
-
-namespace {
 
 // The next batch of the list, reused when the same component drew it last frame.
 Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind) {
@@ -42,6 +41,8 @@ void grow_bounds(DrawList& list, const std::vector<float>& x) {
     }
   }
 }
+
+namespace {
 
 // Vertices drawn by a visual model (VisualModelImpl::getVertices): its `vertices` when it has
 // some, refreshed from the positions through vertPosIdx (computePositions), else its positions.
@@ -218,6 +219,11 @@ void visit(Node& node, const DisplayFlags& inherited, DrawList& list, std::vecto
     for (const auto& o : node.objects())
       if (const auto* m = dynamic_cast<const OglModel*>(o.get()))
         add_visual_model(list, *m, flags.shown(DisplayFlags::wireframe));
+
+  if (flags.shown(DisplayFlags::collision_models) || flags.shown(DisplayFlags::bounding_collision_models))
+    add_collision_models(list, node, flags);
+  if (flags.shown(DisplayFlags::force_fields) || flags.shown(DisplayFlags::interaction_force_fields))
+    add_springs(list, node, flags);
 
   MechanicalState* state = node.mechanical_state;
   if (state && state->state() == ComponentState::valid) {

@@ -31,13 +31,13 @@ class Node;
 namespace sinew::render {
 
 struct Batch {
-  enum class Kind { triangles, points };
+  enum class Kind { triangles, points, lines };
   Kind kind = Kind::triangles;
   const Component* source = nullptr;
   std::vector<float> positions;  // x y z per vertex
   std::vector<float> normals;    // x y z per vertex (triangles)
   std::vector<float> colors;     // r g b a per vertex; empty: shading.diffuse for all
-  std::vector<unsigned> indices;  // triangles; empty: vertices taken three by three
+  std::vector<unsigned> indices;  // triangles; empty: vertices taken three by three (two by two for lines)
   Shading shading{};
   float color_ambient = 0.f;  // ambient term proportional to the vertex colour (SOFA's draw tool)
   float point_size = 1.f;

@@ -86,38 +86,11 @@ void upload(GLenum target, unsigned buffer, const void* data, std::size_t bytes,
 
 std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int samples, std::string* error) {
   std::unique_ptr<GlRenderer> r(new GlRenderer);
-  r->width_ = width, r->height_ = height;
   GLint max_samples = 0;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   r->samples_ = std::max(0, std::min(samples, static_cast<int>(max_samples)));
 
-  glGenFramebuffers(1, &r->fbo_);
-  glBindFramebuffer(GL_FRAMEBUFFER, r->fbo_);
-  glGenRenderbuffers(1, &r->color_rb_);
-  glBindRenderbuffer(GL_RENDERBUFFER, r->color_rb_);
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, r->samples_, GL_RGBA8, width, height);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, r->color_rb_);
-  glGenRenderbuffers(1, &r->depth_rb_);
-  glBindRenderbuffer(GL_RENDERBUFFER, r->depth_rb_);
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, r->samples_, GL_DEPTH_COMPONENT24, width, height);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, r->depth_rb_);
-  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-    if (error) *error = "the off-screen framebuffer is incomplete (size " + std::to_string(width) + "x" +
-                        std::to_string(height) + ")";
-    return nullptr;
-  }
-  if (r->samples_ > 0) {  // single-sample target the multisampled picture is resolved into
-    glGenFramebuffers(1, &r->resolve_fbo_);
-    glBindFramebuffer(GL_FRAMEBUFFER, r->resolve_fbo_);
-    glGenRenderbuffers(1, &r->resolve_rb_);
-    glBindRenderbuffer(GL_RENDERBUFFER, r->resolve_rb_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, r->resolve_rb_);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      if (error) *error = "the off-screen resolve framebuffer is incomplete";
-      return nullptr;
-    }
-  }
+  if (!r->allocate(width, height, error)) return nullptr;
 
   const unsigned vs = compile(GL_VERTEX_SHADER, kVertexShader, error);
   if (!vs) return nullptr;
@@ -153,6 +126,64 @@ std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int sample
   return r;
 }
 
+bool GlRenderer::allocate(int width, int height, std::string* error) {
+  release_framebuffers();
+  width_ = width, height_ = height;
+  glGenFramebuffers(1, &fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glGenRenderbuffers(1, &color_rb_);
+  glBindRenderbuffer(GL_RENDERBUFFER, color_rb_);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_RGBA8, width, height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_rb_);
+  glGenRenderbuffers(1, &depth_rb_);
+  glBindRenderbuffer(GL_RENDERBUFFER, depth_rb_);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH_COMPONENT24, width, height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_rb_);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    if (error) *error = "the off-screen framebuffer is incomplete (size " + std::to_string(width) + "x" +
+                        std::to_string(height) + ")";
+    return false;
+  }
+  if (samples_ > 0) {  // single-sample target the multisampled picture is resolved into
+    glGenFramebuffers(1, &resolve_fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
+    glGenRenderbuffers(1, &resolve_rb_);
+    glBindRenderbuffer(GL_RENDERBUFFER, resolve_rb_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_rb_);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      if (error) *error = "the off-screen resolve framebuffer is incomplete";
+      return false;
+    }
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return true;
+}
+
+void GlRenderer::release_framebuffers() {
+  const unsigned rbs[] = {color_rb_, depth_rb_, resolve_rb_};
+  glDeleteRenderbuffers(3, rbs);
+  const unsigned fbos[] = {fbo_, resolve_fbo_};
+  glDeleteFramebuffers(2, fbos);
+  color_rb_ = depth_rb_ = resolve_rb_ = fbo_ = resolve_fbo_ = 0;
+}
+
+bool GlRenderer::resize(int width, int height, std::string* error) {
+  if (width == width_ && height == height_) return true;
+  if (width <= 0 || height <= 0 || width > 16384 || height > 16384) {
+    if (error) *error = "invalid picture size " + std::to_string(width) + "x" + std::to_string(height);
+    return false;
+  }
+  return allocate(width, height, error);
+}
+
+void GlRenderer::present(int width, int height) {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, samples_ > 0 ? resolve_fbo_ : fbo_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 GlRenderer::~GlRenderer() {
   for (GpuBatch& g : gpu_) {
     glDeleteVertexArrays(1, &g.vao);
@@ -160,10 +191,7 @@ GlRenderer::~GlRenderer() {
     glDeleteBuffers(1, &g.ebo);
   }
   if (program_) glDeleteProgram(program_);
-  const unsigned rbs[] = {color_rb_, depth_rb_, resolve_rb_};
-  glDeleteRenderbuffers(3, rbs);
-  const unsigned fbos[] = {fbo_, resolve_fbo_};
-  glDeleteFramebuffers(2, fbos);
+  release_framebuffers();
 }
 
 void GlRenderer::draw(const DrawList& list, const View& view, const std::array<float, 4>& background) {
@@ -219,6 +247,9 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
     if (b.kind == Batch::Kind::points) {
       glUniform1i(u_lit_, 0);
       glDrawArrays(GL_POINTS, 0, n);
+    } else if (b.kind == Batch::Kind::lines) {
+      glUniform1i(u_lit_, 0);
+      glDrawArrays(GL_LINES, 0, n);
     } else {
       glUniform1i(u_lit_, 1);
       glPolygonMode(GL_FRONT_AND_BACK, b.wireframe ? GL_LINE : GL_FILL);

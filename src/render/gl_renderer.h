@@ -27,9 +27,17 @@ class GlRenderer {
   void draw(const DrawList& list, const View& view, const std::array<float, 4>& background);
   // The last drawn picture, top row first.
   void read(Image& out);
+  // New picture size (the viewer's window was resized); buffers of the batches are kept.
+  bool resize(int width, int height, std::string* error);
+  // Copies the last drawn picture into the window's framebuffer (0), width × height pixels.
+  void present(int width, int height);
+  int width() const { return width_; }
+  int height() const { return height_; }
 
  private:
   GlRenderer() = default;
+  bool allocate(int width, int height, std::string* error);
+  void release_framebuffers();
   struct GpuBatch {
     unsigned vao = 0, vbo[3] = {0, 0, 0}, ebo = 0;
     std::size_t capacity[4] = {0, 0, 0, 0};  // bytes: positions, normals, colours, indices

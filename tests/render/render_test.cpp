@@ -49,6 +49,26 @@ class RenderTest : public ::testing::Test {
     EXPECT_TRUE(renderer_->render(root, img, &err)) << err;
     return img;
   }
+  // Pictures of SOFA's example `scene` (under examples/) when loaded and after 100 steps, the
+  // view framed at loading as a viewer does; false when the SOFA data are absent.
+  bool pictures_at_0_and_100(const std::string& scene, Image& first, Image& last) {
+    const std::string root_dir = SINEW_DATA_DIR;
+    const std::string path = root_dir + "/examples/" + scene;
+    if (!std::filesystem::exists(path)) return false;
+    runner::SessionOptions so;
+    so.data_paths = runner::sofa_data_paths(root_dir);
+    runner::Session session(path, so);
+    if (!session.ok()) {
+      ADD_FAILURE() << scene << " does not load";
+      return true;
+    }
+    std::string err;
+    EXPECT_TRUE(renderer_->frame(session.root(), &err)) << err;
+    first = render(session.root());
+    for (int i = 0; i < 100; ++i) EXPECT_TRUE(session.step());
+    last = render(session.root());
+    return true;
+  }
   std::unique_ptr<render::OffscreenRenderer> renderer_;
 };
 
@@ -246,18 +266,9 @@ TEST_F(RenderTest, NothingVisibleIsAnError) {
 // The check: SOFA's TetrahedronFEMForceField.scn (no visual model: its VisualStyle shows
 // behaviour models and force fields) at steps 0 and 100 gives two different, non-blank pictures.
 TEST_F(RenderTest, TetrahedronFEMForceFieldSceneBendsBetweenSteps0And100) {
-  const std::string root_dir = SINEW_DATA_DIR;
-  const std::string scene = root_dir + "/examples/Component/SolidMechanics/FEM/TetrahedronFEMForceField.scn";
-  if (!std::filesystem::exists(scene)) GTEST_SKIP() << "SOFA data not found at " << root_dir;
-  runner::SessionOptions so;
-  so.data_paths = runner::sofa_data_paths(root_dir);
-  runner::Session session(scene, so);
-  ASSERT_TRUE(session.ok());
-  std::string err;
-  ASSERT_TRUE(renderer_->frame(session.root(), &err)) << err;
-  const Image first = render(session.root());
-  for (int i = 0; i < 100; ++i) ASSERT_TRUE(session.step());
-  const Image last = render(session.root());
+  Image first, last;
+  if (!pictures_at_0_and_100("Component/SolidMechanics/FEM/TetrahedronFEMForceField.scn", first, last))
+    GTEST_SKIP() << "SOFA data not found at " << SINEW_DATA_DIR;
   const long lit0 = count_if(first, [](auto c) { return !is_background(c); });
   const long lit1 = count_if(last, [](auto c) { return !is_background(c); });
   RecordProperty("lit0", static_cast<int>(lit0));
@@ -265,7 +276,8 @@ TEST_F(RenderTest, TetrahedronFEMForceFieldSceneBendsBetweenSteps0And100) {
   EXPECT_GT(lit0, 2000);
   EXPECT_GT(lit1, 2000);
   long changed = 0;
-  for (std::size_t i = 0; i < first.rgba.size(); i += 4) changed += first.rgba[i + 2] != last.rgba[i + 2];
+  for (std::size_t i = 0; i < std::min(first.rgba.size(), last.rgba.size()); i += 4)
+    changed += first.rgba[i + 2] != last.rgba[i + 2];
   EXPECT_GT(changed, 500);
   // The free ends (towards the camera) sag under gravity: the lowest lit row moves down.
   auto lowest = [](const Image& img) {
@@ -278,6 +290,28 @@ TEST_F(RenderTest, TetrahedronFEMForceFieldSceneBendsBetweenSteps0And100) {
   RecordProperty("lowest_row_0", lowest(first));
   RecordProperty("lowest_row_100", lowest(last));
   EXPECT_GT(lowest(last), lowest(first) + 3);
+}
+
+// The other check: SOFA's liver.scn (a red OglModel mapped from a tetrahedral FEM body,
+// with collision) at steps 0 and 100: two different, non-blank pictures of a red liver.
+TEST_F(RenderTest, LiverSceneIsRedAndMovesBetweenSteps0And100) {
+  Image first, last;
+  if (!pictures_at_0_and_100("Demos/liver.scn", first, last))
+    GTEST_SKIP() << "SOFA data not found at " << SINEW_DATA_DIR;
+  // Red dominant (the specular highlights are pink, the grazing edges dark red).
+  auto reddish = [](auto c) { return c[0] > 20 && c[0] > c[1] + 10 && c[0] > c[2] + 10; };
+  const long red0 = count_if(first, reddish), red1 = count_if(last, reddish);
+  const long lit0 = count_if(first, [](auto c) { return !is_background(c); });
+  RecordProperty("red0", static_cast<int>(red0));
+  RecordProperty("red100", static_cast<int>(red1));
+  EXPECT_GT(red0, 2000);
+  EXPECT_GT(red1, 2000);
+  EXPECT_GT(red0, 0.97 * lit0);  // the liver is all there is, and it is red
+  long changed = 0;
+  for (std::size_t i = 0; i < std::min(first.rgba.size(), last.rgba.size()); i += 4)
+    changed += first.rgba[i] != last.rgba[i];
+  RecordProperty("changed_pixels", static_cast<int>(changed));
+  EXPECT_GT(changed, 500);
 }
 
 }  // namespace

@@ -1,0 +1,129 @@
+// What the display flags add to pictures, as SOFA's components draw themselves: collision
+// models (showCollisionModels), bounding trees (showBoundingCollisionModels), springs
+// (showForceFields / showInteractionForceFields).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+
+#include "render/draw_collision.h"
+#include "render/offscreen.h"
+#include "test_scene.h"
+
+namespace sinew {
+namespace {
+
+// A 1 × 1 square at z = 0.5 (two triangles) with a triangle collision model, 4.5 in front of
+// the camera; `flags` go to the root's VisualStyle.
+std::string square_scene(const std::string& flags, const std::string& model_attrs = "") {
+  return R"(<Node name="root" gravity="0 0 0">
+      <VisualStyle displayFlags=")" + flags + R"("/>
+      <InteractiveCamera position="0 0 5" lookAt="0 0 0"/>
+      <CollisionPipeline/> <BruteForceBroadPhase/> <BVHNarrowPhase/>
+      <MinProximityIntersection alarmDistance="0.1" contactDistance="0.05"/>
+      <CollisionResponse/>
+      <Node name="square">
+        <MechanicalObject position="-0.5 -0.5 0.5  0.5 -0.5 0.5  0.5 0.5 0.5  -0.5 0.5 0.5"/>
+        <TriangleSetTopologyContainer triangles="0 1 2  0 2 3"/>
+        <TriangleCollisionModel )" + model_attrs + R"(/>
+      </Node>
+    </Node>)";
+}
+
+TEST(CollisionColor, SofaDefaultsTellSimulatedMovingActiveApart) {
+  const std::array<float, 4> red{1, 0, 0, 1};
+  using A = std::array<float, 4>;
+  EXPECT_EQ(render::collision_color(true, red, false, false, false), red);
+  EXPECT_EQ(render::collision_color(false, red, true, true, true), (A{1, 0.5f, 0, 1}));
+  EXPECT_EQ(render::collision_color(false, red, true, true, false), (A{0.5f, 0.25f, 0, 1}));
+  EXPECT_EQ(render::collision_color(false, red, true, false, true), (A{1, 0, 0, 1}));
+  EXPECT_EQ(render::collision_color(false, red, false, true, true), (A{0, 1, 0.5f, 1}));
+  EXPECT_EQ(render::collision_color(false, red, false, false, true), (A{0.5f, 0.5f, 0.5f, 1}));
+  EXPECT_EQ(render::collision_color(false, red, false, false, false), (A{0.25f, 0.25f, 0.25f, 1}));
+}
+
+TEST(CollisionDraw, TrianglesAndBoundingTreeInTheDrawList) {
+  auto hidden = test::load(square_scene("showVisualModels"));
+  render::DrawList list;
+  render::gather(*hidden.root, list);
+  EXPECT_EQ(list.used, 0u);  // the viewer's defaults hide collision models
+
+  auto s = test::load(square_scene("showCollisionModels showBoundingCollisionModels"));
+  animate(*s.root);  // the bounding tree is built by the collision stage
+  render::gather(*s.root, list);
+  ASSERT_EQ(list.used, 2u);
+  const render::Batch& tris = list.batches[0];
+  EXPECT_EQ(tris.kind, render::Batch::Kind::triangles);
+  EXPECT_EQ(tris.vertex_count(), 6u);
+  for (std::size_t i = 0; i < 6; ++i) EXPECT_FLOAT_EQ(tris.normals[3 * i + 2], 1.f);
+  EXPECT_EQ(tris.shading.diffuse, (std::array<float, 4>{1, 0.5f, 0, 1}));  // simulated, moving, active
+  const render::Batch& tree = list.batches[1];
+  EXPECT_EQ(tree.kind, render::Batch::Kind::lines);
+  EXPECT_EQ(tree.vertex_count() % 24, 0u);  // twelve edges per cube
+  EXPECT_GE(tree.vertex_count(), 24u);
+  // The root cube bounds the square (enlarged by the contact distance at most).
+  EXPECT_NEAR(list.min[0], -0.5, 0.06);
+  EXPECT_NEAR(list.max[1], 0.5, 0.06);
+}
+
+TEST(CollisionDraw, PictureOfTheCollisionSquare) {
+  std::string err;
+  render::RenderOptions o;
+  o.width = 200, o.height = 200, o.samples = 0;
+  auto r = render::OffscreenRenderer::create(o, &err);
+  if (!r) GTEST_SKIP() << "no off-screen OpenGL here (" << err << "); install Mesa (scripts/setup)";
+  auto s = test::load(square_scene("showCollisionModels", "color=\"0 0 1 1\""));
+  render::Image img;
+  ASSERT_TRUE(r->render(*s.root, img, &err)) << err;
+  // 1 × 1 at distance 4.5 with a 45° field of view: (100 / (4.5 tan 22.5°))² pixels.
+  const double side = 100.0 / (4.5 * std::tan(M_PI / 8));
+  long lit = 0;
+  for (int y = 0; y < 200; ++y)
+    for (int x = 0; x < 200; ++x) {
+      const auto c = img.rgb(x, y);
+      lit += c[0] + c[1] + c[2] > 0;
+    }
+  EXPECT_NEAR(lit, side * side, 0.03 * side * side);
+  // The colour set in the scene, lit head-on: diffuse 1 + ambient 0.2, clamped.
+  const auto centre = img.rgb(100, 100);
+  EXPECT_EQ(centre[2], 255);
+  EXPECT_EQ(centre[0] + centre[1], 0);
+}
+
+TEST(SpringDraw, LinesColouredByCompressionAndByKind) {
+  const std::string scene = R"(<Node name="root" gravity="0 0 0">
+      <VisualStyle displayFlags="FLAGS"/>
+      <Node name="a"><MechanicalObject name="a" position="0 0 0  1 0 0  3 0 0"/>
+        <SpringForceField name="inner" spring="0 1 10 0 2"/></Node>
+      <Node name="b"><MechanicalObject name="b" position="0 1 0  0 2 0"/></Node>
+      <SpringForceField name="outer" object1="@a/a" object2="@b/b" spring="0 0 10 0 0.5  2 1 10 0 5"/>
+    </Node>)";
+  auto with = [&](const std::string& flags) {
+    auto s = test::load(std::regex_replace(scene, std::regex("FLAGS"), flags));
+    render::DrawList list;
+    render::gather(*s.root, list);
+    return std::make_pair(std::move(s), std::move(list));
+  };
+  {
+    auto [s, list] = with("showForceFields");  // the spring within one state only
+    ASSERT_EQ(list.used, 1u);
+    const render::Batch& b = list.batches[0];
+    EXPECT_EQ(b.kind, render::Batch::Kind::lines);
+    ASSERT_EQ(b.vertex_count(), 2u);
+    // Length 1 below its rest length 2: compressed, orange.
+    EXPECT_EQ(std::vector<float>(b.colors.begin(), b.colors.begin() + 4), (std::vector<float>{1, 0.5f, 0, 1}));
+    EXPECT_EQ(b.positions[3], 1.f);
+  }
+  {
+    auto [s, list] = with("showInteractionForceFields");  // the two springs between states
+    ASSERT_EQ(list.used, 1u);
+    const render::Batch& b = list.batches[0];
+    ASSERT_EQ(b.vertex_count(), 4u);
+    // (0,0,0)–(0,1,0): length 1 over rest 0.5, stretched: green. (3,0,0)–(0,2,0): 3.6 < 5: red.
+    EXPECT_EQ(std::vector<float>(b.colors.begin(), b.colors.begin() + 4), (std::vector<float>{0, 1, 0, 1}));
+    EXPECT_EQ(std::vector<float>(b.colors.begin() + 8, b.colors.begin() + 12), (std::vector<float>{1, 0, 0, 1}));
+  }
+}
+
+}  // namespace
+}  // namespace sinew
