@@ -208,5 +208,43 @@ TEST(ViewerComponents, ShaderVisualModelIsAnOglModel) {
   EXPECT_EQ(m->bbox.get(), (std::vector<double>{0, 0, 0, 1, 1, 0}));
 }
 
+TEST(ViewerComponents, MergeVisualModelsConcatenates) {
+  auto s = load(R"(<Node name="root">
+      <OglModel name="a" position="0 0 0  1 0 0  0 1 0" triangles="0 1 2" texcoords="0 0 1 0 0 1"/>
+      <OglModel name="b" position="0 0 1  1 0 1  1 1 1  0 1 1" quads="0 1 2 3" triangles="0 1 2"/>
+      <OglModel name="c" position="9 9 9" />
+      <MergeVisualModels name="m" nb="2" input1="@a" input2="@b"/>
+    </Node>)");
+  auto* m = get<OglModel>(*s.root, "m");
+  ASSERT_TRUE(m);
+  EXPECT_EQ(m->visual_size(), 7u);
+  EXPECT_EQ(m->triangles.get(), (std::vector<Triangle>{{0, 1, 2}, {3, 4, 5}}));
+  EXPECT_EQ(m->quads.get(), (std::vector<Quad>{{3, 4, 5, 6}}));
+  EXPECT_EQ(m->texcoords.get().size(), 3u);
+  EXPECT_EQ(m->bbox.get(), (std::vector<double>{0, 0, 0, 1, 1, 1}));
+  // The merged positions follow the inputs after a step.
+  get<OglModel>(*s.root, "b")->position.edit().data[0] = -2.0;
+  Event e;
+  e.kind = Event::Kind::animate_end;
+  m->handle_event(e);
+  EXPECT_EQ(m->position.get().data[9], -2.0);
+  EXPECT_EQ(m->bbox.get()[0], -2.0);
+  TempDir dir;
+  const Outcome o = run_xml(dir, R"(<Node name="root"><MergeVisualModels nb="1" input1="@nothing"/></Node>)", 1);
+  EXPECT_TRUE(any_contains_all(o.errors, {"MergeVisualModels", "input1", "@nothing"})) << o.all();
+}
+
+TEST(ViewerComponents, PointSplatModelData) {
+  auto s = load(R"(<Node name="root"><PointSplatModel name="p" radius="0.25" alpha="0.1" color="cyan"/></Node>)");
+  Component* p = only(*s.root, "p");
+  EXPECT_EQ(text_of(p, "radius"), "0.25");
+  EXPECT_EQ(text_of(p, "textureSize"), "32");
+  EXPECT_EQ(text_of(p, "alpha"), "0.1");
+  TempDir dir;
+  const Outcome o = run_xml(dir, R"(<Node name="root"><PointSplatModel alpha="2" pointData="3 300"/></Node>)", 1);
+  EXPECT_TRUE(any_contains_all(o.errors, {"PointSplatModel", "alpha"})) << o.all();
+  EXPECT_TRUE(any_contains_all(o.errors, {"PointSplatModel", "pointData", "300"})) << o.all();
+}
+
 }  // namespace
 }  // namespace sinew::test
