@@ -7,6 +7,7 @@
 
 #include "core/node.h"
 #include "render/draw_collision.h"
+#include "render/draw_visual.h"
 #include "visual/clip_plane.h"
 #include "visual/ogl_model.h"
 #include "visual/visual_style.h"
@@ -233,6 +234,7 @@ void visit(Node& node, const DisplayFlags& inherited, const ClipPlane* inherited
     for (const auto& o : node.objects())
       if (const auto* m = dynamic_cast<const OglModel*>(o.get()))
         add_visual_model(list, *m, flags.shown(DisplayFlags::wireframe), clip);
+  if (flags.shown(DisplayFlags::visual_models)) add_visual_extras(list, node);
 
   if (flags.shown(DisplayFlags::collision_models) || flags.shown(DisplayFlags::bounding_collision_models))
     add_collision_models(list, node, flags);

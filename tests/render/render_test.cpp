@@ -139,6 +139,25 @@ TEST_F(RenderTest, ClipPlaneRemovesHalfTheCube) {
   EXPECT_NEAR(count_if(img, lit, 100, 200), expected, 0.03 * expected);
 }
 
+// VisualBoundingBox of [-0.5, 0.5]³ seen from z = 5: one-pixel green lines along the front
+// square (half side b pixels), the back square (half side c) and four short joins; the inside
+// stays background.
+TEST_F(RenderTest, VisualBoundingBoxDrawsTwelveEdges) {
+  auto s = test::load(
+      "<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+      "<VisualBoundingBox color=\"green\" bbox=\"-0.5 -0.5 -0.5 0.5 0.5 0.5\"/></Node>");
+  const Image img = render(*s.root);
+  auto green = [](auto c) { return c[1] > 200 && c[0] < 30 && c[2] < 30; };
+  const double f = 100.0 / std::tan(M_PI / 8), b = f * 0.5 / 4.5, c = f * 0.5 / 5.5;
+  const double expected = 8 * b + 8 * c + 4 * (b - c);  // rasterised lines: one pixel per major step
+  const long n = count_if(img, green);
+  RecordProperty("green", static_cast<int>(n));
+  EXPECT_NEAR(n, expected, 0.1 * expected);
+  EXPECT_EQ(count_if(img, green), count_if(img, [](auto c) { return !is_background(c); }));
+  EXPECT_TRUE(is_background(img.rgb(100, 100)));
+  EXPECT_EQ(count_if(img, green, 0, static_cast<int>(100 - b) - 1), 0);  // nothing left of the front square
+}
+
 // Without a camera, SOFA's default view frames the cube: 3 half-diagonals from its centre.
 TEST_F(RenderTest, DefaultViewFramesTheBoundingBox) {
   auto s = test::load("<Node name=\"root\">" + cube("cube", "0 1 0", 0) + "</Node>");
