@@ -39,6 +39,7 @@ TEST(ViewerComponents, ShaderDefaultsAndAliases) {
   EXPECT_EQ(text_of(sh, "passive"), "0");
   EXPECT_EQ(text_of(sh, "clampVertexColor"), "1");
   EXPECT_EQ(text_of(sh, "tessellationOuterLevel"), "6");
+  EXPECT_EQ(text_of(sh, "tessellationInnerLevel"), "6");
   Component* shadow = only(*s.root, "shadow");
   EXPECT_EQ(text_of(shadow, "fileVertexShaders"),
             "shaders/hardShadows/shadowMapping.vert shaders/hardShadows/shadowMapping.vert");

@@ -29,9 +29,16 @@ class OglShader : public VisualComponent {
  public:
   OglShader() {
     for (auto* f : {&vertex, &fragment, &geometry, &tess_control, &tess_eval}) f->set_file(true, /*required=*/false);
-    // One value sets both levels (SOFA's alias on the two Data).
+    // tessellationLevel sets both levels (SOFA puts the alias on the two Data): the outer
+    // level reads it as an alias, parse() copies it to the inner one.
     tess_outer.add_alias("tessellationLevel");
-    tess_inner.add_alias("tessellationLevel");
+  }
+  void parse(AttributeMap& attrs, Diagnostics& diag) override {
+    const std::string* level = attrs.peek("tessellationLevel");
+    const std::string both = level ? *level : std::string();
+    const bool inner_given = attrs.peek("tessellationInnerLevel") != nullptr;
+    Component::parse(attrs, diag);
+    if (level && !inner_given && both.rfind('@', 0) != 0) tess_inner.read(both);
   }
   Field<bool> turn_on{this, "turnOn", true, "use the shader", "Shader"};
   Field<bool> passive{this, "passive", false, "activated by another component rather than automatically", "Shader"};
