@@ -228,14 +228,14 @@ bool read(std::string_view text, std::vector<unsigned>& v) { return read_integra
 
 bool read(std::string_view text, std::vector<std::string>& v) {
   v.clear();
-  // Bracketed quoted form: ["a", "b"]
+  // Bracketed quoted form: ["a", "b"] or Python's ['a', 'b'] (SOFA's scenes write both).
   std::size_t first = text.find_first_not_of(" \t\r\n");
   if (first != std::string_view::npos && text[first] == '[') {
     std::size_t i = first + 1;
     while (i < text.size()) {
-      const std::size_t q = text.find('"', i);
+      const std::size_t q = text.find_first_of("\"'", i);
       if (q == std::string_view::npos) break;
-      const std::size_t e = text.find('"', q + 1);
+      const std::size_t e = text.find(text[q], q + 1);
       if (e == std::string_view::npos) return false;
       v.emplace_back(text.substr(q + 1, e - q - 1));
       i = e + 1;
@@ -451,8 +451,10 @@ SINEW_VEC(16)
 #undef SINEW_VEC
 template bool read<2>(std::string_view, VecNi<2>&);
 template bool read<3>(std::string_view, VecNi<3>&);
+template bool read<4>(std::string_view, VecNi<4>&);
 template std::string to_text<2>(const VecNi<2>&);
 template std::string to_text<3>(const VecNi<3>&);
+template std::string to_text<4>(const VecNi<4>&);
 #define SINEW_ARR(N)                                                              \
   template bool read<N>(std::string_view, std::vector<std::array<unsigned, N>>&); \
   template std::string to_text<N>(const std::vector<std::array<unsigned, N>>&);

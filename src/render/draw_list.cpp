@@ -7,6 +7,8 @@
 
 #include "core/node.h"
 #include "render/draw_collision.h"
+#include "render/draw_visual.h"
+#include "visual/clip_plane.h"
 #include "visual/ogl_model.h"
 #include "visual/visual_style.h"
 
@@ -25,6 +27,7 @@ Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind) {
   b.color_ambient = 0.f;
   b.point_size = 1.f;
   b.wireframe = false;
+  b.clip = {0.f, 0.f, 0.f, 1.f};
   return b;
 }
 
@@ -63,13 +66,18 @@ void model_vertices(const OglModel& m, std::vector<float>& out) {
   }
 }
 
-void add_visual_model(DrawList& list, const OglModel& m, bool wireframe) {
+void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const ClipPlane* clip) {
   if (!m.enable.get() || !m.is_enabled.get() || m.state() != ComponentState::valid) return;
   const auto& tris = m.triangles.get();
   const auto& quads = m.quads.get();
   if (tris.empty() && quads.empty()) return;
   Batch& b = next_batch(list, &m, Batch::Kind::triangles);
   b.wireframe = wireframe;
+  if (clip) {  // kept: (p - position)·normal <= 0, i.e. -normal·p + normal·position >= 0
+    const Vec3 n = clip->normal.get(), at = clip->position.get();
+    b.clip = {static_cast<float>(-n[0]), static_cast<float>(-n[1]), static_cast<float>(-n[2]),
+              static_cast<float>(n.dot(at))};
+  }
   model_vertices(m, b.positions);
   const std::size_t n = b.vertex_count();
   const auto& given = m.normal.get();
@@ -204,8 +212,9 @@ void add_points(DrawList& list, const MechanicalState& state) {
 // SOFA's visual traversal (tree order without repetition): a node is drawn
 // once, reached through the first of its parents visited, with that parent's
 // display flags. `seen` lists the nodes with several parents already drawn.
-void visit(Node& node, const DisplayFlags& inherited, DrawList& list, std::vector<float>& scratch,
-           std::vector<const MechanicalState*>& deferred, std::vector<const Node*>& seen) {
+void visit(Node& node, const DisplayFlags& inherited, const ClipPlane* inherited_clip, DrawList& list,
+           std::vector<float>& scratch, std::vector<const MechanicalState*>& deferred,
+           std::vector<const Node*>& seen) {
   if (!node.activated.value()) return;
   if (node.parents().size() > 1) {
     if (std::find(seen.begin(), seen.end(), &node) != seen.end()) return;
@@ -214,11 +223,18 @@ void visit(Node& node, const DisplayFlags& inherited, DrawList& list, std::vecto
   DisplayFlags flags = inherited;
   for (const auto& o : node.objects())
     if (const auto* s = dynamic_cast<const VisualStyle*>(o.get())) flags = flags.merged(s->flags());
+  // SOFA enables a ClipPlane before drawing its node's models and disables it after its
+  // subtree: the node's own active plane, else the one inherited.
+  const ClipPlane* clip = inherited_clip;
+  for (const auto& o : node.objects())
+    if (const auto* c = dynamic_cast<const ClipPlane*>(o.get()))
+      if (c->active.get() && c->state() == ComponentState::valid) clip = c;
 
   if (flags.shown(DisplayFlags::visual_models))
     for (const auto& o : node.objects())
       if (const auto* m = dynamic_cast<const OglModel*>(o.get()))
-        add_visual_model(list, *m, flags.shown(DisplayFlags::wireframe));
+        add_visual_model(list, *m, flags.shown(DisplayFlags::wireframe), clip);
+  if (flags.shown(DisplayFlags::visual_models)) add_visual_extras(list, node);
 
   if (flags.shown(DisplayFlags::collision_models) || flags.shown(DisplayFlags::bounding_collision_models))
     add_collision_models(list, node, flags);
@@ -245,7 +261,7 @@ void visit(Node& node, const DisplayFlags& inherited, DrawList& list, std::vecto
       else deferred.push_back(state);
     }
   }
-  for (Node* child : node.children()) visit(*child, flags, list, scratch, deferred, seen);
+  for (Node* child : node.children()) visit(*child, flags, clip, list, scratch, deferred, seen);
 }
 
 }  // namespace
@@ -301,7 +317,7 @@ void gather(Node& root, DrawList& out) {
   thread_local std::vector<const Node*> seen;
   deferred.clear();
   seen.clear();
-  visit(root, DisplayFlags::viewer_defaults(), out, scratch, deferred, seen);
+  visit(root, DisplayFlags::viewer_defaults(), nullptr, out, scratch, deferred, seen);
   bool surfaces = false;
   for (std::size_t i = 0; i < out.used; ++i) surfaces |= out.batches[i].kind == Batch::Kind::triangles;
   if (!surfaces)

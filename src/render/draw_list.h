@@ -5,7 +5,8 @@
 //   vertices, SOFA's normals (VisualModelImpl::computeNormals: unnormalised face
 //   normals summed per vertex — per vertNormIdx group across OBJ seams —, quads per
 //   corner, then normalised), its triangles and
-//   its quads split in two, the material's colour.
+//   its quads split in two, the material's colour; a ClipPlane of the model's node or
+//   an ancestor (the nearest active one) removes the half-space its normal points to.
 // - Force fields (showForceFields): the volume elements of a node's topology under a
 //   force field, drawn as SOFA's FEM force fields do (tetrahedra shrunk towards their
 //   centre with four blues, hexahedra shrunk with six face colours), flat shaded.
@@ -17,6 +18,7 @@
 // a frame allocates nothing.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -42,6 +44,9 @@ struct Batch {
   float color_ambient = 0.f;  // ambient term proportional to the vertex colour (SOFA's draw tool)
   float point_size = 1.f;
   bool wireframe = false;  // showWireframe: triangles drawn as their edges
+  // ClipPlane over the model (visual models only): a vertex p is kept where
+  // clip·(p, 1) >= 0 (gl_ClipDistance); (0, 0, 0, 1) keeps everything.
+  std::array<float, 4> clip{0.f, 0.f, 0.f, 1.f};
   std::uint64_t material_version = 0;  // the model's `material` version `shading` was read at (0: none)
   std::size_t vertex_count() const { return positions.size() / 3; }
 };

@@ -17,6 +17,7 @@ layout(location = 2) in vec4 a_color;
 uniform mat4 u_view;
 uniform mat4 u_proj;
 uniform float u_point_size;
+uniform vec4 u_clip;  // ClipPlane: kept where dot(u_clip, (p, 1)) >= 0
 out vec3 v_eye;
 out vec3 v_normal;
 out vec4 v_color;
@@ -27,6 +28,7 @@ void main() {
   v_color = a_color;
   gl_Position = u_proj * eye;
   gl_PointSize = u_point_size;
+  gl_ClipDistance[0] = dot(u_clip, vec4(a_position, 1.0));
 }
 )";
 
@@ -123,6 +125,7 @@ std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int sample
   r->u_lit_ = glGetUniformLocation(p, "u_lit");
   r->u_color_ambient_ = glGetUniformLocation(p, "u_color_ambient");
   r->u_point_size_ = glGetUniformLocation(p, "u_point_size");
+  r->u_clip_ = glGetUniformLocation(p, "u_clip");
   return r;
 }
 
@@ -203,6 +206,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
   glEnable(GL_PROGRAM_POINT_SIZE);
+  glEnable(GL_CLIP_DISTANCE0);
   glUseProgram(program_);
   glUniformMatrix4fv(u_view_, 1, GL_FALSE, view.view.data());  // Eigen is column-major, as GL
   glUniformMatrix4fv(u_proj_, 1, GL_FALSE, view.projection.data());
@@ -243,6 +247,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
     glUniform1f(u_shininess_, b.shading.shininess);
     glUniform1f(u_color_ambient_, b.color_ambient);
     glUniform1f(u_point_size_, b.point_size);
+    glUniform4fv(u_clip_, 1, b.clip.data());
     const GLsizei n = static_cast<GLsizei>(b.vertex_count());
     if (b.kind == Batch::Kind::points) {
       glUniform1i(u_lit_, 0);
@@ -263,6 +268,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
   }
   glBindVertexArray(0);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glDisable(GL_CLIP_DISTANCE0);  // the viewer draws its overlays after this
   if (samples_ > 0) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);

@@ -46,7 +46,7 @@ class GlRenderer {
   unsigned fbo_ = 0, color_rb_ = 0, depth_rb_ = 0, resolve_fbo_ = 0, resolve_rb_ = 0;
   unsigned program_ = 0;
   int u_view_ = -1, u_proj_ = -1, u_ambient_ = -1, u_specular_ = -1, u_emissive_ = -1, u_shininess_ = -1,
-      u_lit_ = -1, u_color_ambient_ = -1, u_point_size_ = -1;
+      u_lit_ = -1, u_color_ambient_ = -1, u_point_size_ = -1, u_clip_ = -1;
   std::vector<GpuBatch> gpu_;
   std::vector<std::uint8_t> rows_;  // read-back, bottom row first
 };

@@ -68,6 +68,18 @@ void apply_src(Component& c, Node& node, const std::string& src, const Attribute
 }
 
 void resolve_file(Component& c, BaseField& f, const ObjectSpec& spec, const ResourcePaths& paths, Diagnostics& diag) {
+  // A list of files (OglShader's fileVertexShaders): each name resolves on its own.
+  if (auto* list = dynamic_cast<Field<std::vector<std::string>>*>(&f)) {
+    std::vector<std::string> names = list->value();
+    for (std::string& n : names) {
+      if (auto found = paths.resolve(n, spec.base_dir)) n = *found;
+      else if (f.file_required())
+        diag.error(spec.where, c.describe() + ": file not found: " + quote_value(n) + " (searched " + spec.base_dir +
+                                   " and the data paths)");
+    }
+    list->set(std::move(names));
+    return;
+  }
   std::string value = f.text();
   if (value.empty()) return;
   if (auto found = paths.resolve(value, spec.base_dir)) {

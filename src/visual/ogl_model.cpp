@@ -1,5 +1,7 @@
 #include "visual/ogl_model.h"
 
+#include <algorithm>
+
 #include <Eigen/Geometry>
 
 #include "core/node.h"
@@ -167,7 +169,28 @@ void OglModel::take_elements(const MeshTopologyBase& t) {
 }
 
 void OglModel::handle_event(Event& e) {
-  if (e.kind == Event::Kind::animate_end) follow_topology();
+  if (e.kind != Event::Kind::animate_end) return;
+  follow_topology();
+  update_bbox();
+}
+
+void OglModel::update_bbox() {
+  const std::vector<double>& x = position.value().data;
+  if (x.size() < 3) return;  // SOFA keeps an empty (inverted) box: nothing to show
+  double lo[3] = {x[0], x[1], x[2]}, hi[3] = {x[0], x[1], x[2]};
+  for (std::size_t i = 3; i + 2 < x.size(); i += 3)
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], x[i + c]);
+      hi[c] = std::max(hi[c], x[i + c]);
+    }
+  std::vector<double>& b = bbox.raw();
+  const bool same = b.size() == 6 && b[0] == lo[0] && b[1] == lo[1] && b[2] == lo[2] && b[3] == hi[0] &&
+                    b[4] == hi[1] && b[5] == hi[2];
+  if (same) return;
+  // Stable size: after the first step this writes in place (no allocation per step).
+  b.resize(6);
+  for (int c = 0; c < 3; ++c) b[c] = lo[c], b[3 + c] = hi[c];
+  bbox.edit();  // announce the change to linked fields
 }
 
 void OglModel::follow_topology() {
@@ -221,7 +244,7 @@ void OglModel::init() {
     for (auto& e : edges.edit()) std::swap(e[0], e[1]);
     for (auto& tr : triangles.edit()) std::swap(tr[1], tr[2]);
     for (auto& qd : quads.edit()) std::swap(qd[1], qd[3]);
-  }
+  }  update_bbox();
 }
 
 void register_ogl_model(Registry& r) {
@@ -238,6 +261,14 @@ void register_ogl_model(Registry& r) {
   impl.aliases = {"VisualModel"};
   impl.create = creator<OglModel>();
   r.add(std::move(impl));
+  // SOFA's OglShaderVisualModel is an OglModel that also sends tangents to the
+  // node's shader; Sinew draws it with its own shading, as an OglModel.
+  ComponentInfo shader;
+  shader.name = "OglShaderVisualModel";
+  shader.category = "Visual";
+  shader.description = "visual model drawn with the node's shader in SOFA (Sinew: its own shading)";
+  shader.create = creator<OglModel>();
+  r.add(std::move(shader));
 }
 
 }  // namespace sinew

@@ -85,6 +85,12 @@ class OglModel : public VisualState {
   Field<std::string> dest_factor{this, "dfactor", "GL_ONE_MINUS_SRC_ALPHA", "destination blend factor",
                                  "Visualization"};
 
+  // Axis-aligned box of the positions (min x y z, max x y z), computed at init and
+  // after each step, as SOFA's computeBBox: VisualBoundingBox links to it.
+  Field<std::vector<double>> bbox{this, "bbox", {}, "bounding box of the positions: min x y z, max x y z",
+                                  "Visualization"};
+  void update_bbox();
+
   // Pseudo-attribute `color` (SOFA's setColor): kept as written.
   const std::string& color() const { return color_; }
 
@@ -95,10 +101,10 @@ class OglModel : public VisualState {
 
   void parse(AttributeMap& attrs, Diagnostics& diag) override;
   void init() override;
-  // handleDynamicTopology (SOFA's updateVisual: the mesh is recomputed when the topology's
+  // Events: the box follows the positions after each step; and handleDynamicTopology (SOFA's updateVisual: the mesh is recomputed when the topology's
   // revision moved): after each step, a model whose elements come from a changing topology
   // takes its triangles and quads again.
-  bool wants_events() const override { return Component::wants_events() || follows_topology_; }
+  bool wants_events() const override { return true; }
   void handle_event(Event& e) override;
   void follow_topology();
 

@@ -15,6 +15,7 @@
 #include "render/png_io.h"
 #include "runner/session.h"
 #include "test_scene.h"
+#include "visual/clip_plane.h"
 #include "visual/ogl_model.h"
 
 namespace sinew {
@@ -100,6 +101,61 @@ TEST_F(RenderTest, UnitCubeFromTheFrontAreaAndColour) {
   EXPECT_LE(centre[2], 2);
   // Corners stay background.
   EXPECT_TRUE(is_background(img.rgb(5, 5)));
+}
+
+// ClipPlane (normal +x through the origin, in the root) removes the right half of the cube
+// of a child node: the left half of the front face stays, nothing right of the centre.
+TEST_F(RenderTest, ClipPlaneRemovesHalfTheCube) {
+  const double half = 100.0 * 0.5 / (4.5 * std::tan(M_PI / 8));
+  const double full = 4 * half * half;  // 2877 pixels, as above
+  auto lit = [](auto c) { return !is_background(c); };
+  auto s = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+                      "<ClipPlane name=\"clip\" normal=\"1 0 0\"/>" +
+                      cube("cube", "red", 0) + "</Node>");
+  Image img = render(*s.root);
+  const long left = count_if(img, lit, 0, 100), right = count_if(img, lit, 101, 200);
+  RecordProperty("left", static_cast<int>(left));
+  EXPECT_NEAR(left, full / 2, 0.03 * full);
+  EXPECT_EQ(right, 0);
+  const auto kept = img.rgb(80, 100);  // still the red front face (headlight slightly off-axis)
+  EXPECT_GT(kept[0], 200);
+  EXPECT_LE(kept[1], 2);
+  // Inactive: the whole cube again.
+  test::get<ClipPlane>(*s.root, "clip")->active.set(false);
+  img = render(*s.root);
+  EXPECT_NEAR(count_if(img, lit), full, 0.03 * full);
+  // Normal -x keeps the right half instead.
+  auto t = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+                      "<ClipPlane normal=\"-1 0 0\" position=\"0.25 0 0\"/>" +
+                      cube("cube", "red", 0) + "</Node>");
+  img = render(*t.root);
+  EXPECT_EQ(count_if(img, lit, 0, 100), 0);
+  // The camera (x = 0) looks into the cut box [0.25, 0.5] × [-0.5, 0.5]²: its silhouette is the
+  // front face's quarter (x from a to b pixels, height 2b) plus the strip of the inside seen
+  // through the cut, between the back edge (x = c, height 2·back) and the front one.
+  const double f = 100.0 / std::tan(M_PI / 8);
+  const double a = f * 0.25 / 4.5, b = f * 0.5 / 4.5, c = f * 0.25 / 5.5, back = f * 0.5 / 5.5;
+  const double expected = (b - a) * 2 * b + (a - c) * (b + back);  // 838 pixels
+  EXPECT_NEAR(count_if(img, lit, 100, 200), expected, 0.03 * expected);
+}
+
+// VisualBoundingBox of [-0.5, 0.5]³ seen from z = 5: one-pixel green lines along the front
+// square (half side b pixels), the back square (half side c) and four short joins; the inside
+// stays background.
+TEST_F(RenderTest, VisualBoundingBoxDrawsTwelveEdges) {
+  auto s = test::load(
+      "<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+      "<VisualBoundingBox color=\"green\" bbox=\"-0.5 -0.5 -0.5 0.5 0.5 0.5\"/></Node>");
+  const Image img = render(*s.root);
+  auto green = [](auto c) { return c[1] > 200 && c[0] < 30 && c[2] < 30; };
+  const double f = 100.0 / std::tan(M_PI / 8), b = f * 0.5 / 4.5, c = f * 0.5 / 5.5;
+  const double expected = 8 * b + 8 * c + 4 * (b - c);  // rasterised lines: one pixel per major step
+  const long n = count_if(img, green);
+  RecordProperty("green", static_cast<int>(n));
+  EXPECT_NEAR(n, expected, 0.1 * expected);
+  EXPECT_EQ(count_if(img, green), count_if(img, [](auto c) { return !is_background(c); }));
+  EXPECT_TRUE(is_background(img.rgb(100, 100)));
+  EXPECT_EQ(count_if(img, green, 0, static_cast<int>(100 - b) - 1), 0);  // nothing left of the front square
 }
 
 // Without a camera, SOFA's default view frames the cube: 3 half-diagonals from its centre.

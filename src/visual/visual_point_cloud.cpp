@@ -1,0 +1,88 @@
+// VisualPointCloud (SOFA's Sofa.Component.Visual): draws positions as points,
+// spheres or (rigid templates) frames, optionally with their indices. A
+// viewer-side component: batch runs only check its inputs.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/registry.h"
+#include "core/roles.h"
+#include "core/value_text.h"
+#include "visual/color.h"
+
+namespace sinew {
+
+namespace {
+
+int coord_width(const std::string& tmpl) {
+  if (tmpl == "Vec1d") return 1;
+  if (tmpl == "Vec2d") return 2;
+  if (tmpl == "Rigid2d") return 3;
+  if (tmpl == "Rigid3d") return 7;
+  return 3;
+}
+
+FlatVec empty_of(int width) {
+  FlatVec v;
+  v.width = width;
+  return v;
+}
+
+class VisualPointCloud final : public VisualComponent {
+ public:
+  explicit VisualPointCloud(const std::string& tmpl)
+      : rigid_(tmpl.rfind("Rigid", 0) == 0),
+        position(this, "position", empty_of(coord_width(tmpl)), "positions to draw", "Vector", "length") {}
+
+ private:
+  bool rigid_;
+
+ public:
+  Field<FlatVec> position;
+  Field<std::string> draw_mode{this, "drawMode", "Point", "Point, Sphere, or (rigid templates) Frame",
+                               "Visualization"};
+  Field<double> point_size{this, "pointSize", 1.0, "size of the points and frames", "Visualization"};
+  Field<std::vector<double>> sphere_radius{this, "sphereRadius", {},
+                                           "sphere radii (one for all, or one per point)", "Visualization"};
+  Field<std::string> color{this, "color", "white", "colour of the points", "Visualization"};
+  Field<bool> show_indices{this, "showIndices", false, "draw the index of each point", "Visualization"};
+  Field<double> indices_scale{this, "indicesScale", 1.0, "size of the indices", "Visualization"};
+  Field<std::string> indices_color{this, "indicesColor", "white", "colour of the indices", "Visualization"};
+  Field<bool> enable{this, "enable", true, "draw the points", "Visualization"};
+
+  void parse(AttributeMap& attrs, Diagnostics& diag) override {
+    Component::parse(attrs, diag);
+    check_color_field(*this, color, diag);
+    check_color_field(*this, indices_color, diag);
+    const std::string& m = draw_mode.value();
+    if (m != "Point" && m != "Sphere" && !(rigid_ && m == "Frame"))
+      diag.error(where, describe() + ": drawMode " + quote_value(m) + " is not " +
+                            (rigid_ ? "Point, Sphere or Frame" : "Point or Sphere"));
+    for (double r : sphere_radius.value())
+      if (!(r >= 0.0)) diag.error(where, describe() + ": sphereRadius holds a negative radius");
+  }
+
+  void init() override {
+    const std::size_t radii = sphere_radius.get().size(), n = position.get().size();
+    if (draw_mode.value() == "Sphere" && radii > 1 && radii != n)
+      msg_warning("sphereRadius has " + std::to_string(radii) + " radii for " + std::to_string(n) +
+                  " points: the first is used for all");
+  }
+};
+
+}  // namespace
+
+void register_visual_point_cloud(Registry& r) {
+  ComponentInfo info;
+  info.name = "VisualPointCloud";
+  info.category = "Visual";
+  info.description = "draws positions as points, spheres or frames (viewer only)";
+  info.templates = {"Vec1d", "Vec2d", "Vec3d", "Rigid2d", "Rigid3d"};
+  info.default_template = "Vec3d";
+  info.create = [](const std::string& t) -> std::unique_ptr<Component> {
+    return std::make_unique<VisualPointCloud>(t);
+  };
+  r.add(std::move(info));
+}
+
+}  // namespace sinew
