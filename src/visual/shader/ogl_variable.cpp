@@ -13,11 +13,18 @@ namespace sinew {
 
 namespace {
 
+// SOFA's default values: zero (Eigen's fixed vectors are not initialised by T{}).
+template <class T>
+T zero_value() {
+  if constexpr (requires { T::Zero(); }) return T::Zero();
+  else return T{};
+}
+
 template <class T>
 class OglVariable final : public ShaderElement {
  public:
   OglVariable() { value.add_alias("values"); }  // SOFA accepts both names
-  Field<T> value{this, "value", T{}, "uniform value", "Shader"};
+  Field<T> value{this, "value", zero_value<T>(), "uniform value", "Shader"};
 };
 
 // Values stored flat whose count must be a multiple of `width` (Mat4x4f lists,
