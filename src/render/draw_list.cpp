@@ -19,7 +19,8 @@ Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind) {
   if (list.used == list.batches.size()) list.batches.emplace_back();
   Batch& b = list.batches[list.used++];
   if (b.source != source || b.kind != kind) {
-    b.positions.clear(), b.normals.clear(), b.colors.clear(), b.indices.clear();
+    b.positions.clear(), b.normals.clear(), b.colors.clear(), b.indices.clear(), b.texcoords.clear();
+    b.texture.clear();
     b.material_version = 0;
   }
   b.source = source;
@@ -90,6 +91,19 @@ void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const C
     compute_normals(b.positions, tris, quads, b.normals, norm_idx.size() == n ? &norm_idx : nullptr);
   }
   b.colors.clear();
+  // The texture, when every render vertex has its coordinates (without them SOFA would sample
+  // one texel); a file that cannot be read is drawn untextured by the renderer.
+  const auto& uv = m.texcoords.get();
+  const std::string& tex = m.texturename.get();
+  if (!tex.empty() && uv.size() == n) {
+    b.texcoords.resize(n * 2);
+    for (std::size_t i = 0; i < n; ++i)
+      b.texcoords[i * 2] = static_cast<float>(uv[i][0]), b.texcoords[i * 2 + 1] = static_cast<float>(uv[i][1]);
+    if (b.texture != tex) b.texture = tex;
+  } else {
+    b.texcoords.clear();
+    b.texture.clear();
+  }
   b.indices.resize(tris.size() * 3 + quads.size() * 6);
   std::size_t k = 0;
   bool bad = false;

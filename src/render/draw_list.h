@@ -21,6 +21,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/roles.h"
@@ -40,6 +41,10 @@ struct Batch {
   std::vector<float> normals;    // x y z per vertex (triangles)
   std::vector<float> colors;     // r g b a per vertex; empty: shading.diffuse for all
   std::vector<unsigned> indices;  // triangles; empty: vertices taken three by three (two by two for lines)
+  // A textured visual model: u v per vertex and the image file (OglModel texturename, resolved);
+  // the renderer loads each file once. Empty: no texture.
+  std::vector<float> texcoords;
+  std::string texture;
   Shading shading{};
   float color_ambient = 0.f;  // ambient term proportional to the vertex colour (SOFA's draw tool)
   float point_size = 1.f;

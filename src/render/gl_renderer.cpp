@@ -4,7 +4,10 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <cstdio>
 #include <cstring>
+
+#include "render/image_file.h"
 
 namespace sinew::render {
 
@@ -14,6 +17,7 @@ const char* kVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec4 a_color;
+layout(location = 3) in vec2 a_texcoord;
 uniform mat4 u_view;
 uniform mat4 u_proj;
 uniform float u_point_size;
@@ -21,6 +25,7 @@ uniform vec4 u_clip;  // ClipPlane: kept where dot(u_clip, (p, 1)) >= 0
 out vec3 v_eye;
 out vec3 v_normal;
 out vec4 v_color;
+out vec2 v_texcoord;
 void main() {
   vec4 eye = u_view * vec4(a_position, 1.0);
   v_eye = eye.xyz;
@@ -28,6 +33,7 @@ void main() {
   v_color = a_color;
   gl_Position = u_proj * eye;
   gl_PointSize = u_point_size;
+  v_texcoord = a_texcoord;
   gl_ClipDistance[0] = dot(u_clip, vec4(a_position, 1.0));
 }
 )";
@@ -38,12 +44,15 @@ const char* kFragmentShader = R"(#version 330 core
 in vec3 v_eye;
 in vec3 v_normal;
 in vec4 v_color;
+in vec2 v_texcoord;
 uniform vec4 u_ambient;
 uniform vec4 u_specular;
 uniform vec4 u_emissive;
 uniform float u_shininess;
 uniform float u_color_ambient;
 uniform bool u_lit;
+uniform bool u_textured;
+uniform sampler2D u_texture;
 out vec4 frag_color;
 void main() {
   if (!u_lit) { frag_color = vec4(v_color.rgb, 1.0); return; }
@@ -53,6 +62,8 @@ void main() {
   if (d < 0.0) { n = -n; d = -d; }
   float s = d > 0.0 ? pow(d, u_shininess) : 0.0;
   vec3 c = u_emissive.rgb + u_ambient.rgb + u_color_ambient * v_color.rgb + v_color.rgb * d + u_specular.rgb * s;
+  // A texture modulates the lit colour (OpenGL's default GL_MODULATE, as SOFA's OglModel).
+  if (u_textured) c *= texture(u_texture, v_texcoord).rgb;
   frag_color = vec4(min(c, vec3(1.0)), 1.0);
 }
 )";
@@ -126,6 +137,9 @@ std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int sample
   r->u_color_ambient_ = glGetUniformLocation(p, "u_color_ambient");
   r->u_point_size_ = glGetUniformLocation(p, "u_point_size");
   r->u_clip_ = glGetUniformLocation(p, "u_clip");
+  r->u_textured_ = glGetUniformLocation(p, "u_textured");
+  glUseProgram(p);
+  glUniform1i(glGetUniformLocation(p, "u_texture"), 0);  // texture unit 0
   return r;
 }
 
@@ -190,9 +204,11 @@ void GlRenderer::present(int width, int height) {
 GlRenderer::~GlRenderer() {
   for (GpuBatch& g : gpu_) {
     glDeleteVertexArrays(1, &g.vao);
-    glDeleteBuffers(3, g.vbo);
+    glDeleteBuffers(4, g.vbo);
     glDeleteBuffers(1, &g.ebo);
   }
+  for (const auto& t : textures_)
+    if (t.second) glDeleteTextures(1, &t.second);
   if (program_) glDeleteProgram(program_);
   release_framebuffers();
 }
@@ -214,7 +230,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
   while (gpu_.size() < list.used) {
     GpuBatch g;
     glGenVertexArrays(1, &g.vao);
-    glGenBuffers(3, g.vbo);
+    glGenBuffers(4, g.vbo);
     glGenBuffers(1, &g.ebo);
     gpu_.push_back(g);
   }
@@ -248,6 +264,18 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
     glUniform1f(u_color_ambient_, b.color_ambient);
     glUniform1f(u_point_size_, b.point_size);
     glUniform4fv(u_clip_, 1, b.clip.data());
+    const unsigned texture = b.texture.empty() ? 0 : texture_for(b.texture);
+    if (texture && b.texcoords.size() == b.vertex_count() * 2) {
+      upload(GL_ARRAY_BUFFER, g.vbo[3], b.texcoords.data(), b.texcoords.size() * sizeof(float), g.capacity[4]);
+      glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+      glEnableVertexAttribArray(3);
+      glActiveTexture(GL_TEXTURE0);
+      glBindTexture(GL_TEXTURE_2D, texture);
+      glUniform1i(u_textured_, 1);
+    } else {
+      glDisableVertexAttribArray(3);
+      glUniform1i(u_textured_, 0);
+    }
     const GLsizei n = static_cast<GLsizei>(b.vertex_count());
     if (b.kind == Batch::Kind::points) {
       glUniform1i(u_lit_, 0);
@@ -274,6 +302,33 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
     glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
+}
+
+unsigned GlRenderer::texture_for(const std::string& path) {
+  for (const auto& [file, id] : textures_)
+    if (file == path) return id;
+  std::string err;
+  unsigned id = 0;
+  if (auto img = read_image(path, &err)) {
+    // OpenGL's first row is the bottom one (v = 0): the picture's last row goes first.
+    const std::size_t row = static_cast<std::size_t>(img->width) * 4;
+    std::vector<std::uint8_t> flipped(img->rgba.size());
+    for (int y = 0; y < img->height; ++y)
+      std::memcpy(&flipped[y * row], &img->rgba[(img->height - 1 - y) * row], row);
+    glGenTextures(1, &id);
+    glBindTexture(GL_TEXTURE_2D, id);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img->width, img->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  } else {
+    std::fprintf(stderr, "sinew: texture not drawn: %s\n", err.c_str());  // once per file
+  }
+  textures_.emplace_back(path, id);
+  return id;
 }
 
 void GlRenderer::read(Image& out) {

@@ -10,6 +10,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/camera_view.h"
@@ -39,15 +40,18 @@ class GlRenderer {
   bool allocate(int width, int height, std::string* error);
   void release_framebuffers();
   struct GpuBatch {
-    unsigned vao = 0, vbo[3] = {0, 0, 0}, ebo = 0;
-    std::size_t capacity[4] = {0, 0, 0, 0};  // bytes: positions, normals, colours, indices
+    unsigned vao = 0, vbo[4] = {0, 0, 0, 0}, ebo = 0;
+    std::size_t capacity[5] = {0, 0, 0, 0, 0};  // bytes: positions, normals, colours, indices, texcoords
   };
   int width_ = 0, height_ = 0, samples_ = 0;
   unsigned fbo_ = 0, color_rb_ = 0, depth_rb_ = 0, resolve_fbo_ = 0, resolve_rb_ = 0;
   unsigned program_ = 0;
   int u_view_ = -1, u_proj_ = -1, u_ambient_ = -1, u_specular_ = -1, u_emissive_ = -1, u_shininess_ = -1,
-      u_lit_ = -1, u_color_ambient_ = -1, u_point_size_ = -1, u_clip_ = -1;
+      u_lit_ = -1, u_color_ambient_ = -1, u_point_size_ = -1, u_clip_ = -1, u_textured_ = -1;
   std::vector<GpuBatch> gpu_;
+  // Textures by file, loaded at first use (id 0: the file could not be read; drawn untextured).
+  unsigned texture_for(const std::string& path);
+  std::vector<std::pair<std::string, unsigned>> textures_;
   std::vector<std::uint8_t> rows_;  // read-back, bottom row first
 };
 

@@ -1,6 +1,7 @@
 #include "visual/ogl_model.h"
 
 #include <algorithm>
+#include <fstream>
 
 #include <Eigen/Geometry>
 
@@ -25,6 +26,7 @@ OglModel::OglModel()
       rest_position(this, "restPosition", empty3(), "vertex rest positions", "Vector") {
   filename.add_alias("fileMesh");
   filename.set_file(true);
+  texturename.set_file(true, false);  // resolved like meshes; a missing texture is only a warning
   edges.set_autolink(false);  // SOFA: edges are not linked by src=
   for (BaseField* f : {static_cast<BaseField*>(&translation), static_cast<BaseField*>(&rotation),
                        static_cast<BaseField*>(&scale3d)})
@@ -240,6 +242,16 @@ void OglModel::init() {
   translation.set(Vec3::Zero());
   rotation.set(Vec3::Zero());
   scale3d.set(Vec3::Ones());
+  // VisualModelImpl::applyUVTransformation: texture coordinates scaled, then translated, once.
+  if (scale_tex.get() != Vec2(1, 1) || translation_tex.get() != Vec2(0, 0)) {
+    const Vec2 st = scale_tex.get(), tt = translation_tex.get();
+    for (Vec2& uv : texcoords.edit()) uv = Vec2(uv[0] * st[0] + tt[0], uv[1] * st[1] + tt[1]);
+    scale_tex.set(Vec2(1, 1));
+    translation_tex.set(Vec2(0, 0));
+  }
+  // SOFA logs an error and draws the model without its texture; Sinew warns (the scene runs).
+  if (const std::string& tex = texturename.get(); !tex.empty() && !std::ifstream(tex).good())
+    msg_warning("texture " + quote_value(tex) + " not found: the model is drawn without it");
   if (flip_) {
     for (auto& e : edges.edit()) std::swap(e[0], e[1]);
     for (auto& tr : triangles.edit()) std::swap(tr[1], tr[2]);
