@@ -21,22 +21,28 @@ std::vector<MechanicalState*> SpringForceField::states() const {
   return {s1_, s2_};
 }
 
+bool bind_interaction_states(ForceField& self, Link<MechanicalState>& object1, Link<MechanicalState>& object2,
+                             MechanicalState*& s1, MechanicalState*& s2) {
+  MechanicalState* local = self.node() ? self.node()->get_mechanical_state() : nullptr;
+  s1 = object1 ? object1.get() : local;
+  s2 = object2 ? object2.get() : local;
+  if (!s1 || !s2) {
+    self.msg_error("no mechanical state found (object1/object2 or the node's state)");
+    self.set_state(ComponentState::invalid);
+    return false;
+  }
+  if (!self.mstate) self.mstate.set(s1);
+  if (s1->state_type() != s2->state_type()) {
+    self.msg_error(std::string("object1 is ") + s1->info().name + " but object2 is " + s2->info().name);
+    self.set_state(ComponentState::invalid);
+    return false;
+  }
+  return true;
+}
+
 bool SpringForceField::bind_states() {
-  MechanicalState* local = node() ? node()->get_mechanical_state() : nullptr;
-  s1_ = object1 ? object1.get() : local;
-  s2_ = object2 ? object2.get() : local;
-  if (!s1_ || !s2_) {
-    msg_error("no mechanical state found (object1/object2 or the node's state)");
-    set_state(ComponentState::invalid);
-    return false;
-  }
-  if (!mstate) mstate.set(s1_);
-  const StateType t1 = s1_->state_type(), t2 = s2_->state_type();
-  if (t1 != t2) {
-    msg_error(std::string("object1 is ") + s1_->info().name + " but object2 is " + s2_->info().name);
-    set_state(ComponentState::invalid);
-    return false;
-  }
+  if (!bind_interaction_states(*this, object1, object2, s1_, s2_)) return false;
+  const StateType t1 = s1_->state_type();
   if (t1 == StateType::vec1) dim_ = 1;
   else if (t1 == StateType::vec2) dim_ = 2;
   else if (t1 == StateType::vec3) dim_ = 3;

@@ -16,6 +16,13 @@
 
 namespace sinew {
 
+// The two states of an interaction force field: object1/object2, each defaulting
+// to the node's state; `self.mstate` is set to the first when unset. False (with an
+// error naming the component, and the component invalid) when one is missing or the
+// two differ in type. Shared by SpringForceField and VectorSpringForceField.
+bool bind_interaction_states(ForceField& self, Link<MechanicalState>& object1, Link<MechanicalState>& object2,
+                             MechanicalState*& s1, MechanicalState*& s2);
+
 class SpringForceField : public ForceField {
  public:
   SpringForceField();
