@@ -24,8 +24,11 @@ void ServoLoop::start(double rate_hz, std::function<void()> tick) {
       }
       last = now;
       ticks_.fetch_add(1, std::memory_order_relaxed);
+      // Deadlines advance by the period: a short delay (the OS scheduling another thread)
+      // is made up by the next ticks, so the rate holds on average; after a stall of more
+      // than 20 periods the schedule restarts from now instead of bursting.
       next += period;
-      if (next < now) next = now;  // late: no burst of catch-up ticks
+      if (now - next > 20 * period) next = now;
       std::this_thread::sleep_until(next);
     }
   });

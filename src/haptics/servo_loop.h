@@ -1,7 +1,8 @@
 // ServoLoop: the haptic thread. Calls a tick function at a fixed rate (1 kHz by
-// default) with std::this_thread::sleep_until on a steady clock (deadlines advance
-// by the period; a late tick does not accumulate catch-up ticks), until stop() or
-// destruction. Counts ticks and keeps the longest period seen.
+// default) with std::this_thread::sleep_until on a steady clock, until stop() or
+// destruction. Deadlines advance by the period: a tick late by less than 20
+// periods is made up (the rate holds on average); a longer stall restarts the
+// schedule. Counts ticks and keeps the longest period seen.
 #pragma once
 
 #include <atomic>

@@ -146,6 +146,7 @@ TEST(GeomagicDriver, PublishesTheScriptedPoseAtAnimateBegin) {
   EXPECT_NEAR(mo->read(kPosition)[2], 4.0, 1e-12);
 }
 
+
 namespace {
 // Counts calls and answers a fixed force (thread-safe: atomics only).
 class CountingFeedback final : public ForceFeedback {
@@ -161,15 +162,22 @@ class CountingFeedback final : public ForceFeedback {
 }  // namespace
 
 TEST(GeomagicDriver, ServoRunsAtOneKilohertzAndStopsOnDestruction) {
+  CountingFeedback ff;  // outlives the driver: counts the servo's calls
   auto driver = std::make_unique<GeomagicDriver>();
+  driver->force_feedback.set(&ff);
   driver->set_device(std::make_unique<ScriptedDevice>(std::vector<TrajectorySample>{{0, Vec3(1, 0, 0), {}, 0}}));
   driver->init();
   ASSERT_TRUE(driver->servo().running());
+  // Ticks over 200 ms, measured on the same clock (the test's own sleep may overrun on a
+  // loaded machine: the count is scaled to the 200 ms the window should have lasted).
+  const auto c0 = std::chrono::steady_clock::now();
   const auto t0 = driver->servo().ticks();
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  const auto n = driver->servo().ticks() - t0;
-  EXPECT_GE(n, 150u);
-  EXPECT_LE(n, 250u);
+  const auto t1 = driver->servo().ticks();
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - c0).count();
+  const double n = static_cast<double>(t1 - t0) * 200.0 / ms;
+  EXPECT_GE(n, 150.0) << (t1 - t0) << " ticks in " << ms << " ms";
+  EXPECT_LE(n, 250.0) << (t1 - t0) << " ticks in " << ms << " ms";
   driver->stop_device();
   EXPECT_FALSE(driver->servo().running());
   const auto after = driver->servo().ticks();
@@ -177,7 +185,14 @@ TEST(GeomagicDriver, ServoRunsAtOneKilohertzAndStopsOnDestruction) {
   EXPECT_EQ(driver->servo().ticks(), after);
   driver->start_device();
   EXPECT_TRUE(driver->servo().running());
-  driver.reset();  // joins the thread: no tick after destruction (TSan/ASan would see one)
+  Event begin{Event::Kind::animate_begin, 0.01};
+  driver->handle_event(begin);  // started: the servo calls the force feedback
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_GT(ff.calls.load(), 0);
+  driver.reset();  // joins the thread
+  const int calls = ff.calls.load();
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_EQ(ff.calls.load(), calls);
 }
 
 TEST(GeomagicDriver, ServoSendsTheForceFeedbackOrTheClampedManualForce) {

@@ -40,6 +40,18 @@ bool bind_interaction_states(ForceField& self, Link<MechanicalState>& object1, L
   return true;
 }
 
+PairForceVectors pair_force_vectors(MechanicalState& a, MechanicalState& b, const MechParams& p) {
+  // A braced list evaluates left to right.
+  return {a.read(vec_for(a, p.x, kPosition)).data(), a.read(vec_for(a, p.v, kVelocity)).data(),
+          a.write(vec_for(a, p.f, kForce)).data(),   b.read(vec_for(b, p.x, kPosition)).data(),
+          b.read(vec_for(b, p.v, kVelocity)).data(), b.write(vec_for(b, p.f, kForce)).data()};
+}
+
+PairDforceVectors pair_dforce_vectors(MechanicalState& a, MechanicalState& b, const MechParams& p) {
+  return {a.read(vec_for(a, p.dx, kDx)).data(), a.write(vec_for(a, p.df, kDforce)).data(),
+          b.read(vec_for(b, p.dx, kDx)).data(), b.write(vec_for(b, p.df, kDforce)).data()};
+}
+
 bool SpringForceField::bind_states() {
   if (!bind_interaction_states(*this, object1, object2, s1_, s2_)) return false;
   const StateType t1 = s1_->state_type();
@@ -197,14 +209,7 @@ bool SpringForceField::sizes_ok() {
 
 template <int N, int CS, int DS>
 void SpringForceField::add_force_n(const MechParams& p) {
-  MechanicalState& a = *s1_;
-  MechanicalState& b = *s2_;
-  const double* x1 = a.read(vec_for(a, p.x, kPosition)).data();
-  const double* v1 = a.read(vec_for(a, p.v, kVelocity)).data();
-  double* f1 = a.write(vec_for(a, p.f, kForce)).data();
-  const double* x2 = b.read(vec_for(b, p.x, kPosition)).data();
-  const double* v2 = b.read(vec_for(b, p.v, kVelocity)).data();
-  double* f2 = b.write(vec_for(b, p.f, kForce)).data();
+  const auto [x1, v1, f1, x2, v2, f2] = pair_force_vectors(*s1_, *s2_, p);
   energy_ = 0;
   std::size_t k = 0;
   for (const auto& s : springs_) springs::add_spring_force<N, CS, DS>(s, x1, v1, f1, x2, v2, f2, dfdx_[k++], energy_);
@@ -213,12 +218,7 @@ void SpringForceField::add_force_n(const MechParams& p) {
 
 template <int N, int DS>
 void SpringForceField::add_dforce_n(const MechParams& p, double kfactor) {
-  MechanicalState& a = *s1_;
-  MechanicalState& b = *s2_;
-  const double* dx1 = a.read(vec_for(a, p.dx, kDx)).data();
-  double* df1 = a.write(vec_for(a, p.df, kDforce)).data();
-  const double* dx2 = b.read(vec_for(b, p.dx, kDx)).data();
-  double* df2 = b.write(vec_for(b, p.df, kDforce)).data();
+  const auto [dx1, df1, dx2, df2] = pair_dforce_vectors(*s1_, *s2_, p);
   std::size_t k = 0;
   for (const auto& s : springs_) springs::add_spring_dforce<N, DS>(s, dfdx_[k++], dx1, df1, dx2, df2, kfactor);
   for (const auto& s : grid_springs_) springs::add_spring_dforce<N, DS>(s, dfdx_[k++], dx1, df1, dx2, df2, kfactor);

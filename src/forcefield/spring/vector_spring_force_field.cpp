@@ -93,14 +93,7 @@ bool VectorSpringForceField::ready() {
 void VectorSpringForceField::add_force(const MechParams& p) {
   energy_ = 0;
   if (!ready()) return;
-  MechanicalState& a = *s1_;
-  MechanicalState& b = *s2_;
-  const double* x1 = a.read(vec_for(a, p.x, kPosition)).data();
-  const double* v1 = a.read(vec_for(a, p.v, kVelocity)).data();
-  double* f1 = a.write(vec_for(a, p.f, kForce)).data();
-  const double* x2 = b.read(vec_for(b, p.x, kPosition)).data();
-  const double* v2 = b.read(vec_for(b, p.v, kVelocity)).data();
-  double* f2 = b.write(vec_for(b, p.f, kForce)).data();
+  const auto [x1, v1, f1, x2, v2, f2] = pair_force_vectors(*s1_, *s2_, p);
   for (const auto& s : list_) {
     const std::size_t i = 3 * std::size_t(s.m1), j = 3 * std::size_t(s.m2);
     double sq = 0;
@@ -118,12 +111,7 @@ void VectorSpringForceField::add_force(const MechParams& p) {
 // SOFA: df1 += k·ks·(dx2 − dx1), df2 −= the same (no damping term).
 void VectorSpringForceField::add_dforce(const MechParams& p, double kfactor) {
   if (!ready()) return;
-  MechanicalState& a = *s1_;
-  MechanicalState& b = *s2_;
-  const double* dx1 = a.read(vec_for(a, p.dx, kDx)).data();
-  double* df1 = a.write(vec_for(a, p.df, kDforce)).data();
-  const double* dx2 = b.read(vec_for(b, p.dx, kDx)).data();
-  double* df2 = b.write(vec_for(b, p.df, kDforce)).data();
+  const auto [dx1, df1, dx2, df2] = pair_dforce_vectors(*s1_, *s2_, p);
   for (const auto& s : list_) {
     const std::size_t i = 3 * std::size_t(s.m1), j = 3 * std::size_t(s.m2);
     const double c = s.ks * kfactor;
