@@ -351,3 +351,48 @@ TEST(MechanicalStateController, Rigid3ProjectsAndPropagatesBelowItsNode) {
   EXPECT_NEAR(tip[1], 3.0, 1e-12);
   EXPECT_NEAR(tip[2], 0.0, 1e-12);
 }
+
+namespace {
+// Records the script events it receives.
+class EventRecorder final : public Component {
+ public:
+  bool wants_events() const override { return true; }
+  void handle_event(Event& e) override {
+    if (e.kind == Event::Kind::script) names.push_back(e.name);
+  }
+  std::vector<std::string> names;
+};
+}  // namespace
+
+TEST(GeomagicDriver, EmitsButtonEventsFromTheRoot) {
+  test::TempDir dir;
+  // Button 1 pressed at t = 0.02, button 2 too at 0.04, both released at 0.06.
+  const std::string csv = dir.write("buttons.csv",
+                                    "0 0 0 0 0 0 0 1 0\n0.015 0 0 0 0 0 0 1 1\n0.035 0 0 0 0 0 0 1 3\n"
+                                    "0.055 0 0 0 0 0 0 1 0\n");
+  auto sc = test::load("<Node name='root' dt='0.01'><GeomagicDriver name='drv' emitButtonEvent='1' trajectory='" +
+                       csv + "'/></Node>");
+  ASSERT_TRUE(sc.root);
+  auto rec = std::make_unique<EventRecorder>();
+  EventRecorder* r = rec.get();
+  sc.root->add_object(std::move(rec));
+  for (int i = 0; i < 7; ++i) animate(*sc.root);
+  EXPECT_EQ(r->names, (std::vector<std::string>{"button0pressed", "button1pressed", "button0released",
+                                                "button1released"}));
+}
+
+TEST(GeomagicDriver, BadTrajectoryIsAnErrorNamingTheField) {
+  test::TempDir dir;
+  const std::string csv = dir.write("bad.csv", "0 0 0 0 0 0 0 1 0\n0.1 1 2\n");
+  auto sc = test::build("<Node name='root' dt='0.01'><GeomagicDriver name='drv' trajectory='" + csv + "'/></Node>");
+  ASSERT_TRUE(sc.root);
+  init_root(*sc.root);
+  const auto errors = test::messages(sc.root->diagnostics(), Severity::error);
+  EXPECT_TRUE(test::any_contains(errors, "trajectory")) << ::testing::PrintToString(errors);
+  EXPECT_TRUE(test::any_contains(errors, "line 2")) << ::testing::PrintToString(errors);
+  auto* drv = test::get<GeomagicDriver>(*sc.root, "drv");
+  EXPECT_EQ(drv->state(), ComponentState::invalid);
+  EXPECT_FALSE(drv->servo().running());
+  for (int i = 0; i < 3; ++i) animate(*sc.root);  // holds the rest pose, no crash
+  EXPECT_EQ(drv->position_device.value().data, (std::vector<double>{0, 0, 0, 0, 0, 0, 1}));
+}
