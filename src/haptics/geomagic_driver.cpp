@@ -1,5 +1,6 @@
 #include "haptics/geomagic_driver.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -24,19 +25,26 @@ void GeomagicDriver::init() {
   if (scale.value() == 0 || !std::isfinite(scale.value()))
     msg_warning("scale = " + std::to_string(scale.value()) + ": the device does not move the tool");
   if (!force_feedback && node()) {
-    // SOFA: the first ForceFeedback found from the root.
-    Node* root = node()->root();
+    // SOFA: the first ForceFeedback found from the root that carries all of the driver's tags.
+    const auto& mine = tags.value();
+    auto tagged = [&](const Component& c) {
+      const auto& theirs = c.tags.value();
+      return std::all_of(mine.begin(), mine.end(),
+                         [&](const std::string& t) { return std::find(theirs.begin(), theirs.end(), t) != theirs.end(); });
+    };
     ForceFeedback* found = nullptr;
-    for_each_node(*root, [&](Node& n) {
+    for_each_node(*node()->root(), [&](Node& n) {
       if (found) return;
       for (const auto& o : n.objects())
-        if (auto* f = dynamic_cast<ForceFeedback*>(o.get())) {
+        if (auto* f = dynamic_cast<ForceFeedback*>(o.get()); f && tagged(*f)) {
           found = f;
           return;
         }
     });
     force_feedback.set(found);
   }
+  if (!force_feedback)
+    msg_warning("no force feedback component found: only the motion of the tool is simulated");
   slot_.set(force_feedback.get());
   if (!device_) {
     if (!trajectory.value().empty()) {

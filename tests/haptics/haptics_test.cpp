@@ -396,3 +396,17 @@ TEST(GeomagicDriver, BadTrajectoryIsAnErrorNamingTheField) {
   for (int i = 0; i < 3; ++i) animate(*sc.root);  // holds the rest pose, no crash
   EXPECT_EQ(drv->position_device.value().data, (std::vector<double>{0, 0, 0, 0, 0, 0, 1}));
 }
+
+TEST(GeomagicDriver, FindsTheFirstForceFeedbackWithItsTagsFromTheRoot) {
+  auto sc = test::load(
+      "<Node name='root' dt='0.01'><GeomagicDriver name='drv' tags='tool'/>"
+      "<Node name='a'><NullForceFeedback name='untagged'/></Node>"
+      "<Node name='b'><NullForceFeedback name='mine' tags='tool other'/></Node></Node>");
+  ASSERT_TRUE(sc.root);
+  auto* drv = test::get<GeomagicDriver>(*sc.root, "drv");
+  ASSERT_TRUE(drv && drv->force_feedback);
+  EXPECT_EQ(drv->force_feedback->name.value(), "mine");
+  auto none = test::load("<Node name='root' dt='0.01'><GeomagicDriver name='drv'/></Node>");
+  EXPECT_TRUE(test::any_contains(test::messages(none.root->diagnostics(), Severity::warning),
+                                 "no force feedback component found"));
+}
