@@ -148,6 +148,9 @@ const std::vector<ForceFieldCase> kCases = {
     {"SpringForceField_Vec1d", springs("Vec1d", "0  1  2.5", "0 1 50 2 0.8  1 2 30 2 1.7"),
      kEnergy | kStiffness | kNetForce},
     {"SpringForceField_TwoStates", kTwoStates, kEnergy | kInternal},
+    // Rest *vectors*: not rotation invariant (no momentum or rigid-rest checks); no damping matrix, as SOFA.
+    {"VectorSpringForceField", tetras(ff("VectorSpringForceField", "useTopology='1' stiffness='30' viscosity='2'")),
+     kEnergy | kStiffness | kNetForce},
     {"MeshSpringForceField", tetras(ff("MeshSpringForceField", "stiffness='300' damping='2'")), kEnergy | kInternal},
     {"RegularGridSpringForceField", hexas(ff("RegularGridSpringForceField", "stiffness='300' damping='2'")),
      kEnergy | kInternal},

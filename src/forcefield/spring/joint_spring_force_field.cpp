@@ -4,6 +4,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "forcefield/spring/spring_force_field.h"
 
 namespace sinew {
 
@@ -112,14 +113,7 @@ bool JointSpringForceField::sizes_ok() {
 
 void JointSpringForceField::add_force(const MechParams& p) {
   if (!ready_ || !sizes_ok()) return;
-  MechanicalState& a = *s1_;
-  MechanicalState& b = *s2_;
-  const double* x1 = a.read(vec_for(a, p.x, kPosition)).data();
-  const double* v1 = a.read(vec_for(a, p.v, kVelocity)).data();
-  double* f1 = a.write(vec_for(a, p.f, kForce)).data();
-  const double* x2 = b.read(vec_for(b, p.x, kPosition)).data();
-  const double* v2 = b.read(vec_for(b, p.v, kVelocity)).data();
-  double* f2 = b.write(vec_for(b, p.f, kForce)).data();
+  const auto [x1, v1, f1, x2, v2, f2] = pair_force_vectors(*s1_, *s2_, p);
   for (std::size_t i = 0; i < springs_.size(); ++i) {
     double constant[6] = {0, 0, 0, 0, 0, 0};
     if (in_) {  // one line per spring and evaluation, from the start again at the end
@@ -167,12 +161,7 @@ void JointSpringForceField::write_output(const joints::JointSpring& s, const joi
 
 void JointSpringForceField::add_dforce(const MechParams& p, double kfactor) {
   if (!ready_ || !sizes_ok()) return;
-  MechanicalState& a = *s1_;
-  MechanicalState& b = *s2_;
-  const double* dx1 = a.read(vec_for(a, p.dx, kDx)).data();
-  double* df1 = a.write(vec_for(a, p.df, kDforce)).data();
-  const double* dx2 = b.read(vec_for(b, p.dx, kDx)).data();
-  double* df2 = b.write(vec_for(b, p.df, kDforce)).data();
+  const auto [dx1, df1, dx2, df2] = pair_dforce_vectors(*s1_, *s2_, p);
   for (std::size_t i = 0; i < springs_.size(); ++i)
     joints::add_joint_spring_dforce(springs_[i], work_[i], dx1, df1, dx2, df2, kfactor);
 }

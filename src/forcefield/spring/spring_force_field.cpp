@@ -21,22 +21,40 @@ std::vector<MechanicalState*> SpringForceField::states() const {
   return {s1_, s2_};
 }
 
+bool bind_interaction_states(ForceField& self, Link<MechanicalState>& object1, Link<MechanicalState>& object2,
+                             MechanicalState*& s1, MechanicalState*& s2) {
+  MechanicalState* local = self.node() ? self.node()->get_mechanical_state() : nullptr;
+  s1 = object1 ? object1.get() : local;
+  s2 = object2 ? object2.get() : local;
+  if (!s1 || !s2) {
+    self.msg_error("no mechanical state found (object1/object2 or the node's state)");
+    self.set_state(ComponentState::invalid);
+    return false;
+  }
+  if (!self.mstate) self.mstate.set(s1);
+  if (s1->state_type() != s2->state_type()) {
+    self.msg_error(std::string("object1 is ") + s1->info().name + " but object2 is " + s2->info().name);
+    self.set_state(ComponentState::invalid);
+    return false;
+  }
+  return true;
+}
+
+PairForceVectors pair_force_vectors(MechanicalState& a, MechanicalState& b, const MechParams& p) {
+  // A braced list evaluates left to right.
+  return {a.read(vec_for(a, p.x, kPosition)).data(), a.read(vec_for(a, p.v, kVelocity)).data(),
+          a.write(vec_for(a, p.f, kForce)).data(),   b.read(vec_for(b, p.x, kPosition)).data(),
+          b.read(vec_for(b, p.v, kVelocity)).data(), b.write(vec_for(b, p.f, kForce)).data()};
+}
+
+PairDforceVectors pair_dforce_vectors(MechanicalState& a, MechanicalState& b, const MechParams& p) {
+  return {a.read(vec_for(a, p.dx, kDx)).data(), a.write(vec_for(a, p.df, kDforce)).data(),
+          b.read(vec_for(b, p.dx, kDx)).data(), b.write(vec_for(b, p.df, kDforce)).data()};
+}
+
 bool SpringForceField::bind_states() {
-  MechanicalState* local = node() ? node()->get_mechanical_state() : nullptr;
-  s1_ = object1 ? object1.get() : local;
-  s2_ = object2 ? object2.get() : local;
-  if (!s1_ || !s2_) {
-    msg_error("no mechanical state found (object1/object2 or the node's state)");
-    set_state(ComponentState::invalid);
-    return false;
-  }
-  if (!mstate) mstate.set(s1_);
-  const StateType t1 = s1_->state_type(), t2 = s2_->state_type();
-  if (t1 != t2) {
-    msg_error(std::string("object1 is ") + s1_->info().name + " but object2 is " + s2_->info().name);
-    set_state(ComponentState::invalid);
-    return false;
-  }
+  if (!bind_interaction_states(*this, object1, object2, s1_, s2_)) return false;
+  const StateType t1 = s1_->state_type();
   if (t1 == StateType::vec1) dim_ = 1;
   else if (t1 == StateType::vec2) dim_ = 2;
   else if (t1 == StateType::vec3) dim_ = 3;
@@ -191,14 +209,7 @@ bool SpringForceField::sizes_ok() {
 
 template <int N, int CS, int DS>
 void SpringForceField::add_force_n(const MechParams& p) {
-  MechanicalState& a = *s1_;
-  MechanicalState& b = *s2_;
-  const double* x1 = a.read(vec_for(a, p.x, kPosition)).data();
-  const double* v1 = a.read(vec_for(a, p.v, kVelocity)).data();
-  double* f1 = a.write(vec_for(a, p.f, kForce)).data();
-  const double* x2 = b.read(vec_for(b, p.x, kPosition)).data();
-  const double* v2 = b.read(vec_for(b, p.v, kVelocity)).data();
-  double* f2 = b.write(vec_for(b, p.f, kForce)).data();
+  const auto [x1, v1, f1, x2, v2, f2] = pair_force_vectors(*s1_, *s2_, p);
   energy_ = 0;
   std::size_t k = 0;
   for (const auto& s : springs_) springs::add_spring_force<N, CS, DS>(s, x1, v1, f1, x2, v2, f2, dfdx_[k++], energy_);
@@ -207,12 +218,7 @@ void SpringForceField::add_force_n(const MechParams& p) {
 
 template <int N, int DS>
 void SpringForceField::add_dforce_n(const MechParams& p, double kfactor) {
-  MechanicalState& a = *s1_;
-  MechanicalState& b = *s2_;
-  const double* dx1 = a.read(vec_for(a, p.dx, kDx)).data();
-  double* df1 = a.write(vec_for(a, p.df, kDforce)).data();
-  const double* dx2 = b.read(vec_for(b, p.dx, kDx)).data();
-  double* df2 = b.write(vec_for(b, p.df, kDforce)).data();
+  const auto [dx1, df1, dx2, df2] = pair_dforce_vectors(*s1_, *s2_, p);
   std::size_t k = 0;
   for (const auto& s : springs_) springs::add_spring_dforce<N, DS>(s, dfdx_[k++], dx1, df1, dx2, df2, kfactor);
   for (const auto& s : grid_springs_) springs::add_spring_dforce<N, DS>(s, dfdx_[k++], dx1, df1, dx2, df2, kfactor);

@@ -16,6 +16,31 @@
 
 namespace sinew {
 
+// The two states of an interaction force field: object1/object2, each defaulting
+// to the node's state; `self.mstate` is set to the first when unset. False (with an
+// error naming the component, and the component invalid) when one is missing or the
+// two differ in type. Shared by SpringForceField and VectorSpringForceField.
+bool bind_interaction_states(ForceField& self, Link<MechanicalState>& object1, Link<MechanicalState>& object2,
+                             MechanicalState*& s1, MechanicalState*& s2);
+
+// The vectors an interaction force field between states a and b reads and writes
+// (the MechParams ids, falling back to the standard vectors on mapped states).
+// Fetched in the order x1, v1, f1, x2, v2, f2 (as the force fields always did).
+struct PairForceVectors {
+  const double *x1, *v1;
+  double* f1;
+  const double *x2, *v2;
+  double* f2;
+};
+PairForceVectors pair_force_vectors(MechanicalState& a, MechanicalState& b, const MechParams& p);
+struct PairDforceVectors {
+  const double* dx1;
+  double* df1;
+  const double* dx2;
+  double* df2;
+};
+PairDforceVectors pair_dforce_vectors(MechanicalState& a, MechanicalState& b, const MechParams& p);
+
 class SpringForceField : public ForceField {
  public:
   SpringForceField();
