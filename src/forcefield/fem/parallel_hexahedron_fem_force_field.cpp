@@ -8,13 +8,12 @@
 // (0: every core, -n: every core but n, written back as SOFA does); a global limit
 // (TaskSchedulerSettings, Sofa.Core.TaskScheduler.init) still caps it. Methods other than
 // large evaluate addForce sequentially, with SOFA's warning.
-#include <algorithm>
 #include <memory>
-#include <thread>
 
 #include <oneapi/tbb/task_arena.h>
 
 #include "core/registry.h"
+#include "core/task_scheduler_fields.h"
 #include "forcefield/fem/hexahedron_fem_force_field.h"
 
 namespace sinew {
@@ -23,18 +22,11 @@ namespace {
 
 class ParallelHexahedronFEMForceField final : public HexahedronFEMForceField {
  public:
-  Field<int> nb_threads{this, "nbThreads", 0,
-                        "threads of the task scheduler; 0: every core, -n: every core but n", "Scheduler"};
-  Field<std::string> task_scheduler_type{this, "taskSchedulerType", "_default",
-                                         "kind of task scheduler (oneTBB here whatever the value)", "Scheduler"};
+  TaskSchedulerFields scheduler{this};
 
   void init() override {
     HexahedronFEMForceField::init();
-    const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    int n = nb_threads.value();
-    if (n <= 0) n = std::max(1, cores + n);
-    nb_threads.set(n);
-    if (task_scheduler_type.value().empty()) task_scheduler_type.set("_default");
+    const int n = scheduler.resolve();
     arena_ = std::make_unique<tbb::task_arena>(n);
     serial_ = std::make_unique<tbb::task_arena>(1);
   }
