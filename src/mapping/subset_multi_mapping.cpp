@@ -6,11 +6,19 @@
 
 namespace sinew {
 
-bool SubsetMultiMapping::init_mapping() {
+bool GatherMultiMapping::init_mapping() {
   cwi_ = state_type_info(in_type()).coord_width;
   dwi_ = state_type_info(in_type()).deriv_width;
   cwo_ = state_type_info(out_type()).coord_width;
   dwo_ = state_type_info(out_type()).deriv_width;
+  src_.clear();
+  if (!sources(src_)) return false;
+  resize_output(src_.size());
+  in_ptr_.assign(in_.size(), nullptr);
+  return true;
+}
+
+bool SubsetMultiMapping::sources(std::vector<Source>& src) {
   const std::vector<int>& pairs = index_pairs.get();
   if (pairs.size() % 2 != 0) {
     msg_error("indexPairs has " + std::to_string(pairs.size()) +
@@ -18,7 +26,7 @@ bool SubsetMultiMapping::init_mapping() {
     return false;
   }
   const std::size_t n = pairs.size() / 2;
-  src_.assign(n, {});
+  src.assign(n, {});
   for (std::size_t i = 0; i < n; ++i) {
     const int input = pairs[2 * i], point = pairs[2 * i + 1];
     if (input < 0 || static_cast<std::size_t>(input) >= in_.size()) {
@@ -32,10 +40,8 @@ bool SubsetMultiMapping::init_mapping() {
                 std::to_string(in_[input]->size()) + " points");
       return false;
     }
-    src_[i] = {static_cast<unsigned>(input), static_cast<unsigned>(point)};
+    src[i] = {static_cast<unsigned>(input), static_cast<unsigned>(point)};
   }
-  resize_output(n);
-  in_ptr_.assign(in_.size(), nullptr);
   return true;
 }
 
@@ -55,21 +61,21 @@ void gather(const std::vector<Src>& src, const std::vector<const std::vector<dou
 }
 }  // namespace
 
-void SubsetMultiMapping::apply(int x) {
+void GatherMultiMapping::apply(int x) {
   std::vector<double>* out = out_coord(x);
   if (!out) return;
   for (std::size_t k = 0; k < in_.size(); ++k) in_ptr_[k] = &in_coord(x, k);
   gather(src_, in_ptr_, cwi_, *out, cwo_);
 }
 
-void SubsetMultiMapping::apply_j(int v, int role) {
+void GatherMultiMapping::apply_j(int v, int role) {
   std::vector<double>* out = out_deriv(v, role);
   if (!out) return;
   for (std::size_t k = 0; k < in_.size(); ++k) in_ptr_[k] = &in_deriv(v, role, k);
   gather(src_, in_ptr_, dwi_, *out, dwo_);
 }
 
-void SubsetMultiMapping::apply_jt(int f, int role) {
+void GatherMultiMapping::apply_jt(int f, int role) {
   const std::vector<double>* outp = out_deriv_read(f, role);
   if (!outp) return;
   const std::vector<double>& out = *outp;
@@ -84,7 +90,7 @@ void SubsetMultiMapping::apply_jt(int f, int role) {
   }
 }
 
-bool SubsetMultiMapping::jacobian(std::vector<JacobianEntry>& out) {
+bool GatherMultiMapping::jacobian(std::vector<JacobianEntry>& out) {
   const int w = std::min(dwi_, dwo_);
   for (std::size_t i = 0; i < src_.size(); ++i)
     for (int c = 0; c < w; ++c)

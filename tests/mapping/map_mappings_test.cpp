@@ -594,6 +594,21 @@ TEST(MapSubsetMulti, RigidToRigidCopiesFrames) {
   expect_adjoint(m);  // (the output is a frame: apply_j is checked against the identity by the adjoint test)
 }
 
+TEST(MapIdentityMulti, ConcatenatesTheInputs) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <Node name="a"><MechanicalObject name="pa" position="0 0 0  1 0 0  2 0 0"/></Node>
+    <Node name="b"><MechanicalObject name="pb" position="3 1 0  4 4 1"/></Node>
+    <Node name="all">
+      <MechanicalObject name="out"/>
+      <IdentityMultiMapping name="map" input="@../b @../a" output="@out"/>
+    </Node>
+  </Node>)");
+  auto& m = mapping_of(s);
+  EXPECT_EQ(pos(s, "out"), (std::vector<double>{3, 1, 0, 4, 4, 1, 0, 0, 0, 1, 0, 0, 2, 0, 0}));
+  expect_adjoint(m);
+  expect_j_is_derivative(m);
+}
+
 TEST(MapSubsetMulti, BadIndexPairsAreClearErrors) {
   const char* scene = R"(<Node gravity="0 0 0">
     <Node name="a"><MechanicalObject name="pa" position="0 0 0  1 0 0"/></Node>

@@ -55,5 +55,23 @@ TEST(SubsetMultiMappingExample, ConcatenatedPointsCarryTheForceBackToTheirInputs
   EXPECT_EQ(rig2[0], 2.0);
 }
 
+TEST(IdentityMultiMappingExample, RunsAndMovesTheForcedPoint) {
+  std::vector<double> vec1, all;
+  const test::Outcome o = test::run_sofa_example("Component/Mapping/Linear/IdentityMultiMapping.scn", 20,
+                                                 [&](runner::Session& s) {
+                                                   vec1 = state_at(s, {"object1"}, "dof1").read(kPosition);
+                                                   all = state_at(s, {"object1", "object2", "concatenation"}, "dofall")
+                                                             .read(kPosition);
+                                                 });
+  if (!o.loaded) GTEST_SKIP() << "SOFA data not found at " << SINEW_DATA_DIR << " (set SINEW_DATA_DIR)";
+  ASSERT_TRUE(o.init_ok) << o.all();
+  EXPECT_EQ(o.steps, 20);
+  EXPECT_TRUE(o.errors.empty()) << o.all();
+  EXPECT_TRUE(o.finite);
+  ASSERT_EQ(all.size(), 24u);  // both 2×2 grids
+  EXPECT_GT(vec1[0], 0.01);
+  EXPECT_EQ(all[0], vec1[0]);
+}
+
 }  // namespace
 }  // namespace sinew
