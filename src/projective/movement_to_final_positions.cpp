@@ -9,14 +9,7 @@
 namespace sinew {
 
 void MovementToFinalPositions::init() {
-  ProjectiveConstraint::init();
-  if (state() != ComponentState::valid) return;
-  if (mstate->state_type() != type_) {
-    msg_error(std::string("the mechanical state is ") + mstate->info().name + ", not " +
-              state_type_info(type_).name);
-    set_state(ComponentState::invalid);
-    return;
-  }
+  if (!init_state_of_type(*this, type_)) return;
   cw_ = mstate->info().coord_width;
   w_ = mstate->info().deriv_width;
   follow_.bind(&indices);

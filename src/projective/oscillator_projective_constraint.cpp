@@ -12,6 +12,7 @@
 #include "core/constraint_matrix.h"
 #include "core/node.h"
 #include "core/registry.h"
+#include "projective/indices_in_state.h"
 #include "core/state_creator.h"
 #include "math/rigid.h"
 
@@ -28,14 +29,7 @@ class OscillatorProjectiveConstraint final : public ProjectiveConstraint {
       "oscillating DoFs, each: index, mean (coordinate), amplitude (derivative), pulsation, phase", "Constraint"};
 
   void init() override {
-    ProjectiveConstraint::init();
-    if (state() != ComponentState::valid) return;
-    if (mstate->state_type() != type_) {
-      msg_error(std::string("the mechanical state is ") + mstate->info().name + ", not " +
-                state_type_info(type_).name);
-      set_state(ComponentState::invalid);
-      return;
-    }
+    if (!init_state_of_type(*this, type_)) return;
     cw_ = mstate->info().coord_width;
     dw_ = mstate->info().deriv_width;
     const std::size_t stride = 1 + cw_ + dw_ + 2;
