@@ -78,7 +78,9 @@ BVHNarrowPhase::Traversal::Boxes BVHNarrowPhase::Traversal::boxes(const Range& r
 void BVHNarrowPhase::Traversal::final_pairs(const Range& r1, const Range& r2, std::vector<DetectionOutput>& out) {
   for (unsigned i = r1.begin; i < r1.end; ++i)
     for (unsigned j = r2.begin; j < r2.end; ++j)
-      if (!self_ || r1.model->element_can_collide(i, *r2.model, j)) test_(*method_, *r1.model, i, *r2.model, j, out);
+      // SOFA's canCollideWith: within one model, only pairs with i < j, then the model's own rule.
+      if (!self_ || ((r1.model != r2.model || i < j) && r1.model->element_can_collide(i, *r2.model, j)))
+        test_(*method_, *r1.model, i, *r2.model, j, out);
 }
 
 void BVHNarrowPhase::Traversal::run(CollisionModelBase& m1, CollisionModelBase& m2, ElementTest test,

@@ -8,6 +8,8 @@
 namespace sinew {
 
 GridMeshCreator::GridMeshCreator() {
+  // SOFA's creator loads whatever the filename (the example scenes give "nofile").
+  filename.set_file(true, false);
   add_input(&resolution);
   add_input(&triangle_pattern);
 }

@@ -12,14 +12,7 @@
 namespace sinew {
 
 void DirectionProjectiveConstraint::init() {
-  ProjectiveConstraint::init();
-  if (state() != ComponentState::valid) return;
-  if (mstate->state_type() != type_) {
-    msg_error(std::string("the mechanical state is ") + mstate->info().name + ", not " +
-              state_type_info(type_).name);
-    set_state(ComponentState::invalid);
-    return;
-  }
+  if (!init_state_of_type(*this, type_)) return;
   d_ = mstate->info().spatial_dim;
   follow_.bind(&indices);
   follow_.attach(topology.get() ? topology.get() : node()->get_mesh_topology_link());

@@ -2,7 +2,8 @@
 // Fixed and PartialFixed: an index past the end of the state is skipped with a
 // warning (SOFA would write out of bounds), the others are kept in order.
 // AffineMovement and Direction: SOFA reports such an index and removes it from
-// the list itself (drop_indices_beyond_state).
+// the list itself (drop_indices_beyond_state). init_state_of_type: the state check of the
+// templated ones.
 #pragma once
 
 #include <cstddef>
@@ -11,6 +12,7 @@
 
 #include "core/component.h"
 #include "core/field.h"
+#include "core/roles.h"
 
 namespace sinew {
 
@@ -45,6 +47,23 @@ inline void drop_indices_beyond_state(const Component& c, Field<std::vector<unsi
   if (!dropped) return;
   if (indices.parent()) indices.set_parent(nullptr);
   indices.set(std::move(kept));
+}
+
+}  // namespace sinew
+
+namespace sinew {
+
+// ProjectiveConstraint::init for a templated constraint: then the state must be of type `t`;
+// false, with the component invalid and the mismatch reported, otherwise.
+inline bool init_state_of_type(ProjectiveConstraint& c, StateType t) {
+  c.ProjectiveConstraint::init();
+  if (c.state() != ComponentState::valid) return false;
+  if (c.mstate->state_type() != t) {
+    c.msg_error(std::string("the mechanical state is ") + c.mstate->info().name + ", not " + state_type_info(t).name);
+    c.set_state(ComponentState::invalid);
+    return false;
+  }
+  return true;
 }
 
 }  // namespace sinew

@@ -4,6 +4,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "projective/indices_in_state.h"
 #include "core/state_creator.h"
 #include "io/sofa_quat.h"
 
@@ -14,14 +15,7 @@ const std::vector<double>& LinearMovementProjectiveConstraint::movement_list() c
 }
 
 void LinearMovementProjectiveConstraint::init() {
-  ProjectiveConstraint::init();
-  if (state() != ComponentState::valid) return;
-  if (mstate->state_type() != type_) {
-    msg_error(std::string("the mechanical state is ") + mstate->info().name + ", not " +
-              state_type_info(type_).name);
-    set_state(ComponentState::invalid);
-    return;
-  }
+  if (!init_state_of_type(*this, type_)) return;
   w_ = mstate->info().deriv_width;
   cw_ = mstate->info().coord_width;
   default_movement_.assign(static_cast<std::size_t>(w_), 0.0);

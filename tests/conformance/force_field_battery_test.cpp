@@ -208,6 +208,17 @@ const std::vector<ForceFieldCase> kCases = {
      node("<MeshTopology name='topo' position='0 0 0  2 0 0  2 1 0' edges='0 1  1 2'/><MechanicalObject name='dofs'/>" +
           ff("EdgePressureForceField", "edges='0 1  1 2' pressure='0 0 1'")),
      kStiffness},
+    // A closed tetrahedral surface: no pressure at rest (internal), then a constant p0 on top.
+    {"TaitSurfacePressureForceField",
+     node("<MechanicalObject position='0 0 0  1 0 0  0 1 0  0 0 1'/>"
+          "<MeshTopology triangles='0 2 1  0 1 3  0 3 2  1 2 3'/>" +
+          ff("TaitSurfacePressureForceField", "B='10' gamma='5'")),
+     kInternal},
+    {"TaitSurfacePressureForceField_p0",
+     node("<MechanicalObject position='0 0 0  1 0 0  0 1 0  0 0 1'/>"
+          "<MeshTopology triangles='0 2 1  0 1 3  0 3 2  1 2 3'/>" +
+          ff("TaitSurfacePressureForceField", "p0='2' B='10' gamma='1'")),
+     kStiffness | kMomentum},
     {"TrianglePressureForceField",
      triangles(ff("TrianglePressureForceField", "triangleList='0 1' pressure='0.3 0 -6'")), kStiffness},
     // SOFA's tangent ignores the frame (object2) and misses a term proportional to the penetration
@@ -260,6 +271,8 @@ const std::vector<ForceFieldCase> kCases = {
     {"HexahedronFEMForceField_large", hexas(ff("HexahedronFEMForceField", kElastic + "method='large'")),
      kEnergy | kCorotational, 0.2},
     {"HexahedronFEMForceField_polar", hexas(ff("HexahedronFEMForceField", kElastic + "method='polar'")),
+     kEnergy | kCorotational, 0.2},
+    {"ParallelHexahedronFEMForceField", hexas(ff("ParallelHexahedronFEMForceField", kElastic + "method='large'")),
      kEnergy | kCorotational, 0.2},
     {"HexahedronFEMForceFieldAndMass", hexas(ff("HexahedronFEMForceFieldAndMass", kElastic + "density='2'")),
      kCorotational, 0.2},

@@ -136,6 +136,18 @@ const std::vector<MappingCase> kCases = {
     {"SquareDistanceMapping", mapped(kPoints, kVec1, "SquareDistanceMapping", kExact + "topology='@../topo'", kEdges),
      kJacobian | kGeometric | kAssembledGeometric},
     {"DistanceMultiMapping", kTwoInputs, kJacobian | kGeometric | kAssembledGeometric},
+    {"SubsetMultiMapping",
+     node("<Node name='a'><MechanicalObject name='pa' position='0 0 0  1 0 0'/></Node>"
+          "<Node name='b'><MechanicalObject name='pb' position='3 1 0  4 4 1'/></Node>"
+          "<Node name='all'><MechanicalObject name='out'/>"
+          "<SubsetMultiMapping name='map' input='@../a @../b' output='@out' indexPairs='1 1  0 0  1 0'/></Node>"),
+     kJacobian},
+    {"IdentityMultiMapping",
+     node("<Node name='a'><MechanicalObject name='pa' position='0 0 0  1 0 0'/></Node>"
+          "<Node name='b'><MechanicalObject name='pb' position='3 1 0  4 4 1'/></Node>"
+          "<Node name='all'><MechanicalObject name='out'/>"
+          "<IdentityMultiMapping name='map' input='@../a @../b' output='@out'/></Node>"),
+     kJacobian},
     {"DeformableOnRigidFrameMapping", kOnFrame, kJacobian},
     // Two tetrahedra refined by their topological mapping: input points and edge midpoints.
     {"SimpleTesselatedTetraMechanicalMapping",

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <stdexcept>
 
@@ -533,6 +534,127 @@ TEST(MapDistanceMulti, TwoInputsThroughIndexPairs) {
   // The forces of the mapped node reach both inputs in a force computation.
   MechanicalOps ops(*s.root);
   EXPECT_EQ(ops.mappings().size(), 1u);
+}
+
+// ---------------------------------------------------------------- SubsetMultiMapping
+
+TEST(MapSubsetMulti, GathersPointsOfSeveralInputs) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <Node name="a"><MechanicalObject name="pa" position="0 0 0  1 0 0  2 0 0"/></Node>
+    <Node name="b"><MechanicalObject name="pb" position="3 1 0  4 4 1"/></Node>
+    <Node name="all">
+      <MechanicalObject name="out"/>
+      <SubsetMultiMapping name="map" template="Vec3,Vec3" input="@../a @../b" output="@out"
+                          indexPairs="1 1  0 2  0 0  1 1"/>
+    </Node>
+  </Node>)");
+  auto& m = mapping_of(s);
+  ASSERT_EQ(m.inputs().size(), 2u);
+  EXPECT_EQ(pos(s, "out"), (std::vector<double>{4, 4, 1, 2, 0, 0, 0, 0, 0, 4, 4, 1}));
+  expect_adjoint(m);
+  expect_j_is_derivative(m);
+  // Jᵀ sums the two outputs that share a point.
+  const auto jt = apply_jt_of(m, {1, 2, 3, 10, 20, 30, 100, 200, 300, 4, 5, 6});
+  EXPECT_EQ(jt[1], (std::vector<double>{0, 0, 0, 5, 7, 9}));
+  EXPECT_EQ(jt[0], (std::vector<double>{100, 200, 300, 0, 0, 0, 10, 20, 30}));
+}
+
+TEST(MapSubsetMulti, RigidToVecTakesTheCentres) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <Node name="a"><MechanicalObject name="pa" template="Rigid3" position="1 2 3 0 0 0.6 0.8"/></Node>
+    <Node name="b"><MechanicalObject name="pb" template="Rigid3" position="0 0 0 0 0 0 1  5 6 7 0.6 0 0 0.8"/></Node>
+    <Node name="all">
+      <MechanicalObject name="out"/>
+      <SubsetMultiMapping name="map" template="Rigid3,Vec3" input="@../a @../b" output="@out"
+                          indexPairs="0 0  1 1"/>
+    </Node>
+  </Node>)");
+  auto& m = mapping_of(s);
+  EXPECT_EQ(pos(s, "out"), (std::vector<double>{1, 2, 3, 5, 6, 7}));
+  expect_adjoint(m);
+  expect_j_is_derivative(m);
+  // Forces reach the translational part only.
+  const auto jt = apply_jt_of(m, {1, 2, 3, 4, 5, 6});
+  EXPECT_EQ(jt[0], (std::vector<double>{1, 2, 3, 0, 0, 0}));
+  EXPECT_EQ(jt[1], (std::vector<double>{0, 0, 0, 0, 0, 0, 4, 5, 6, 0, 0, 0}));
+}
+
+TEST(MapSubsetMulti, RigidToRigidCopiesFrames) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <Node name="a"><MechanicalObject name="pa" template="Rigid3" position="1 2 3 0 0 0.6 0.8"/></Node>
+    <Node name="b"><MechanicalObject name="pb" template="Rigid3" position="5 6 7 0.6 0 0 0.8"/></Node>
+    <Node name="all">
+      <MechanicalObject name="out" template="Rigid3"/>
+      <SubsetMultiMapping name="map" template="Rigid3,Rigid3" input="@../a @../b" output="@out"
+                          indexPairs="1 0  0 0"/>
+    </Node>
+  </Node>)");
+  auto& m = mapping_of(s);
+  EXPECT_EQ(pos(s, "out"), (std::vector<double>{5, 6, 7, 0.6, 0, 0, 0.8, 1, 2, 3, 0, 0, 0.6, 0.8}));
+  expect_adjoint(m);  // (the output is a frame: apply_j is checked against the identity by the adjoint test)
+}
+
+TEST(MapIdentityMulti, ConcatenatesTheInputs) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <Node name="a"><MechanicalObject name="pa" position="0 0 0  1 0 0  2 0 0"/></Node>
+    <Node name="b"><MechanicalObject name="pb" position="3 1 0  4 4 1"/></Node>
+    <Node name="all">
+      <MechanicalObject name="out"/>
+      <IdentityMultiMapping name="map" input="@../b @../a" output="@out"/>
+    </Node>
+  </Node>)");
+  auto& m = mapping_of(s);
+  EXPECT_EQ(pos(s, "out"), (std::vector<double>{3, 1, 0, 4, 4, 1, 0, 0, 0, 1, 0, 0, 2, 0, 0}));
+  expect_adjoint(m);
+  expect_j_is_derivative(m);
+}
+
+TEST(MapSubsetMulti, BadIndexPairsAreClearErrors) {
+  const char* scene = R"(<Node gravity="0 0 0">
+    <Node name="a"><MechanicalObject name="pa" position="0 0 0  1 0 0"/></Node>
+    <Node name="all">
+      <MechanicalObject name="out"/>
+      <SubsetMultiMapping name="map" input="@../a" output="@out" indexPairs="%s"/>
+    </Node>
+  </Node>)";
+  const std::pair<const char*, const char*> cases[] = {
+      {"0 0 1", "must hold (input index, point index) couples"},
+      {"0 0  1 0", "names input 1 but there are 1 inputs"},
+      {"0 2", "names point 2 of input 0"},
+  };
+  for (const auto& [pairs, msg] : cases) {
+    char buf[1024];
+    std::snprintf(buf, sizeof buf, scene, pairs);
+    auto s = test::build(buf);
+    ASSERT_TRUE(s.root);
+    init_root(*s.root);
+    EXPECT_EQ(mapping_of(s).state(), ComponentState::invalid) << pairs;
+    EXPECT_TRUE(test::any_contains(test::messages(s.root->diagnostics(), Severity::error), msg)) << pairs;
+  }
+}
+
+TEST(MapSubsetMulti, ConstraintRowsGoToTheirInputs) {
+  auto s = load(R"(<Node gravity="0 0 0">
+    <Node name="a"><MechanicalObject name="pa" position="0 0 0  1 0 0"/></Node>
+    <Node name="b"><MechanicalObject name="pb" position="3 1 0  4 4 1"/></Node>
+    <Node name="all">
+      <MechanicalObject name="out"/>
+      <SubsetMultiMapping name="map" input="@../a @../b" output="@out" indexPairs="1 1  0 0"/>
+    </Node>
+  </Node>)");
+  auto& m = mapping_of(s);
+  std::vector<JacobianEntry> j;
+  ASSERT_TRUE(m.jacobian(j));
+  ASSERT_EQ(j.size(), 6u);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(j[c].input, 1u);
+    EXPECT_EQ(j[c].row, static_cast<std::uint32_t>(c));
+    EXPECT_EQ(j[c].col, static_cast<std::uint32_t>(3 + c));
+    EXPECT_EQ(j[3 + c].input, 0u);
+    EXPECT_EQ(j[3 + c].row, static_cast<std::uint32_t>(3 + c));
+    EXPECT_EQ(j[3 + c].col, static_cast<std::uint32_t>(c));
+    EXPECT_EQ(j[c].value, 1.0);
+  }
 }
 
 // ---------------------------------------------------------------- framework plumbing

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cmath>
+#include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -53,10 +55,13 @@ inline bool all_finite(Node& root) {
   return true;
 }
 
-// Writes `xml` as scene.scn in `dir` and runs it for up to `steps` steps.
-inline Outcome run_scene_file(const std::string& path, long steps) {
+// Runs the scene file `path` for up to `steps` steps (resources also searched in
+// `data_paths`); `after` may inspect the session once the steps are done.
+inline Outcome run_scene_file(const std::string& path, long steps, const std::vector<std::string>& data_paths = {},
+                              const std::function<void(runner::Session&)>& after = {}) {
   Outcome o;
   runner::SessionOptions opts;
+  opts.data_paths = data_paths;
   runner::Session session(path, opts);
   o.loaded = session.loaded();
   o.init_ok = session.ok();
@@ -65,10 +70,21 @@ inline Outcome run_scene_file(const std::string& path, long steps) {
       if (!session.step()) break;
     o.steps = session.steps_done();
     o.finite = all_finite(session.root());
+    if (after) after(session);
   }
   o.errors = messages(session.diagnostics(), Severity::error);
   o.warnings = messages(session.diagnostics(), Severity::warning);
   return o;
+}
+
+// SOFA's example scene `rel` (under SINEW_DATA_DIR/examples, with SOFA's data paths) run
+// for `steps` steps; not loaded (o.loaded false) when the data is absent.
+inline Outcome run_sofa_example(const std::string& rel, long steps,
+                                const std::function<void(runner::Session&)>& after = {}) {
+  const std::filesystem::path data = SINEW_DATA_DIR;
+  if (!std::filesystem::exists(data / "examples" / rel)) return {};
+  return run_scene_file((data / "examples" / rel).string(), steps,
+                        {(data / "share").string(), (data / "examples").string()}, after);
 }
 
 inline Outcome run_xml(const TempDir& dir, const std::string& xml, long steps = 5,

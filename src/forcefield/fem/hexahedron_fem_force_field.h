@@ -60,7 +60,7 @@ class HexahedronFEMBase : public Role, public RotationFinder {
   bool warned_growth_ = false;
 };
 
-class HexahedronFEMForceField final : public HexahedronFEMBase<ForceField> {
+class HexahedronFEMForceField : public HexahedronFEMBase<ForceField> {
  public:
   // SOFA's m_potentialEnergy: ½·Σ ΔᵀKΔ over the elements (in their frames for
   // large/polar), computed by the last add_force.
