@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/node.h"
+#include "exporter/playback/compare_state.h"
 #include "exporter/playback/read_state.h"
 #include "exporter/playback/write_state.h"
 #include "exporter/vtk_exporter.h"
@@ -328,6 +329,25 @@ TEST(ReadState, ShiftScaleTranslationAndLoop) {
     r.session->step();  // 0.03
     EXPECT_EQ(s->read(kPosition), (std::vector<double>{loop ? 4.0 : 6.0, 0, 5}));
   }
+}
+
+TEST(CompareState, SumsSofasMeanAbsoluteDifferencePerPoint) {
+  TempDir dir;
+  const std::string file = dir.write("ref.txt", "T= 0\n  X= 1 2 3 4 5 7\nT= 0.01\n  X= 1 2 3 4 5 6\n");
+  const std::string xml = R"(<Node name="root" dt="0.01">
+  <DefaultAnimationLoop/>
+  <MechanicalObject name="dofs" position="1 2 3  4 5 6"/>
+  <CompareState name="cmp" filename=")" + file + R"("/>
+</Node>)";
+  RunResult r = run(dir, xml, 2, false);
+  auto* c = test::get<CompareState>(r.session->root(), "cmp");
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(c->compared_blocks(), 2);
+  // First block: one scalar off by 1 among 6 → e = 1/6, per point (2 points) 1/12; second: 0.
+  EXPECT_NEAR(c->total_error(), 1.0 / 6.0, 1e-15);
+  EXPECT_NEAR(c->error_by_dof(), 1.0 / 12.0, 1e-15);
+  // The state is compared, never replayed.
+  EXPECT_EQ(r.session->root().get_mechanical_state()->read(kPosition), (std::vector<double>{1, 2, 3, 4, 5, 6}));
 }
 
 }  // namespace

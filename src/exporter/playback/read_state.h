@@ -18,7 +18,7 @@
 
 namespace sinew {
 
-class ReadState final : public Component {
+class ReadState : public Component {
  public:
   ReadState();
 
@@ -40,12 +40,14 @@ class ReadState final : public Component {
   // Reads what is due at the node's current time; true when the state was updated.
   bool process();
 
+ protected:
+  MechanicalState* state_ = nullptr;
+  std::vector<regression::StateBlock> blocks_;  // the whole file, parsed at init/reset
+  bool opened_ = false;
+
  private:
   bool apply(const regression::StateBlock& b);
 
-  MechanicalState* state_ = nullptr;
-  std::vector<regression::StateBlock> blocks_;
-  bool opened_ = false;
   std::size_t cursor_ = 0;  // next block to look at
   double loop_offset_ = 0, last_time_ = 0, next_time_ = 0;
   bool warned_size_ = false;
