@@ -40,7 +40,7 @@ void STLExporter::do_init() {
   set_state(ComponentState::valid);
 }
 
-bool STLExporter::write() {
+bool STLExporter::write_file(bool numbered) {
   if (state() != ComponentState::valid) return false;
   const FlatVec& x = position.get();
   if (x.data.empty() || x.width < 3) {
@@ -66,7 +66,7 @@ bool STLExporter::write() {
         msg_error("triangle: vertex " + std::to_string(v) + " is out of the " + std::to_string(np) + " points");
         return false;
       }
-  const std::string base = target_path(base_name(), true);
+  const std::string base = target_path(base_name(), numbered);
   if (base.empty()) return false;
   const std::string path = base + ".stl";
   std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), binary_format.get() ? "wb" : "w"), &std::fclose);
@@ -120,10 +120,7 @@ bool STLExporter::write() {
 void STLExporter::handle_event(Event& e) {
   // SOFA's GUI event "STLExport" writes an unnumbered file; a script sends it by name here.
   if (e.kind == Event::Kind::script && e.name == "STLExport") {
-    const unsigned every = export_every.get();
-    export_every.set(0u);
-    write();
-    export_every.set(every);
+    write_file(false);
     return;
   }
   SimulationExporter::handle_event(e);

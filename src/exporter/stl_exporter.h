@@ -25,11 +25,13 @@ class STLExporter final : public SimulationExporter {
   Field<std::vector<Quad>> quad{this, "quad", {}, "quads written (split in two triangles) when there are no triangles",
                                 "Export"};
 
-  bool write() override;
+  bool write() override { return write_file(true); }
   void handle_event(Event& e) override;
 
  private:
   void do_init() override;
+  // `numbered`: the export index is appended when exportEveryNumberOfSteps is set.
+  bool write_file(bool numbered);
 };
 
 }  // namespace sinew
