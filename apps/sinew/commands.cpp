@@ -240,6 +240,9 @@ int run(const RunArgs& a) {
     }
   }
   if (!a.vtk.empty() && !export_vtk(root, a.vtk)) ok = false;
+  // The scene is closed here (exporters with exportAtEnd write now) so that what it
+  // reports is printed below.
+  session.close();
   // Messages of the run (solver warnings, step errors), printed once.
   print_messages(session.diagnostics(), false, printed);
   if (interrupted) return 130;

@@ -126,9 +126,15 @@ void define_simulation(py::module_& m) {
   });
   m.def("unload", [](NodeHandle& h) {
     Node& n = h.node();
+    // SOFA's unload cleans the simulation up first: exporters write their exportAtEnd files.
+    if (n.initialised && !n.parent()) {
+      cleanup_root(n);
+      flush_messages(n);
+    }
     // The graph's contents go; the (root) node itself stays, empty, as in SOFA.
     while (!n.children().empty()) n.remove_child(n.children().back());
     while (!n.objects().empty()) n.remove_object(n.objects().back().get());
+    n.cleaned_up = false;  // a graph built again in this root is cleaned up again
   });
   m.def("load", &load_file, "Load a scene file (XML or Python) and return its root");
   m.def("print", [](NodeHandle& h) {

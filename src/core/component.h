@@ -71,6 +71,9 @@ class Component : public Base {
   virtual void reinit() {}
   virtual void reset() {}
   virtual void store_reset_state() {}
+  // The simulation is closed (SOFA's cleanup, before the graph is deleted): exporters
+  // write their last file here (exportAtEnd). Called once, by cleanup_root.
+  virtual void cleanup() {}
   virtual void handle_event(Event&) {}
   // A topology this component may depend on is changing: called during the top-down
   // visit of a propagation (core/topology_change.h); `source.topology_changes()` lists

@@ -173,6 +173,8 @@ class Node final : public Base {
   std::vector<StepObserver*>& step_observers() { return root()->step_observers_; }
   // Set once init() ran on this node's components (init_root, or init_added later).
   bool initialised = false;
+  // Root only: cleanup_root ran (the scene is closed; exporters wrote their last files).
+  bool cleaned_up = false;
   // Root only: the data folders resources were searched in when the scene was
   // loaded, in search order (SOFA's DataRepository; the first is where SOFA
   // writes caches such as PrecomputedConstraintCorrection's compliance).

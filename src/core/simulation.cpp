@@ -131,6 +131,15 @@ bool init_added(Node& root) {
   return diag.error_count() == errors_before;
 }
 
+void cleanup_root(Node& root) {
+  if (root.cleaned_up) return;
+  root.cleaned_up = true;
+  traverse(root, [](Node& n, bool) {
+    for (std::size_t i = 0; i < n.objects().size(); ++i) n.objects()[i]->cleanup();
+    return Visit::descend;
+  });
+}
+
 void reset_root(Node& root) {
   root.time.set(0.0);
   for_each_node(root, [](Node& n) {

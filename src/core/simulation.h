@@ -27,6 +27,11 @@ bool init_added(Node& root);
 // velocities), then positions and velocities projected and propagated.
 void reset_root(Node& root);
 
+// Closes the simulation (SOFA's CleanupVisitor, run when a scene is unloaded): every
+// component's cleanup(), top-down in node order. Exporters write their exportAtEnd
+// files here. Runs once per root; later calls do nothing.
+void cleanup_root(Node& root);
+
 // One step of dt (0: the root's dt).
 void animate(Node& root, double dt = 0);
 

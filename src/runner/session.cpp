@@ -42,7 +42,18 @@ Session::Session(const std::string& path, const SessionOptions& options) {
   }
 }
 
-Session::~Session() = default;
+Session::~Session() {
+  try {
+    close();
+  } catch (...) {  // a destructor lets nothing out; close() reports its own errors
+  }
+}
+
+void Session::close() {
+  // Only a simulation that was initialised is cleaned up: SOFA never runs cleanup on a
+  // scene that failed to load, so no exporter writes from a half-built graph.
+  if (scene_.root && scene_.root->initialised && !load_diag_.has_errors()) cleanup_root(*scene_.root);
+}
 
 bool Session::step() {
   if (!ok()) return false;

@@ -30,6 +30,9 @@ class Session {
 
   // One step of the root's dt; false once an error was reported.
   bool step();
+  // Closes the simulation (cleanup_root: exportAtEnd files are written). The destructor
+  // does it too; calling it first lets the caller print the messages it raises.
+  void close();
   long steps_done() const { return steps_; }
 
  private:
