@@ -49,9 +49,10 @@ struct RunResult {
 RunResult run(const TempDir& dir, const std::string& xml, long steps, bool close = true, bool expect_ok = true) {
   RunResult r;
   r.session = std::make_unique<runner::Session>(dir.write("scene.scn", xml), runner::SessionOptions{});
-  if (expect_ok)
+  if (expect_ok) {
     EXPECT_TRUE(r.session->ok()) << ::testing::PrintToString(
         test::messages(r.session->diagnostics(), Severity::error));
+  }
   for (long i = 0; i < steps && r.session->ok(); ++i) r.session->step();
   if (close) r.session->close();
   r.errors = test::messages(r.session->diagnostics(), Severity::error);
