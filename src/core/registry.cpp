@@ -118,9 +118,11 @@ std::string requirement_problem(const ComponentInfo& info, const std::string& tm
     return {};
   }
   if (info.requirement == Requirement::mapping) {
+    // "In,Out"; a one-type template names the input only (SOFA's classes templated on
+    // their input alone, e.g. DistanceToPlaneMapping<Vec3d>: the class fixes its output).
     const std::size_t comma = tmpl.find(',');
-    if (comma == std::string::npos) return "bad mapping template";
-    auto want_in = tmpl.substr(0, comma), want_out = tmpl.substr(comma + 1);
+    auto want_in = tmpl.substr(0, comma);
+    auto want_out = comma == std::string::npos ? std::string() : tmpl.substr(comma + 1);
     // Type name of the state a path designates ("" when none): mechanical
     // states, and visual models (always Vec3d) as outputs.
     auto state_at = [&](const std::string& path, bool allow_visual, Base** which) -> std::string {
@@ -149,7 +151,7 @@ std::string requirement_problem(const ComponentInfo& info, const std::string& tm
       if (want_in != in_type) return "input is " + in_type;
     }
     if (count == 0) return "input state not found";
-    if (want_out != out_type) return "output is " + out_type;
+    if (!want_out.empty() && want_out != out_type) return "output is " + out_type;
     return {};
   }
   return {};

@@ -5,6 +5,15 @@
 namespace sinew {
 
 void TriangleSetTopologyContainer::create_lower_lists() {
+  // SOFA's triangle container has no quad or hexahedron list (getNbQuads() is 0): what
+  // src=@grid brings there is not its own (AreaMapping refuses a topology with quads).
+  auto drop = [](auto& f) {
+    if (f.get().empty()) return;
+    if (f.parent()) f.set_parent(nullptr);
+    f.edit().clear();
+  };
+  drop(quads_f);
+  drop(hexahedra_f);
   // Edges of the triangles, stored as found (oriented like their first triangle).
   if (edges_f.get().empty()) {
     if (edges_f.parent()) edges_f.set_parent(nullptr);
