@@ -1,5 +1,6 @@
 // Viewer-side visual components in pictures (shown with showVisualModels):
-// VisualBoundingBox as the twelve edges of its box. Called per node by gather().
+// VisualBoundingBox as the twelve edges of its box; DataDisplay's mesh coloured through its
+// OglColorMap. Called per node by gather().
 #pragma once
 
 namespace sinew {
