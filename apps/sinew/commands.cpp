@@ -20,6 +20,8 @@
 #include "core/node.h"
 #include "core/registry.h"
 #include "core/profile.h"
+#include "haptics/haptics_report.h"
+#include "haptics/servo_loop.h"
 #include "io/vtk_writer.h"
 #include "regression/gzip_text.h"
 #include "render/offscreen.h"
@@ -221,10 +223,12 @@ int run(const RunArgs& a) {
   std::printf("Computing %ld iterations.\n", a.steps);
   ProgressBar bar(a.steps, a.progress);
   const auto t0 = std::chrono::steady_clock::now();
+  const std::int64_t haptics_from = haptics::ServoLoop::now_ns();
   const LoopEnd end = step_loop(session, a.steps, [&](long done) {
     bar.update(done);
     return true;
   });
+  const std::int64_t haptics_to = haptics::ServoLoop::now_ns();
   bool ok = end == LoopEnd::done;
   const bool interrupted = end == LoopEnd::interrupted;
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -232,6 +236,7 @@ int run(const RunArgs& a) {
   std::printf("%ld iterations done in %g s ( %g FPS).\n", done, secs, secs > 0 ? done / secs : 0.0);
   if (done > 0) std::printf("%.3f ms/step\n", 1000.0 * secs / done);
   if (a.timing && done > 0) print_profile(profile);
+  if (a.haptics_report) std::fputs(haptics::haptics_report(root, haptics_from, haptics_to).c_str(), stdout);
   for (const auto& [file, text] : dumps) {
     std::string err;
     if (!regression::write_text_file(file, *text, false, &err)) {

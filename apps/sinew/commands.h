@@ -17,6 +17,7 @@ struct RunArgs {
   bool progress = true;
   int threads = 0;
   bool timing = false;  // print where the steps spent their time
+  bool haptics_report = false;  // print the haptic loop's period distribution over the run
   std::vector<std::string> script_args;  // a Python scene's sys.argv[1:]
 };
 int run(const RunArgs& a);

@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
                       "write the final state of the first simulated body to this legacy VTK file (ParaView)");
   run_cmd->add_option("--threads", run_args.threads, "worker threads (default: all cores)");
   run_cmd->add_flag("--timing", run_args.timing, "print the time spent in each stage of the steps");
+  run_cmd->add_flag("--haptics-report", run_args.haptics_report,
+                    "print the haptic servo loop's period distribution (p50, p99, max) over the run");
   run_cmd->add_option("--argv", run_args.script_args, "arguments given to a Python scene (its sys.argv[1:])");
   bool hide_progress = false;
   run_cmd->add_flag("--hideProgressBar", hide_progress, "no progress bar");

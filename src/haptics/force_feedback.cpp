@@ -9,9 +9,12 @@ std::mutex& ForceFeedbackSlot::mutex() {
   return m;
 }
 
-ForceFeedback::~ForceFeedback() {
+ForceFeedback::~ForceFeedback() { detach_slots(); }
+
+void ForceFeedback::detach_slots() {
   std::lock_guard<std::mutex> lock(ForceFeedbackSlot::mutex());
   for (ForceFeedbackSlot* s : slots_) s->ff_ = nullptr;
+  slots_.clear();
 }
 
 void ForceFeedbackSlot::set(ForceFeedback* f) {

@@ -38,6 +38,12 @@ class ForceFeedback : public Component {
     torque = Vec3::Zero();
   }
 
+ protected:
+  // Empties every slot pointing here (waits for a call in progress). Derived
+  // classes whose compute_* read their own members call it first in their
+  // destructor: the base destructor runs after those members are gone.
+  void detach_slots();
+
  private:
   friend class ForceFeedbackSlot;
   std::vector<ForceFeedbackSlot*> slots_;  // guarded by the slots' mutex

@@ -176,6 +176,12 @@ const std::vector<ForceFieldCase> kCases = {
      kEnergy | kStiffness | kNetForce},
     {"FastTriangularBendingSprings", triangles(ff("FastTriangularBendingSprings", "bendingStiffness='10'")),
      kEnergy | kInternal},
+    // Threads to a needle's back point (0.5 0.5 2), held: two stretched, one slack (no force, no stiffness).
+    {"SutureSpringForceField",
+     node("<MechanicalObject name='dofs' position='0 0 0  1 0 0  0 1 0  0 0 1'/>"
+          "<Node name='n'><MechanicalObject name='needle' position='5 5 5  0.5 0.5 2'/></Node>" +
+          ff("SutureSpringForceField", "needle='@n/needle' stiffness='40' springs='0 0.5  2 1  3 3'")),
+     kEnergy | kStiffness},
     {"RestShapeSpringsForceField", tetras(ff("RestShapeSpringsForceField", "stiffness='100 200 300 400 500'")),
      kEnergy | kStiffness},
     {"RestShapeSpringsForceField_Vec2d",

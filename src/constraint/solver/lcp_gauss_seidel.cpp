@@ -64,6 +64,54 @@ void contact_new_gs_state(const ContactBlock33& b, double mu, double& dn, double
   add_change();
 }
 
+namespace {
+
+// One Gauss-Seidel update of contact c (rows 3c..3c+2), SOFA's loop body of
+// nlcp_gaussseidel: returns the contact's error |d_new − d_old|.
+double nlcp_contact_update(int n, int c, const double* dfree, const double* W, double* f, double mu, double min_w) {
+  auto w = [W, n](int i, int j) { return W[static_cast<std::size_t>(i) * n + j]; };
+  const int j = 3 * c;
+  const double f1[3] = {f[j], f[j + 1], f[j + 2]};
+  f[j] = f[j + 1] = f[j + 2] = 0.0;
+  // Violation from the other contacts only. Contacts without force add
+  // exact zeros: skipping them changes no bit and saves most of the work.
+  double dn = dfree[j], dt = dfree[j + 1], ds = dfree[j + 2];
+  const double* w0 = &W[static_cast<std::size_t>(j) * n];
+  const double* w1 = w0 + n;
+  const double* w2 = w1 + n;
+  for (int i = 0; i < n; i += 3) {
+    if (f[i] == 0.0 && f[i + 1] == 0.0 && f[i + 2] == 0.0) continue;
+    for (int l = i; l < i + 3; ++l) {
+      dn += w0[l] * f[l];
+      dt += w1[l] * f[l];
+      ds += w2[l] * f[l];
+    }
+  }
+  double d1[3];
+  for (int l = 0; l < 3; ++l) d1[l] = (l == 0 ? dn : l == 1 ? dt : ds) + w(j + l, j) * f1[0] +
+                                      w(j + l, j + 1) * f1[1] + w(j + l, j + 2) * f1[2];
+  double fn = 0.0, ft = 0.0, fs = 0.0;
+  if (!(min_w != 0.0 && std::fabs(w(j, j)) <= min_w)) {
+    ContactBlock33 b;
+    b.w[0] = w(j, j);
+    b.w[1] = w(j, j + 1);
+    b.w[2] = w(j, j + 2);
+    b.w[3] = w(j + 1, j + 1);
+    b.w[4] = w(j + 1, j + 2);
+    b.w[5] = w(j + 2, j + 2);
+    fn = f1[0];
+    ft = f1[1];
+    fs = f1[2];
+    contact_gs_state(b, mu, dn, dt, ds, fn, ft, fs);
+  }
+  f[j] = fn;
+  f[j + 1] = ft;
+  f[j + 2] = fs;
+  return abs_error(dn, dt, ds, d1[0], d1[1], d1[2]);
+}
+
+}  // namespace
+
 LcpResult nlcp_gauss_seidel(int n, const double* dfree, const double* W, double* f, double mu, double tol, int max_it,
                             bool use_initial_f, double min_w, double max_f) {
   LcpResult r;
@@ -71,55 +119,45 @@ LcpResult nlcp_gauss_seidel(int n, const double* dfree, const double* W, double*
   const int contacts = n / 3;
   if (!use_initial_f)
     for (int i = 0; i < n; ++i) f[i] = 0.0;
-  auto w = [W, n](int i, int j) { return W[static_cast<std::size_t>(i) * n + j]; };
+  int it = 0;
+  double error = 0.0;
+  for (it = 0; it < max_it; ++it) {
+    error = 0.0;
+    for (int c = 0; c < contacts; ++c) error += nlcp_contact_update(n, c, dfree, W, f, mu, min_w);
+    if (error < tol * (contacts + 1)) {
+      if (max_f != 0.0)
+        for (int c = 0; c < contacts; ++c)
+          if (std::fabs(f[3 * c]) >= max_f) f[3 * c] = f[3 * c + 1] = f[3 * c + 2] = 0.0;
+      r.iterations = it + 1;
+      r.error = error;
+      r.converged = true;
+      return r;
+    }
+  }
+  r.iterations = it;
+  r.error = error;
+  return r;
+}
+
+LcpResult nlcp_gauss_seidel_timed(int n, const double* dfree, const double* W, double* f, double mu, double tol,
+                                  int max_it, std::chrono::steady_clock::time_point deadline) {
+  LcpResult r;
+  if (n % 3 != 0) return r;
+  const int contacts = n / 3;
   int it = 0;
   double error = 0.0;
   for (it = 0; it < max_it; ++it) {
     error = 0.0;
     for (int c = 0; c < contacts; ++c) {
-      const int j = 3 * c;
-      const double f1[3] = {f[j], f[j + 1], f[j + 2]};
-      f[j] = f[j + 1] = f[j + 2] = 0.0;
-      // Violation from the other contacts only. Contacts without force add
-      // exact zeros: skipping them changes no bit and saves most of the work.
-      double dn = dfree[j], dt = dfree[j + 1], ds = dfree[j + 2];
-      const double* w0 = &W[static_cast<std::size_t>(j) * n];
-      const double* w1 = w0 + n;
-      const double* w2 = w1 + n;
-      for (int i = 0; i < n; i += 3) {
-        if (f[i] == 0.0 && f[i + 1] == 0.0 && f[i + 2] == 0.0) continue;
-        for (int l = i; l < i + 3; ++l) {
-          dn += w0[l] * f[l];
-          dt += w1[l] * f[l];
-          ds += w2[l] * f[l];
-        }
+      error += nlcp_contact_update(n, c, dfree, W, f, mu, 0.0);
+      if (std::chrono::steady_clock::now() > deadline) {
+        r.iterations = it + 1;
+        r.error = error;
+        r.timed_out = true;
+        return r;
       }
-      double d1[3];
-      for (int l = 0; l < 3; ++l) d1[l] = (l == 0 ? dn : l == 1 ? dt : ds) + w(j + l, j) * f1[0] +
-                                          w(j + l, j + 1) * f1[1] + w(j + l, j + 2) * f1[2];
-      double fn = 0.0, ft = 0.0, fs = 0.0;
-      if (!(min_w != 0.0 && std::fabs(w(j, j)) <= min_w)) {
-        ContactBlock33 b;
-        b.w[0] = w(j, j);
-        b.w[1] = w(j, j + 1);
-        b.w[2] = w(j, j + 2);
-        b.w[3] = w(j + 1, j + 1);
-        b.w[4] = w(j + 1, j + 2);
-        b.w[5] = w(j + 2, j + 2);
-        fn = f1[0];
-        ft = f1[1];
-        fs = f1[2];
-        contact_gs_state(b, mu, dn, dt, ds, fn, ft, fs);
-      }
-      error += abs_error(dn, dt, ds, d1[0], d1[1], d1[2]);
-      f[j] = fn;
-      f[j + 1] = ft;
-      f[j + 2] = fs;
     }
-    if (error < tol * (contacts + 1)) {
-      if (max_f != 0.0)
-        for (int c = 0; c < contacts; ++c)
-          if (std::fabs(f[3 * c]) >= max_f) f[3 * c] = f[3 * c + 1] = f[3 * c + 2] = 0.0;
+    if (error < tol) {
       r.iterations = it + 1;
       r.error = error;
       r.converged = true;

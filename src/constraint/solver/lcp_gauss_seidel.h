@@ -4,6 +4,7 @@
 // (LocalBlock33::GS_State / New_GS_State) the unbuilt solver also uses.
 #pragma once
 
+#include <chrono>
 #include <vector>
 
 namespace sinew {
@@ -12,6 +13,7 @@ struct LcpResult {
   int iterations = 0;  // sweeps done (SOFA's "GS iterations")
   double error = 0.0;  // error of the last sweep
   bool converged = false;
+  bool timed_out = false;  // nlcp_gauss_seidel_timed: stopped by its deadline
 };
 
 // The six distinct entries of a symmetric 3×3 contact block: W00 W01 W02 W11 W12 W22.
@@ -39,6 +41,15 @@ void contact_new_gs_state(const ContactBlock33& b, double mu, double& dn, double
 // contacts with |fn| ≥ max_f are released. n must be a multiple of 3.
 LcpResult nlcp_gauss_seidel(int n, const double* dfree, const double* W, double* f, double mu, double tol, int max_it,
                             bool use_initial_f, double min_w, double max_f);
+
+// SOFA's nlcp_gaussseidelTimed, the haptic re-solve of LCPForceFeedback: the
+// same sweeps starting from f as given (warm start, always), without the
+// min_w / max_f rules; converged when the error of a sweep is below `tol`
+// (not scaled by the contact count); stops as soon as the clock passes
+// `deadline` (checked after each contact, so f may be half a sweep newer).
+// Allocates nothing. n must be a multiple of 3 (else f is left as it is).
+LcpResult nlcp_gauss_seidel_timed(int n, const double* dfree, const double* W, double* f, double mu, double tol,
+                                  int max_it, std::chrono::steady_clock::time_point deadline);
 
 // Frictionless LCP (1 row per constraint), SOFA's gaussSeidelLCP1: starts
 // from zero forces; converged when Σ|W_ii Δf_i| < tol (not scaled).
