@@ -8,6 +8,7 @@
 #include "core/node.h"
 #include "core/registry.h"
 #include "math/finite_element.h"
+#include "topology/mesh_topology.h"
 
 namespace sinew {
 
@@ -46,6 +47,12 @@ bool FEMMass::tetra_mass(const std::array<Vec3, 4>& X, const std::array<double, 
 }
 bool FEMMass::hexa_mass(const std::array<Vec3, 8>& X, const std::array<double, 8>& rho, double* M) {
   return element_mass<fe::Hexa8>(X, rho, M);
+}
+bool FEMMass::prism_mass(const std::array<Vec3, 6>& X, const std::array<double, 6>& rho, double* M) {
+  return element_mass<fe::Prism6>(X, rho, M);
+}
+bool FEMMass::pyramid_mass(const std::array<Vec3, 5>& X, const std::array<double, 5>& rho, double* M) {
+  return element_mass<fe::Pyramid5>(X, rho, M);
 }
 
 void FEMMass::init() {
@@ -96,15 +103,24 @@ void FEMMass::init() {
     }
     return true;
   };
-  bool ok;
-  if (kind_ == ElementKind::hexahedron) {
-    const auto& h = topology->hexahedra();
-    if (h.empty()) return fail("the topology " + topology->describe() + " has no hexahedra");
-    ok = assemble(h, &FEMMass::hexa_mass, std::integral_constant<int, 8>{});
-  } else {
-    const auto& t = topology->tetrahedra();
-    if (t.empty()) return fail("the topology " + topology->describe() + " has no tetrahedra");
-    ok = assemble(t, &FEMMass::tetra_mass, std::integral_constant<int, 4>{});
+  bool ok = false;
+  const auto run = [&](const auto& elems, const char* name, auto mass_fn, auto tag) {
+    if (elems.empty()) return fail("the topology " + topology->describe() + " has no " + name);
+    ok = assemble(elems, mass_fn, tag);
+  };
+  switch (kind_) {
+    case ElementKind::tetrahedron:
+      run(topology->tetrahedra(), "tetrahedra", &FEMMass::tetra_mass, std::integral_constant<int, 4>{});
+      break;
+    case ElementKind::hexahedron:
+      run(topology->hexahedra(), "hexahedra", &FEMMass::hexa_mass, std::integral_constant<int, 8>{});
+      break;
+    case ElementKind::prism:
+      run(prisms_of(*topology), "prisms", &FEMMass::prism_mass, std::integral_constant<int, 6>{});
+      break;
+    case ElementKind::pyramid:
+      run(pyramids_of(*topology), "pyramids", &FEMMass::pyramid_mass, std::integral_constant<int, 5>{});
+      break;
   }
   if (!ok) return;
 
@@ -205,12 +221,15 @@ void register_fem_mass(Registry& r) {
   info.name = "FEMMass";
   info.category = "Mass";
   info.description = "Finite-element mass (inertia and body force)";
-  info.templates = {"Vec3d,Tetrahedron", "Vec3d,Hexahedron"};
+  info.templates = {"Vec3d,Tetrahedron", "Vec3d,Hexahedron", "Vec3d,Prism", "Vec3d,Pyramid"};
   info.default_template = "Vec3d,Tetrahedron";
   info.requirement = Requirement::none;  // the Vec3d state is checked at init
   info.create = [](const std::string& tmpl) -> std::unique_ptr<Component> {
-    return std::make_unique<FEMMass>(tmpl.find("Hexahedron") != std::string::npos ? FEMMass::ElementKind::hexahedron
-                                                                                   : FEMMass::ElementKind::tetrahedron);
+    FEMMass::ElementKind kind = FEMMass::ElementKind::tetrahedron;
+    if (tmpl.find("Hexahedron") != std::string::npos) kind = FEMMass::ElementKind::hexahedron;
+    else if (tmpl.find("Prism") != std::string::npos) kind = FEMMass::ElementKind::prism;
+    else if (tmpl.find("Pyramid") != std::string::npos) kind = FEMMass::ElementKind::pyramid;
+    return std::make_unique<FEMMass>(kind);
   };
   r.add(std::move(info));
 }

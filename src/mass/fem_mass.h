@@ -1,6 +1,7 @@
-// FEMMass: consistent finite-element mass on tetrahedra or hexahedra
-// (SOFA's FEMMass, spec/mechanics.md §1.4). Templates "Vec3d,Tetrahedron"
-// and "Vec3d,Hexahedron".
+// FEMMass: consistent finite-element mass on tetrahedra, hexahedra, prisms
+// or pyramids (SOFA's FEMMass, spec/mechanics.md §1.4). Templates
+// "Vec3d,Tetrahedron", "Vec3d,Hexahedron", "Vec3d,Prism", "Vec3d,Pyramid"
+// (prisms and pyramids come from a MeshTopology).
 //
 // M_e(i,j) = Σ_q w_q ρ(q) |det J(q)| N_i(q) N_j(q) on rest positions, with
 // ρ(q) = Σ_k N_k(q) ρ_k interpolated from a NodalMassDensity. The global
@@ -15,7 +16,7 @@ namespace sinew {
 
 class FEMMass final : public Mass {
  public:
-  enum class ElementKind { tetrahedron, hexahedron };
+  enum class ElementKind { tetrahedron, hexahedron, prism, pyramid };
 
   Link<NodalMassDensity> nodal_mass_density{this, "nodalMassDensity",
                                             "NodalMassDensity component (default: first one found in the context)"};
@@ -44,6 +45,8 @@ class FEMMass final : public Mass {
   // and nodal densities, as SOFA integrates it. false: degenerate element.
   static bool tetra_mass(const std::array<Vec3, 4>& X, const std::array<double, 4>& rho, double* M);
   static bool hexa_mass(const std::array<Vec3, 8>& X, const std::array<double, 8>& rho, double* M);
+  static bool prism_mass(const std::array<Vec3, 6>& X, const std::array<double, 6>& rho, double* M);
+  static bool pyramid_mass(const std::array<Vec3, 5>& X, const std::array<double, 5>& rho, double* M);
 
  private:
   ElementKind kind_;

@@ -1,5 +1,6 @@
 #include "math/decompose.h"
 
+#include <Eigen/SVD>
 #include <cmath>
 
 namespace sinew {
@@ -89,6 +90,15 @@ void polar_decomposition(const Mat3& M, Mat3& Q, Mat3& S, bool* singular) {
       S(i, j) = mk(i, 0) * M(0, j) + mk(i, 1) * M(1, j) + mk(i, 2) * M(2, j);
   for (int i = 0; i < 3; ++i)
     for (int j = i; j < 3; ++j) S(i, j) = S(j, i) = 0.5 * (S(i, j) + S(j, i));
+}
+
+Mat3 stable_polar_rotation(const Mat3& M) {
+  const Eigen::JacobiSVD<Mat3> svd(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Mat3 U = svd.matrixU();
+  const Mat3& V = svd.matrixV();
+  // Singular values come sorted in decreasing order: the last pair is the smallest one.
+  if (U.determinant() * V.determinant() < 0) U.col(2) = -U.col(2);
+  return U * V.transpose();
 }
 
 }  // namespace sinew

@@ -18,6 +18,13 @@ namespace sinew {
 // does; *singular (when given) tells the caller.
 Mat3 polar_rotation(const Mat3& M, bool* singular = nullptr);
 
+// Rotation factor of M by singular value decomposition (SOFA's
+// polarDecomposition_stable): R = U·Vᵀ with the singular vectors of the
+// smallest singular value flipped when needed so that det R = +1, even for a
+// reflecting or singular M. SOFA's own SVD routine is not reproduced: R agrees
+// with SOFA's to round-off, not bit for bit.
+Mat3 stable_polar_rotation(const Mat3& M);
+
 // Both factors: Q as above and S = Qᵀ·M (the last iterate times M, as SOFA
 // computes it), then set to ½(S + Sᵀ) so that it is exactly symmetric.
 void polar_decomposition(const Mat3& M, Mat3& Q, Mat3& S, bool* singular = nullptr);

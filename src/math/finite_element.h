@@ -80,6 +80,63 @@ struct Hexa8 {
   }
 };
 
+// 6-node linear prism (wedge), SOFA's FiniteElement<Prism>: reference nodes
+// (0,0,0) (1,0,0) (0,1,0) (0,0,1) (1,0,1) (0,1,1) (triangle 0,1,2 below,
+// 3,4,5 above); two quadrature points (⅓, ⅓, ½(1 ∓ 0.57735026919)) with
+// weight ¼ each (SOFA's truncated 1/√3; the reference volume is ½).
+struct Prism6 {
+  static constexpr int kNodes = 6;
+  static constexpr int kPoints = 2;
+  static std::array<Vec3d, kPoints> points() {
+    const double third = 1.0 / 3.0, s = 0.57735026919;
+    return {{{third, third, 0.5 * (1.0 - s)}, {third, third, 0.5 * (1.0 + s)}}};
+  }
+  static std::array<double, kPoints> weights() { return {1. / 4., 1. / 4.}; }
+  static void shape(const Vec3d& q, double (&N)[kNodes]) {
+    N[0] = q[0] * q[2] - q[0] + q[1] * q[2] - q[1] - q[2] + 1;
+    N[1] = (1 - q[2]) * q[0];
+    N[2] = (1 - q[2]) * q[1];
+    N[3] = (-q[0] - q[1] + 1) * q[2];
+    N[4] = q[0] * q[2];
+    N[5] = q[1] * q[2];
+  }
+  static void gradient(const Vec3d& q, double (&g)[kNodes][3]) {
+    const double G[6][3] = {{q[2] - 1, q[2] - 1, q[0] + q[1] - 1}, {1 - q[2], 0, -q[0]}, {0, 1 - q[2], -q[1]},
+                            {-q[2], -q[2], -q[0] - q[1] + 1},      {q[2], 0, q[0]},      {0, q[2], q[1]}};
+    for (int i = 0; i < kNodes; ++i)
+      for (int c = 0; c < 3; ++c) g[i][c] = G[i][c];
+  }
+};
+
+// 5-node pyramid, SOFA's FiniteElement<Pyramid>: reference base (−1,−1,−1)
+// (1,−1,−1) (1,1,−1) (−1,1,−1), apex (0,0,1); N_i = ⅛(1 ± x)(1 ± y)(1 − z)
+// for the base, ½(1 + z) for the apex (SOFA's collapsed-hexahedron
+// functions); the hexahedron's 2×2×2 Gauss points (±1/1.73205080757,
+// weight 1), which integrate the (1 − z)² Jacobian exactly.
+struct Pyramid5 {
+  static constexpr int kNodes = 5;
+  static constexpr int kPoints = 8;
+  static std::array<Vec3d, kPoints> points() { return Hexa8::points(); }
+  static std::array<double, kPoints> weights() { return Hexa8::weights(); }
+  static void shape(const Vec3d& q, double (&N)[kNodes]) {
+    N[0] = 0.125 * (1 - q[0]) * (1 - q[1]) * (1 - q[2]);
+    N[1] = 0.125 * (1 + q[0]) * (1 - q[1]) * (1 - q[2]);
+    N[2] = 0.125 * (1 + q[0]) * (1 + q[1]) * (1 - q[2]);
+    N[3] = 0.125 * (1 - q[0]) * (1 + q[1]) * (1 - q[2]);
+    N[4] = 0.5 * (1 + q[2]);
+  }
+  static void gradient(const Vec3d& q, double (&g)[kNodes][3]) {
+    const double x = q[0], y = q[1], z = q[2];
+    const double G[5][3] = {{-0.125 * (1 - y) * (1 - z), -0.125 * (1 - x) * (1 - z), -0.125 * (1 - x) * (1 - y)},
+                            {0.125 * (1 - y) * (1 - z), -0.125 * (1 + x) * (1 - z), -0.125 * (1 + x) * (1 - y)},
+                            {0.125 * (1 + y) * (1 - z), 0.125 * (1 + x) * (1 - z), -0.125 * (1 + x) * (1 + y)},
+                            {-0.125 * (1 + y) * (1 - z), 0.125 * (1 - x) * (1 - z), -0.125 * (1 - x) * (1 + y)},
+                            {0, 0, 0.5}};
+    for (int i = 0; i < kNodes; ++i)
+      for (int c = 0; c < 3; ++c) g[i][c] = G[i][c];
+  }
+};
+
 // ------------------------------------------------------------ Jacobian helpers
 // J(a,b) = Σ_i X_i[a] · ∂N_i/∂q_b, summed over nodes in order.
 template <int N, class Point>

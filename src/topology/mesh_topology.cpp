@@ -653,4 +653,16 @@ void register_mesh_topology(Registry& r) {
   r.add(std::move(info));
 }
 
+const std::vector<Prism>& prisms_of(const MeshTopologyBase& t) {
+  static const std::vector<Prism> none;
+  const auto* m = dynamic_cast<const MeshTopology*>(&t);
+  return m ? m->prisms.get() : none;
+}
+
+const std::vector<Pyramid>& pyramids_of(const MeshTopologyBase& t) {
+  static const std::vector<Pyramid> none;
+  const auto* m = dynamic_cast<const MeshTopology*>(&t);
+  return m ? m->pyramids.get() : none;
+}
+
 }  // namespace sinew

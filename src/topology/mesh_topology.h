@@ -152,4 +152,11 @@ class MeshTopology : public MeshContainer {
   std::unique_ptr<Engine> edge_update_, triangle_update_, quad_update_;
 };
 
+// The prisms and pyramids of a topology: only a MeshTopology holds them (SOFA's
+// BaseMeshTopology::getPrisms/getPyramids); empty for every other topology.
+using Prism = std::array<unsigned, 6>;
+using Pyramid = std::array<unsigned, 5>;
+const std::vector<Prism>& prisms_of(const MeshTopologyBase& t);
+const std::vector<Pyramid>& pyramids_of(const MeshTopologyBase& t);
+
 }  // namespace sinew

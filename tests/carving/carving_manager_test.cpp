@@ -19,6 +19,7 @@
 #include "test_scene.h"
 #include "topology/dynamic/tetrahedron_set_topology_container.h"
 #include "topology/dynamic/triangle_set_topology_container.h"
+#include "test_paths.h"
 
 namespace sinew {
 namespace {

@@ -91,6 +91,15 @@ std::string hexas(const std::string& body, const char* gravity = "0 0 0") {
   return node("<RegularGridTopology name='grid' n='3 2 2' min='0 0 0' max='2 1 1'/>"
               "<MechanicalObject name='dofs'/>" + body, gravity);
 }
+// Two prisms sharing the quad (1, 2, 5, 4), and two pyramids on either side of the square base.
+std::string prisms(const std::string& body) {
+  return node("<MeshTopology name='topo' position='0 0 0  1 0 0  0 1 0  0 0 1  1 0 1.1  0 1 1  1.2 1.1 0  1.1 1 1'"
+              " prisms='0 1 2 3 4 5  1 6 2 4 7 5'/><MechanicalObject name='dofs'/>" + body);
+}
+std::string pyramids(const std::string& body) {
+  return node("<MeshTopology name='topo' position='0 0 0  1 0 0  1 1 0  0 1 0  0.5 0.5 1  0.4 0.6 -1'"
+              " pyramids='0 1 2 3 4  3 2 1 0 5'/><MechanicalObject name='dofs'/>" + body);
+}
 // Two triangles sharing the edge (1, 2) in the z = 0 plane.
 std::string triangles(const std::string& body) {
   return node("<MeshTopology name='topo' position='0 0 0  1 0 0  0 1 0  1.1 0.9 0' triangles='0 1 2  1 3 2'/>"
@@ -158,6 +167,10 @@ const std::vector<ForceFieldCase> kCases = {
     {"QuadularBendingSprings", quads(ff("QuadularBendingSprings", "stiffness='300' damping='2'")), kInternal},
     {"TriangularBendingSprings", triangles(ff("TriangularBendingSprings", "stiffness='300' damping='2'")),
      kEnergy | kInternal},
+    {"TriangleBendingSprings", triangles(ff("TriangleBendingSprings", "stiffness='300' damping='2'")),
+     kEnergy | kInternal},
+    {"TriangleBendingSprings_Quads", quads(ff("TriangleBendingSprings", "stiffness='300' damping='2'")),
+     kEnergy | kInternal},
     {"TriangularBiquadraticSpringsForceField",
      triangles(ff("TriangularBiquadraticSpringsForceField", kSoft + "compressible='0'")), kEnergy | kInternal},
     // The compression term's tangent is SOFA's regularised blend (exact only as J → 1): compressed
@@ -207,6 +220,36 @@ const std::vector<ForceFieldCase> kCases = {
      kEnergy | kStiffness},
     {"PlaneForceField_Rigid3d", beam(ff("PlaneForceField", "template='Rigid3d' normal='0 0.6 0.8' d='0.45' stiffness='700'")),
      kEnergy | kStiffness},
+    {"SphereForceField", tetras(ff("SphereForceField", "center='0.5 0.5 0.5' radius='1.2' stiffness='700' damping='3'")),
+     kEnergy | kStiffness},
+    {"SphereForceField_Bilateral",
+     tetras(ff("SphereForceField", "center='0.5 0.5 0.5' radius='0.6' stiffness='700' bilateral='1'")),
+     kEnergy | kStiffness},
+    // SOFA's tangent misses a term proportional to the penetration (ellipsoid_penalty.h): points
+    // 1% inside the ellipsoid, deformed by 0.1% only (as InteractionEllipsoidForceField).
+    {"EllipsoidForceField",
+     node("<MechanicalObject name='dofs' position='0.99 0 0  0 0.792 0  0 0 0.594  0.61845 0.61845 0'/>" +
+          ff("EllipsoidForceField", "center='0 0 0' vradius='1 0.8 0.6' stiffness='100' damping='0'")),
+     kStiffness, 0.05, 1e-3},
+    // Points 1% beyond the cone's base sphere: SOFA's tangent −k·n·nᵀ drops the curvature term
+    // k·d/ρ·(I − n·nᵀ), of the order of the penetration.
+    {"ConicalForceField",
+     node("<MechanicalObject name='dofs' position='0 0 1.01  0.1 0 1.005  0 0.2 0.9898  -0.15 0.1 0.9938'/>" +
+          ff("ConicalForceField", "coneCenter='0 0 0' coneHeight='0 0 1' coneAngle='40' stiffness='300' damping='0'")),
+     kStiffness, 0.05, 1e-3},
+    {"LinearForceField",
+     tetras(ff("LinearForceField", "points='1 3' times='0 2' forces='1 2 3  3 2 1' force='2'")), kEnergy | kStiffness},
+    {"LinearForceField_Rigid3d", beam(ff("LinearForceField", "template='Rigid3d' points='0 2' times='0 1' "
+                                                             "forces='1 0 0 0 0 1  0 2 0 1 0 0'")),
+     kStiffness},
+    {"DiagonalVelocityDampingForceField",
+     tetras(ff("DiagonalVelocityDampingForceField", "dampingCoefficient='0.5 0.2 0.1  1 2 3'")),
+     kEnergy | kStiffness | kDamping},
+    {"DiagonalVelocityDampingForceField_Rigid3d",
+     beam(ff("DiagonalVelocityDampingForceField", "template='Rigid3d' dampingCoefficient='1 2 3 4 5 6'")),
+     kStiffness | kDamping},
+    {"QuadPressureForceField", quads(ff("QuadPressureForceField", "quadList='0 1' pressure='0.3 0 -6'")), kStiffness},
+    {"SurfacePressureForceField", triangles(ff("SurfacePressureForceField", "pressure='40'")), kStiffness},
     // Pressure mode only: the binormal/p_intensity modes follow the edge directions with no
     // tangent in SOFA (addDForce adds nothing), so they would fail the tangent check by design
     // (tests/forcefield/edge_pressure_force_field_test.cpp covers them).
@@ -244,6 +287,11 @@ const std::vector<ForceFieldCase> kCases = {
     {"LinearSmallStrainFEMForceField_Hexahedron",
      hexas(ff("LinearSmallStrainFEMForceField", kElastic + "template='Vec3d,Hexahedron'")),
      kEnergy | kStiffness | kNetForce},
+    {"LinearSmallStrainFEMForceField_Prism", prisms(ff("LinearSmallStrainFEMForceField", kElastic + "template='Vec3d,Prism'")),
+     kEnergy | kStiffness | kNetForce},
+    {"LinearSmallStrainFEMForceField_Pyramid",
+     pyramids(ff("LinearSmallStrainFEMForceField", kElastic + "template='Vec3d,Pyramid'")),
+     kEnergy | kStiffness | kNetForce},
     // Small displacements with K sized from the current shape, as SOFA: exact tangent at rest only.
     {"TriangularFEMForceField_small", triangles(ff("TriangularFEMForceField", kSoft + "method='small'")),
      kStiffness | kNetForce | kExactAtRest, 0.2},
@@ -274,6 +322,13 @@ const std::vector<ForceFieldCase> kCases = {
     {"CorotationalFEMForceField_Tetrahedron", tetras(ff("CorotationalFEMForceField", kElastic)), kCorotational, 0.2},
     {"CorotationalFEMForceField_Hexahedron",
      hexas(ff("CorotationalFEMForceField", kElastic + "template='Vec3d,Hexahedron'")), kCorotational, 0.2},
+    {"CorotationalFEMForceField_Hexahedron_stable_polar",
+     hexas(ff("CorotationalFEMForceField", kElastic + "template='Vec3d,Hexahedron' rotationMethod='stable_polar'")),
+     kCorotational, 0.2},
+    {"CorotationalFEMForceField_Prism", prisms(ff("CorotationalFEMForceField", kElastic + "template='Vec3d,Prism'")),
+     kCorotational, 0.2},
+    {"CorotationalFEMForceField_Pyramid",
+     pyramids(ff("CorotationalFEMForceField", kElastic + "template='Vec3d,Pyramid'")), kCorotational, 0.2},
     {"HexahedronFEMForceField_large", hexas(ff("HexahedronFEMForceField", kElastic + "method='large'")),
      kEnergy | kCorotational, 0.2},
     {"HexahedronFEMForceField_polar", hexas(ff("HexahedronFEMForceField", kElastic + "method='polar'")),

@@ -64,6 +64,11 @@ std::string edges1d(const std::string& body) {
               "<MechanicalObject name='dofs' template='Vec1d' position='0  1  2.5'/>" + body);
 }
 const std::string kDensity = "<NodalMassDensity property='3'/>";
+// Two prisms sharing the quad (1, 2, 5, 4), and two pyramids sharing the apex 4.
+const std::string kPrisms = "<MeshTopology name='topo' position='0 0 0  1 0 0  0 1 0  0 0 1  1 0 1.1  0 1 1"
+                            "  1.2 1.1 0  1.1 1 1' prisms='0 1 2 3 4 5  1 6 2 4 7 5'/><MechanicalObject name='dofs'/>";
+const std::string kPyramids = "<MeshTopology name='topo' position='0 0 0  1 0 0  1 1 0  0 1 0  0.5 0.5 1  0.4 0.6 -1'"
+                              " pyramids='0 1 2 3 4  3 2 1 0 5'/><MechanicalObject name='dofs'/>";
 
 // ---------------------------------------------------------------- cases: one line per mass (variant)
 const std::vector<MassCase> kCases = {
@@ -81,6 +86,8 @@ const std::vector<MassCase> kCases = {
     {"MeshMatrixMass_Vec2d", triangles2d(mass("MeshMatrixMass", "massDensity='3'")), kTotal},
     {"FEMMass_Tetrahedron", tetras(kDensity + mass("FEMMass")), kTotal},
     {"FEMMass_Hexahedron", hexas(kDensity + mass("FEMMass", "template='Vec3d,Hexahedron'")), kTotal},
+    {"FEMMass_Prism", node(kPrisms + kDensity + mass("FEMMass", "template='Vec3d,Prism'")), kTotal},
+    {"FEMMass_Pyramid", node(kPyramids + kDensity + mass("FEMMass", "template='Vec3d,Pyramid'")), kTotal},
     // SOFA's element mass couples every node pair by ρ·V·8/27 (hexa_fem_and_mass_test.cpp): Σ M ≠ ρ·V = total().
     {"HexahedronFEMForceFieldAndMass",
      hexas(mass("HexahedronFEMForceFieldAndMass", "youngModulus='1000' poissonRatio='0.3' density='2'")), 0},

@@ -18,6 +18,7 @@
 #include "badinput_helpers.h"
 #include "runner/session.h"
 #include "test_scene.h"
+#include "test_paths.h"
 
 namespace sinew {
 namespace {

@@ -26,6 +26,7 @@
 #include "mass/uniform_mass.h"
 #include "solver/linear/cg_linear_solver.h"
 #include "test_scene.h"
+#include "test_paths.h"
 
 namespace sinew {
 namespace {

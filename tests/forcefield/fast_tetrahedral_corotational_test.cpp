@@ -16,6 +16,7 @@
 #include "spring_helpers.h"
 #include "state/mechanical_object.h"
 #include "test_scene.h"
+#include "test_paths.h"
 
 using namespace sinew;
 using namespace sinew::test;

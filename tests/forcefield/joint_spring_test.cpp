@@ -15,6 +15,7 @@
 #include "runner/session.h"
 #include "spring_helpers.h"
 #include "test_scene.h"
+#include "test_paths.h"
 
 using namespace sinew;
 using sinew::joints::JointSpring;

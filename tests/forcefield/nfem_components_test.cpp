@@ -218,9 +218,11 @@ TEST(NfemForceField, BadSetupsAreClearErrors) {
   EXPECT_TRUE(any_contains(
       init_errors(head + R"(<CorotationalFEMForceField template="Vec3,Hexahedron" rotationMethod="triangle"/></Node>)"),
       "unknown rotationMethod 'triangle'"));
+  EXPECT_TRUE(init_errors(head + R"(<CorotationalFEMForceField template="Vec3,Hexahedron" rotationMethod="stable_polar"/></Node>)")
+                  .empty());
   EXPECT_TRUE(any_contains(
-      init_errors(head + R"(<CorotationalFEMForceField template="Vec3,Hexahedron" rotationMethod="stable_polar"/></Node>)"),
-      "not supported"));
+      init_errors(head + R"(<CorotationalFEMForceField template="Vec3,Hexahedron" rotationMethod="svd"/></Node>)"),
+      "unknown rotationMethod 'svd'"));
   EXPECT_TRUE(any_contains(
       init_errors(head + R"(<LinearSmallStrainFEMForceField template="Vec3,Tetrahedron"/></Node>)"),
       "has no tetrahedra"));

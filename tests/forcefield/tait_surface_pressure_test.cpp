@@ -13,6 +13,7 @@
 #include "core/node.h"
 #include "core/simulation.h"
 #include "test_scene.h"
+#include "test_paths.h"
 
 namespace sinew {
 namespace {

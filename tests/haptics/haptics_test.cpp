@@ -17,6 +17,7 @@
 #include "haptics/scripted_device.h"
 #include "runner/session.h"
 #include "test_scene.h"
+#include "test_paths.h"
 
 using namespace sinew;
 using namespace sinew::haptics;

@@ -21,6 +21,7 @@
 #include "io/string_mesh_creator.h"
 #include "state/mechanical_object.h"
 #include "topology/mesh_topology.h"
+#include "test_paths.h"
 
 using namespace sinew;
 using sinew::test::get;

@@ -22,6 +22,7 @@
 #include "topology/dynamic/point_set_topology_container.h"
 #include "topology/dynamic/point_set_topology_modifier.h"
 #include "topology/dynamic/tetrahedron_set_topology_modifier.h"
+#include "test_paths.h"
 
 namespace sinew {
 namespace {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "badinput_helpers.h"
+#include "test_paths.h"
 
 namespace sinew {
 namespace {

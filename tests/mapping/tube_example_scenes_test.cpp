@@ -12,6 +12,7 @@
 #include "runner/session.h"
 #include "test_scene.h"
 #include "topology/dynamic/quad_set_topology_container.h"
+#include "test_paths.h"
 
 namespace sinew {
 namespace {

@@ -13,6 +13,7 @@
 #include "projective/fixed_projective_constraint.h"
 #include "state/mechanical_object.h"
 #include "test_scene.h"
+#include "test_paths.h"
 
 using namespace sinew;
 namespace fs = std::filesystem;

@@ -11,6 +11,7 @@
 #include "core/mechanical_ops.h"
 #include "core/node.h"
 #include "test_scene.h"
+#include "test_paths.h"
 
 using namespace sinew;
 

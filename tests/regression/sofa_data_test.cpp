@@ -11,6 +11,7 @@
 #include "regression/state_file.h"
 #include "regression/topology_compare.h"
 #include "regression/topology_file.h"
+#include "test_paths.h"
 
 namespace sinew::regression {
 namespace {

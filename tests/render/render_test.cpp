@@ -17,6 +17,7 @@
 #include "test_scene.h"
 #include "visual/clip_plane.h"
 #include "visual/ogl_model.h"
+#include "test_paths.h"
 
 namespace sinew {
 namespace {

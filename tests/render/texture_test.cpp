@@ -12,6 +12,7 @@
 #include "render/png_io.h"
 #include "test_scene.h"
 #include "visual/ogl_model.h"
+#include "test_paths.h"
 
 namespace sinew {
 namespace {

@@ -21,6 +21,7 @@
 #include <sstream>
 
 #include "test_scene.h"
+#include "test_paths.h"
 
 namespace fs = std::filesystem;
 using sinew::test::TempDir;

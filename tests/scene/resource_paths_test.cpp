@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include "test_paths.h"
 
 namespace fs = std::filesystem;
 using sinew::scene::ResourcePaths;

@@ -11,6 +11,7 @@
 
 #include "badinput_helpers.h"
 #include "oscillator.h"
+#include "test_paths.h"
 
 namespace sinew {
 namespace {

@@ -12,6 +12,7 @@
 #include "core/roles.h"
 #include "runner/session.h"
 #include "test_scene.h"
+#include "test_paths.h"
 
 namespace sinew::test {
 

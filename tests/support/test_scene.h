@@ -16,6 +16,7 @@
 #include "core/simulation.h"
 #include "scene/builder.h"
 #include "scene/xml_tree.h"
+#include "test_paths.h"
 
 namespace sinew::test {
 

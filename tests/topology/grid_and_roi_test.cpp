@@ -7,7 +7,9 @@
 #include <stdexcept>
 
 #include "state/mechanical_object.h"
+#include "badinput_helpers.h"
 #include "test_scene.h"
+#include "test_paths.h"
 
 using namespace sinew;
 using sinew::test::get;
@@ -316,6 +318,40 @@ TEST(CylinderGridTopology, PlacesTheGridInACylinder) {
   EXPECT_TRUE((t->point(4) - Vec3(1, 0, 0)).norm() < 1e-12);         // centre
   EXPECT_TRUE((t->point(17) - Vec3(1 + r2, r2, 4)).norm() < 1e-12);  // last corner, second layer
   EXPECT_EQ(t->hexahedra().size(), 4u);
+}
+
+// SphereGridTopology: a 3×3×3 cube [−2, 2]³ mapped onto the ball of radius 2 (corners at
+// distance 2 along the diagonals, face centres stay, the middle point at the centre), the
+// grid's z along the axis (0, 1, 0): grid (x, y, z) → world (x, z, −y).
+TEST(SphereGridTopology, PlacesTheGridInABall) {
+  scene::LoadedScene s = test::load(R"(<Node name="root">
+    <SphereGridTopology name="ball" n="3 3 3" radius="2" axis="0 1 0" center="0 5 0"/></Node>)");
+  ASSERT_TRUE(s.root);
+  auto* t = test::get<MeshTopologyBase>(*s.root, "ball");
+  ASSERT_NE(t, nullptr);
+  ASSERT_EQ(t->nb_points(), 27u);
+  const double c = 2 / std::sqrt(3.0);
+  EXPECT_TRUE((t->point(0) - Vec3(-c, 5 - c, c)).norm() < 1e-12);  // grid corner (−2, −2, −2)
+  EXPECT_TRUE((t->point(13) - Vec3(0, 5, 0)).norm() < 1e-12);      // the middle point
+  EXPECT_TRUE((t->point(4) - Vec3(0, 3, 0)).norm() < 1e-12);       // face centre (0, 0, −2)
+  EXPECT_TRUE((t->point(26) - Vec3(c, 5 + c, -c)).norm() < 1e-12);  // corner (2, 2, 2)
+  for (std::size_t i = 0; i < 27; ++i) EXPECT_LE((t->point(i) - Vec3(0, 5, 0)).norm(), 2 + 1e-12) << i;
+  EXPECT_EQ(t->hexahedra().size(), 8u);
+}
+
+TEST(SphereGridTopology, OnePointAlongADirectionIsAnError) {
+  scene::LoadedScene s = test::build(R"(<Node name="root"><SphereGridTopology n="3 3 1"/></Node>)");
+  ASSERT_TRUE(s.root);
+  init_root(*s.root);
+  EXPECT_FALSE(test::messages(s.root->diagnostics(), Severity::error).empty());
+}
+
+TEST(SphereGridTopology, SofaExampleRuns100Steps) {
+  const test::Outcome o = test::run_sofa_example("Component/Topology/Container/Grid/SphereGridTopology.scn", 100);
+  if (!o.loaded) GTEST_SKIP() << "SOFA data not found at " << SINEW_DATA_DIR;
+  EXPECT_EQ(o.steps, 100) << o.all();
+  EXPECT_TRUE(o.errors.empty()) << o.all();
+  EXPECT_TRUE(o.finite);
 }
 
 TEST(CylinderGridTopology, OnePointAcrossIsAnError) {

@@ -18,6 +18,7 @@
 #include "test_scene.h"
 #include "topology/dynamic/edge_set_topology_container.h"
 #include "topology/dynamic/triangle_set_topology_container.h"
+#include "test_paths.h"
 
 namespace sinew {
 namespace {

@@ -7,6 +7,7 @@
 
 #include "test_scene.h"
 #include "topology/grid/sparse_grid_ramification_topology.h"
+#include "test_paths.h"
 
 using namespace sinew;
 using sinew::test::get;

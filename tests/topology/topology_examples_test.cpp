@@ -17,6 +17,7 @@
 #include "test_scene.h"
 #include "topology/dynamic/element_removal.h"
 #include "topology/dynamic/point_set_topology_container.h"
+#include "test_paths.h"
 
 namespace sinew {
 namespace {

@@ -10,6 +10,7 @@
 #include "test_scene.h"
 #include "viewer/mouse_attach.h"
 #include "viewer/picking.h"
+#include "test_paths.h"
 
 namespace sinew::viewer {
 namespace {

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "badinput_helpers.h"
+#include "test_paths.h"
 
 namespace sinew::test {
 namespace {

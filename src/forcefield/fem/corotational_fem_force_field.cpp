@@ -4,30 +4,48 @@
 
 namespace sinew {
 
+namespace {
+// SOFA's default rotation method per element: the 3-node frame for tetrahedra, the averaged-edge
+// frame for hexahedra, the SVD polar decomposition for prisms and pyramids.
+const char* default_rotation(FemElementKind kind) {
+  switch (kind) {
+    case FemElementKind::tetrahedron: return "triangle";
+    case FemElementKind::hexahedron: return "hexahedron";
+    default: return "stable_polar";
+  }
+}
+// The element-specific method name, if any ("" for prisms and pyramids).
+std::string specific_rotation(FemElementKind kind) {
+  switch (kind) {
+    case FemElementKind::tetrahedron: return "triangle";
+    case FemElementKind::hexahedron: return "hexahedron";
+    default: return "";
+  }
+}
+std::string rotation_choices(FemElementKind kind) {
+  const std::string s = specific_rotation(kind);
+  return "stable_polar, polar, identity" + (s.empty() ? std::string() : " or " + s);
+}
+}  // namespace
+
 CorotationalFEMForceField::CorotationalFEMForceField(FemElementKind kind)
     : ElementFEMForceFieldBase(kind),
-      rotation_method_f(
-          this, "rotationMethod", kind == FemElementKind::hexahedron ? "hexahedron" : "triangle",
-          kind == FemElementKind::hexahedron
-              ? "element rotation extraction: stable_polar, polar, identity or hexahedron (two averaged edges)"
-              : "element rotation extraction: stable_polar, polar, identity or triangle (Gram-Schmidt frame of nodes "
-                "0, 1, 2)",
-          "Material") {}
+      rotation_method_f(this, "rotationMethod", default_rotation(kind),
+                        "element rotation extraction: " + rotation_choices(kind) +
+                            " (triangle: Gram-Schmidt frame of nodes 0, 1, 2; hexahedron: two averaged edges; "
+                            "stable_polar: SVD of the deformation about the centroids; polar: Higham's iteration)",
+                        "Material") {}
 
 bool CorotationalFEMForceField::rotation_method(fem::RotationMethod& out) {
   const std::string& m = rotation_method_f.get();
-  const bool hexa = element_kind() == FemElementKind::hexahedron;
+  const std::string specific = specific_rotation(element_kind());
   if (m == "polar") out = fem::RotationMethod::polar;
+  else if (m == "stable_polar") out = fem::RotationMethod::stable_polar;
   else if (m == "identity") out = fem::RotationMethod::identity;
-  else if (m == "triangle" && !hexa) out = fem::RotationMethod::triangle;
-  else if (m == "hexahedron" && hexa) out = fem::RotationMethod::hexahedron;
-  else if (m == "stable_polar") {
-    msg_error("rotationMethod 'stable_polar' is not supported yet (use polar, identity or " +
-              std::string(hexa ? "hexahedron" : "triangle") + ")");
-    return false;
-  } else {
-    msg_error("unknown rotationMethod '" + m + "' (expected stable_polar, polar, identity or " +
-              std::string(hexa ? "hexahedron" : "triangle") + ")");
+  else if (m == specific && m == "triangle") out = fem::RotationMethod::triangle;
+  else if (m == specific && m == "hexahedron") out = fem::RotationMethod::hexahedron;
+  else {
+    msg_error("unknown rotationMethod '" + m + "' (expected " + rotation_choices(element_kind()) + ")");
     return false;
   }
   return true;
@@ -37,8 +55,8 @@ void register_corotational_fem_force_field(Registry& r) {
   ComponentInfo info;
   info.name = "CorotationalFEMForceField";
   info.category = "ForceField/FEM";
-  info.description = "corotational linear elasticity (element-generic FEM on tetrahedra or hexahedra)";
-  info.templates = {"Vec3d,Tetrahedron", "Vec3d,Hexahedron"};
+  info.description = "corotational linear elasticity (element-generic FEM on tetrahedra, hexahedra, prisms or pyramids)";
+  info.templates = {"Vec3d,Tetrahedron", "Vec3d,Hexahedron", "Vec3d,Prism", "Vec3d,Pyramid"};
   info.default_template = "Vec3d,Tetrahedron";
   info.requirement = Requirement::none;  // the Vec3d state is checked at init
   info.create = [](const std::string& tmpl) -> std::unique_ptr<Component> {

@@ -81,7 +81,8 @@ Mat3 element_rotation(RotationMethod m, const Mat3& F0, const Vec3 (&x)[N], cons
       } else {
         return Mat3::Identity();
       }
-    case RotationMethod::polar: {
+    case RotationMethod::polar:
+    case RotationMethod::stable_polar: {
       const Vec3 t = centroid<N>(x), t0 = centroid<N>(X0);
       Vec3 P[N], Q[N];
       for (int k = 0; k < N; ++k) {
@@ -95,7 +96,7 @@ Mat3 element_rotation(RotationMethod m, const Mat3& F0, const Vec3 (&x)[N], cons
           for (int k = 1; k < N; ++k) s += P[k][i] * Q[k][j];
           H(i, j) = s;
         }
-      return polar_rotation(H);
+      return m == RotationMethod::polar ? polar_rotation(H) : stable_polar_rotation(H);
     }
     case RotationMethod::identity:
     case RotationMethod::none:
@@ -215,6 +216,8 @@ bool element_stiffness(const std::array<Vec3, E::kNodes>& X, double lambda, doub
 
 template bool element_stiffness<fe::Tetra4>(const std::array<Vec3, 4>&, double, double, double*, bool*);
 template bool element_stiffness<fe::Hexa8>(const std::array<Vec3, 8>&, double, double, double*, bool*);
+template bool element_stiffness<fe::Prism6>(const std::array<Vec3, 6>&, double, double, double*, bool*);
+template bool element_stiffness<fe::Pyramid5>(const std::array<Vec3, 5>&, double, double, double*, bool*);
 
 template <class E>
 std::vector<ElementIssue> ElementFEM<E>::init(std::span<const Vec3> X0, std::span<const std::array<unsigned, N>> elems,
@@ -369,5 +372,7 @@ void ElementFEM<E>::add_dforce(std::span<const Vec3> dx, std::span<Vec3> df, dou
 
 template struct ElementFEM<fe::Tetra4>;
 template struct ElementFEM<fe::Hexa8>;
+template struct ElementFEM<fe::Prism6>;
+template struct ElementFEM<fe::Pyramid5>;
 
 }  // namespace sinew::fem

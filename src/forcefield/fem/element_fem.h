@@ -1,6 +1,7 @@
 // Numerical kernel of SOFA's element-generic linear FEM
 // (LinearSmallStrainFEMForceField, CorotationalFEMForceField) on linear
-// tetrahedra and trilinear hexahedra, as plain per-element arrays.
+// tetrahedra, trilinear hexahedra, linear prisms and pyramids, as plain
+// per-element arrays.
 // Spec: shared/spec/mechanics.md §2.5 (traps 6 and 14).
 //
 // Element stiffness K_e = Σ_q w_q |det J_q| Bᵀ C B from rest positions, with
@@ -30,7 +31,8 @@ enum class RotationMethod {
   identity,    // R = I
   triangle,    // frame of nodes 0,1,2 (default for tetrahedra)
   hexahedron,  // frame of the averaged x and y edges (default for hexahedra)
-  polar,       // orthogonal factor of Σ (x−t)(X0−t0)ᵀ
+  polar,       // orthogonal factor of Σ (x−t)(X0−t0)ᵀ (Higham's iteration)
+  stable_polar,  // the same by SVD, always a rotation (SOFA's StablePolarDecomposition)
 };
 
 // A problem found while preparing the elements (element = −1: whole input).
@@ -43,7 +45,7 @@ struct ElementIssue {
 // Lamé parameters as SOFA computes them (3D): μ = E/(2(1+ν)), λ = Eν/((1+ν)(1−2ν)).
 void lame_parameters(double young, double poisson, double& lambda, double& mu);
 
-// Element stiffness of element type E (fe::Tetra4 / fe::Hexa8) from its rest
+// Element stiffness of element type E (fe::Tetra4, Hexa8, Prism6, Pyramid5) from its rest
 // nodes, dof order (node0 x,y,z, node1 x,y,z, ...), row-major D×D with
 // D = 3·E::kNodes. Returns false when the Jacobian is singular at some
 // quadrature point (degenerate element); K is then left unspecified.
@@ -127,5 +129,7 @@ struct ElementFEM {
 
 extern template struct ElementFEM<fe::Tetra4>;
 extern template struct ElementFEM<fe::Hexa8>;
+extern template struct ElementFEM<fe::Prism6>;
+extern template struct ElementFEM<fe::Pyramid5>;
 
 }  // namespace sinew::fem

@@ -1,15 +1,41 @@
 #include "forcefield/fem/element_fem_force_field.h"
 
 #include <cmath>
+#include <type_traits>
 
 #include "core/init_checks.h"
 #include "core/node.h"
+#include "topology/mesh_topology.h"
 
 namespace sinew {
 
 FemElementKind fem_element_kind_from_template(const std::string& tmpl) {
-  return tmpl.find("Hexahedron") != std::string::npos ? FemElementKind::hexahedron : FemElementKind::tetrahedron;
+  if (tmpl.find("Hexahedron") != std::string::npos) return FemElementKind::hexahedron;
+  if (tmpl.find("Prism") != std::string::npos) return FemElementKind::prism;
+  if (tmpl.find("Pyramid") != std::string::npos) return FemElementKind::pyramid;
+  return FemElementKind::tetrahedron;
 }
+
+const char* fem_element_plural(FemElementKind kind) {
+  switch (kind) {
+    case FemElementKind::tetrahedron: return "tetrahedra";
+    case FemElementKind::hexahedron: return "hexahedra";
+    case FemElementKind::prism: return "prisms";
+    case FemElementKind::pyramid: return "pyramids";
+  }
+  return "elements";
+}
+
+namespace {
+// The topology's elements with N nodes (4: tetrahedra, 8: hexahedra, 6: prisms, 5: pyramids).
+template <int N>
+const std::vector<std::array<unsigned, N>>& element_list(const MeshTopologyBase& t) {
+  if constexpr (N == 4) return t.tetrahedra();
+  else if constexpr (N == 8) return t.hexahedra();
+  else if constexpr (N == 6) return prisms_of(t);
+  else return pyramids_of(t);
+}
+}  // namespace
 
 bool ElementFEMForceFieldBase::read_strategy(const Field<std::string>& f, bool& parallel) {
   const std::string& v = f.get();
@@ -41,10 +67,10 @@ void ElementFEMForceFieldBase::init() {
     return;
   }
 
-  const bool hexa = kind_ == FemElementKind::hexahedron;
-  const std::size_t ne = hexa ? topology->hexahedra().size() : topology->tetrahedra().size();
+  std::size_t ne = 0;
+  visit_kernel([&](auto& kernel) { ne = element_list<std::decay_t<decltype(kernel)>::N>(*topology).size(); });
   if (ne == 0)
-    return fail("the topology " + topology->describe() + " has no " + (hexa ? "hexahedra" : "tetrahedra"));
+    return fail("the topology " + topology->describe() + " has no " + fem_element_plural(kind_));
 
   // Material per element: value i if given, else value 0 (SOFA's broadcast);
   // SOFA replaces E < 0 by 5000 and ν outside [0, 0.5) by 0.45, with a warning.
@@ -82,21 +108,15 @@ void ElementFEMForceFieldBase::init() {
   std::vector<fem::ElementIssue> issues;
   std::vector<double>& flat = element_stiffness.edit();
   flat.clear();
-  if (hexa) {
-    const auto& h = topology->hexahedra();
-    issues = hexa_.init(X0, std::span<const std::array<unsigned, 8>>(h.data(), h.size()), E, nu, method);
-    hexa_.parallel_force = par_f;
-    hexa_.parallel_dforce = par_df;
-    flat.reserve(ne * 24 * 24);
-    for (const auto& k : hexa_.K) flat.insert(flat.end(), k.begin(), k.end());
-  } else {
-    const auto& t = topology->tetrahedra();
-    issues = tetra_.init(X0, std::span<const std::array<unsigned, 4>>(t.data(), t.size()), E, nu, method);
-    tetra_.parallel_force = par_f;
-    tetra_.parallel_dforce = par_df;
-    flat.reserve(ne * 12 * 12);
-    for (const auto& k : tetra_.K) flat.insert(flat.end(), k.begin(), k.end());
-  }
+  visit_kernel([&](auto& kernel) {
+    constexpr int N = std::decay_t<decltype(kernel)>::N;
+    const auto& elems = element_list<N>(*topology);
+    issues = kernel.init(X0, std::span<const std::array<unsigned, N>>(elems.data(), elems.size()), E, nu, method);
+    kernel.parallel_force = par_f;
+    kernel.parallel_dforce = par_df;
+    flat.reserve(ne * 9 * N * N);
+    for (const auto& k : kernel.K) flat.insert(flat.end(), k.begin(), k.end());
+  });
   bool fatal = false;
   for (const auto& is : issues) {
     const std::string where = is.element >= 0 ? "element " + std::to_string(is.element) + ": " : "";
@@ -116,8 +136,7 @@ void ElementFEMForceFieldBase::add_force(const MechParams& p) {
   const std::span<const Vec3> x = as_vec3(s.read(p.x));
   const std::span<const Vec3> X0 = as_vec3(s.read(kRestPosition));
   const std::span<Vec3> f = as_vec3(s.write(p.f));
-  if (kind_ == FemElementKind::hexahedron) hexa_.add_force(x, X0, f);
-  else tetra_.add_force(x, X0, f);
+  visit_kernel([&](auto& kernel) { kernel.add_force(x, X0, f); });
 }
 
 void ElementFEMForceFieldBase::add_dforce(const MechParams& p, double kfactor) {
@@ -125,16 +144,14 @@ void ElementFEMForceFieldBase::add_dforce(const MechParams& p, double kfactor) {
   MechanicalState& s = *mstate;
   const std::span<const Vec3> dx = as_vec3(s.read(p.dx));
   const std::span<Vec3> df = as_vec3(s.write(p.df));
-  if (kind_ == FemElementKind::hexahedron) hexa_.add_dforce(dx, df, kfactor);
-  else tetra_.add_dforce(dx, df, kfactor);
+  visit_kernel([&](auto& kernel) { kernel.add_dforce(dx, df, kfactor); });
 }
 
 bool ElementFEMForceFieldBase::build_stiffness(MatrixSink& K) {
   if (state() != ComponentState::valid) return true;
   const MechanicalState* s = mstate.get();
   auto sink = [&](unsigned i, unsigned j, const Mat3& b) { K.add_block(s, 3 * i, s, 3 * j, b); };
-  if (kind_ == FemElementKind::hexahedron) hexa_.stiffness_blocks(sink);
-  else tetra_.stiffness_blocks(sink);
+  visit_kernel([&](const auto& kernel) { kernel.stiffness_blocks(sink); });
   return true;
 }
 

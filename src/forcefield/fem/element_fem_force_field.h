@@ -1,7 +1,8 @@
 // Common base of SOFA's element-generic linear FEM force fields
 // (LinearSmallStrainFEMForceField, CorotationalFEMForceField; SOFA's
 // FEMForceField + BaseElementLinearFEMForceField), templates
-// "Vec3d,Tetrahedron" and "Vec3d,Hexahedron" (spec/mechanics.md §2.5).
+// "Vec3d,Tetrahedron", "Vec3d,Hexahedron", "Vec3d,Prism" and "Vec3d,Pyramid"
+// (spec/mechanics.md §2.5); prisms and pyramids come from a MeshTopology.
 // Not a component by itself; the kernel lives in forcefield/element_fem.h.
 #pragma once
 
@@ -10,7 +11,7 @@
 
 namespace sinew {
 
-enum class FemElementKind { tetrahedron, hexahedron };
+enum class FemElementKind { tetrahedron, hexahedron, prism, pyramid };
 
 class ElementFEMForceFieldBase : public ForceField {
  public:
@@ -42,6 +43,16 @@ class ElementFEMForceFieldBase : public ForceField {
   FemElementKind element_kind() const { return kind_; }
   const fem::ElementFEM<fe::Tetra4>& tetra_kernel() const { return tetra_; }
   const fem::ElementFEM<fe::Hexa8>& hexa_kernel() const { return hexa_; }
+  // Calls f(kernel) with the kernel of this force field's element kind.
+  template <class F>
+  void visit_kernel(F&& f) const {
+    switch (kind_) {
+      case FemElementKind::tetrahedron: f(tetra_); break;
+      case FemElementKind::hexahedron: f(hexa_); break;
+      case FemElementKind::prism: f(prism_); break;
+      case FemElementKind::pyramid: f(pyramid_); break;
+    }
+  }
 
  protected:
   // The rotation method of the element kernels (none for the linear field);
@@ -54,9 +65,22 @@ class ElementFEMForceFieldBase : public ForceField {
   FemElementKind kind_;
   fem::ElementFEM<fe::Tetra4> tetra_;
   fem::ElementFEM<fe::Hexa8> hexa_;
+  fem::ElementFEM<fe::Prism6> prism_;
+  fem::ElementFEM<fe::Pyramid5> pyramid_;
+  template <class F>
+  void visit_kernel(F&& f) {
+    switch (kind_) {
+      case FemElementKind::tetrahedron: f(tetra_); break;
+      case FemElementKind::hexahedron: f(hexa_); break;
+      case FemElementKind::prism: f(prism_); break;
+      case FemElementKind::pyramid: f(pyramid_); break;
+    }
+  }
 };
 
-// "Vec3d,Tetrahedron" → tetrahedron, "Vec3d,Hexahedron" → hexahedron.
+// "Vec3d,Tetrahedron" → tetrahedron, "Vec3d,Hexahedron" → hexahedron, "…,Prism", "…,Pyramid".
 FemElementKind fem_element_kind_from_template(const std::string& tmpl);
+// The element name of a kind ("tetrahedra", ...), for messages.
+const char* fem_element_plural(FemElementKind kind);
 
 }  // namespace sinew

@@ -12,8 +12,7 @@ std::optional<double> LinearSmallStrainFEMForceField::potential_energy() const {
   // The blocks are those of ∂f/∂x = −K.
   double e = 0;
   auto add = [&](unsigned i, unsigned j, const Mat3& b) { e -= 0.5 * (x[i] - x0[i]).dot(b * (x[j] - x0[j])); };
-  if (element_kind() == FemElementKind::hexahedron) hexa_kernel().stiffness_blocks(add);
-  else tetra_kernel().stiffness_blocks(add);
+  visit_kernel([&](const auto& kernel) { kernel.stiffness_blocks(add); });
   return e;
 }
 
@@ -21,8 +20,8 @@ void register_linear_small_strain_fem_force_field(Registry& r) {
   ComponentInfo info;
   info.name = "LinearSmallStrainFEMForceField";
   info.category = "ForceField/FEM";
-  info.description = "Hooke's law assuming small strain (element-generic FEM on tetrahedra or hexahedra)";
-  info.templates = {"Vec3d,Tetrahedron", "Vec3d,Hexahedron"};
+  info.description = "Hooke's law assuming small strain (element-generic FEM on tetrahedra, hexahedra, prisms or pyramids)";
+  info.templates = {"Vec3d,Tetrahedron", "Vec3d,Hexahedron", "Vec3d,Prism", "Vec3d,Pyramid"};
   info.default_template = "Vec3d,Tetrahedron";
   info.requirement = Requirement::none;  // the Vec3d state is checked at init
   info.create = [](const std::string& tmpl) -> std::unique_ptr<Component> {

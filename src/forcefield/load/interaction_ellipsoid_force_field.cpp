@@ -4,6 +4,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "forcefield/load/ellipsoid_penalty.h"
 
 namespace sinew {
 
@@ -84,7 +85,7 @@ void InteractionEllipsoidForceField::add_force(const MechParams& p) {
   const double* frame = &x2[7 * k];
   const double C[3] = {frame[0], frame[1], frame[2]};
   for (int i = 0; i < 4; ++i) q_[i] = frame[3 + i];
-  const double ks = stiffness.value(), kabs = std::fabs(ks), kd = damping.value();
+  const double ks = stiffness.value(), kd = damping.value();
   double f2[3] = {0, 0, 0};
   contacts_.clear();
   const std::size_t n = x1.size() / 3;
@@ -106,27 +107,14 @@ void InteractionEllipsoidForceField::add_force(const MechParams& p) {
         for (int j = 0; j < 3; ++j) bdp[j] = dp[j];
       }
     }
-    if (be < 0 || !((bn2 - 1) * ks < 0)) continue;
-    const Vec3& ir = inv_r2_[be];
-    const double norm = std::sqrt(bn2);
-    const double v = norm - 1;
-    double g[3];
-    for (int j = 0; j < 3; ++j) g[j] = bdp[j] * ir[j];
-    const double gn2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
-    const double gn = std::sqrt(gn2);
-    const double fi = -kabs * v / gn;
-    const double di = kd * std::fabs(v);
-    double fl[3];
-    for (int j = 0; j < 3; ++j) fl[j] = g[j] * fi - vl[j] * di;
+    if (be < 0) continue;
+    EllipsoidPenalty pen;
+    if (!ellipsoid_penalty(bdp, inv_r2_[be].data(), 3, ks, kd, vl, pen)) continue;
+    const double* fl = pen.force;
     Contact c;
     c.index = static_cast<unsigned>(i);
-    const double fact1 = -kabs / (norm * gn);
-    const double fact2 = -kabs * v / gn;
-    const double fact3 = -kabs * v / gn2;
-    for (int ci = 0; ci < 3; ++ci) {
-      for (int cj = 0; cj < 3; ++cj) c.m[ci][cj] = g[ci] * g[cj] * (fact1 + fact3 * ir[cj]);
-      c.m[ci][ci] += fact2 * ir[ci];
-    }
+    for (int ci = 0; ci < 3; ++ci)
+      for (int cj = 0; cj < 3; ++cj) c.m[ci][cj] = pen.m[ci][cj];
     double fw[3];
     rotate(q_, fl, fw, 1.0);
     for (int j = 0; j < 3; ++j) {

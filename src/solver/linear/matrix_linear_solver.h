@@ -32,7 +32,8 @@ class MatrixLinearSolver : public LinearSolver {
 
   // Global-vector interface (preconditioners, constraint corrections):
   // factorizes if the system changed, then solves A·x = b.
-  void solve_global(Eigen::VectorXd& x, const Eigen::VectorXd& b);
+  // (AsyncSparseLDLSolver decides itself which factorization solves.)
+  virtual void solve_global(Eigen::VectorXd& x, const Eigen::VectorXd& b);
   MatrixLinearSystem* system() const { return linear_system.get(); }
   // Constraint corrections (§3.0): result += fact·J·A⁻¹·Jᵀ, J with system-size
   // columns; one solve A·y = J_rowᵀ per non-empty row of J, then

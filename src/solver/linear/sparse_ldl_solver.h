@@ -12,12 +12,13 @@
 
 #include <vector>
 
+#include "solver/linear/ldl_factorization.h"
 #include "solver/linear/matrix_linear_solver.h"
 #include "solver/linear/ordering_method.h"
 
 namespace sinew {
 
-class SparseLDLSolver final : public MatrixLinearSolver {
+class SparseLDLSolver : public MatrixLinearSolver {
  public:
   Field<bool> precompute_symbolic_decomposition{
       this, "precomputeSymbolicDecomposition", true,
@@ -27,30 +28,28 @@ class SparseLDLSolver final : public MatrixLinearSolver {
   Link<OrderingMethod> ordering_method{this, "orderingMethod", "fill-reducing ordering (default: AMD)"};
 
   void init() override;
-  // J·A⁻¹·Jᵀ = Yᵀ·D⁻¹·Y with Y = L⁻¹·P·Jᵀ: one forward solve per row of J,
-  // restricted to the rows its few non-zeros reach in the elimination tree
-  // (sparse right-hand side), then sparse dot products.
+  // J·A⁻¹·Jᵀ with the factorization (ldl_add_jminvjt).
   void add_jminvjt(Eigen::MatrixXd& result, const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& J,
                    double fact) override;
   // Symbolic factorizations done so far (tests).
-  long symbolic_count() const { return symbolic_count_; }
-  bool factorized() const { return factorized_; }
+  long symbolic_count() const { return factor_->symbolic_count; }
+  bool factorized() const { return factor_->factorized; }
 
  protected:
   void invert(const BlockCsrMatrix& A) override;
   void solve(const BlockCsrMatrix& A, Eigen::VectorXd& x, const Eigen::VectorXd& b) override;
+  // Messages for a factorization's outcome (simulation thread); true when usable.
+  bool report(const LdlOutcome& outcome, const LdlFactorization& f);
+  // Solves with `f` (zero when it is not usable).
+  void solve_with(LdlFactorization& f, Eigen::VectorXd& x, const Eigen::VectorXd& b);
+
+  LdlFactorization first_;
+  // The factorization solves use: first_ here; AsyncSparseLDLSolver swaps it.
+  LdlFactorization* factor_ = &first_;
+  LdlJminvjtScratch jminvjt_;
 
  private:
-  int n_ = 0;
-  std::vector<int> rb_, ci_, prev_rb_, prev_ci_;
-  std::vector<double> vals_;
-  std::vector<int> perm_, invperm_, lp_, parent_, lnz_, flag_, li_, pattern_;
-  std::vector<double> lx_, d_, inv_d_, y_, t_;
-  bool factorized_ = false, have_symbolic_ = false, warned_indefinite_ = false;
-  // add_jminvjt scratch: Y by column (row of J), its pattern in increasing order.
-  std::vector<int> y_start_, y_idx_, reach_mark_, reach_;
-  std::vector<double> y_val_, dense_;
-  long symbolic_count_ = 0;
+  bool warned_indefinite_ = false;
 };
 
 }  // namespace sinew
