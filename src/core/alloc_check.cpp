@@ -3,16 +3,30 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 
 #include "core/component.h"
 
 namespace sinew {
 
-std::uint64_t physical_memory_bytes() {
+namespace {
+std::uint64_t machine_memory_bytes() {
   const long pages = ::sysconf(_SC_PHYS_PAGES);
   const long page = ::sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page <= 0) return std::uint64_t{64} << 30;
-  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page);
+  std::uint64_t bytes = std::uint64_t{64} << 30;
+  if (pages > 0 && page > 0) bytes = static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page);
+  if (const char* cap = std::getenv("SINEW_MEMORY_LIMIT_MB")) {
+    char* end = nullptr;
+    const unsigned long long mb = std::strtoull(cap, &end, 10);
+    if (end != cap && mb > 0 && mb < (bytes >> 20)) bytes = static_cast<std::uint64_t>(mb) << 20;
+  }
+  return bytes;
+}
+}  // namespace
+
+std::uint64_t physical_memory_bytes() {
+  static const std::uint64_t bytes = machine_memory_bytes();  // thread-safe static init
+  return bytes;
 }
 
 bool allocation_fits(double count, double bytes_each) {

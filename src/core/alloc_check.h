@@ -11,10 +11,14 @@ namespace sinew {
 
 class Component;
 
-// This machine's physical memory in bytes (sysconf), or 64 GiB when unknown.
+// The memory a scene may ask for, in bytes: this machine's physical memory
+// (sysconf; 64 GiB when unknown), or less when the environment variable
+// SINEW_MEMORY_LIMIT_MB is a positive number of megabytes (read once). The fuzz
+// targets and scripts/mutate lower it so that a huge count is refused at once
+// instead of being allocated and touched.
 std::uint64_t physical_memory_bytes();
 
-// Whether `count` items of about `bytes_each` bytes fit in physical memory.
+// Whether `count` items of about `bytes_each` bytes fit in that memory.
 bool allocation_fits(double count, double bytes_each);
 
 // "1.5 GB", "96 GB": a byte count for messages.

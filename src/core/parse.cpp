@@ -1,8 +1,12 @@
 #include "core/parse.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
+
+#include "core/alloc_check.h"
 
 namespace sinew::parse {
 
@@ -81,8 +85,14 @@ bool read_double(std::string_view token, double& out) {
   if (num[0] == '+') num.remove_prefix(1);
   auto [ptr, ec] = std::from_chars(num.data(), num.data() + num.size(), out);
   if (ec == std::errc::result_out_of_range) {
-    // Like strtod: overflow saturates, underflow goes to zero.
+    // As std::istream >> double (libstdc++'s strtod-based conversion): underflow keeps
+    // strtod's denormal or zero and succeeds; overflow stores ±DBL_MAX and fails, so
+    // "1e400" in a scene is a warning and never an infinity in a field.
     out = std::strtod(std::string(num).c_str(), nullptr);
+    if (std::isinf(out)) {
+      out = std::copysign(std::numeric_limits<double>::max(), out);
+      return false;
+    }
     return true;
   }
   return ec == std::errc();
@@ -137,6 +147,11 @@ bool read(std::string_view text, double& v) {
 bool read(std::string_view text, float& v) {
   double d = 0;
   const bool ok = read(text, d);
+  // istream >> float: beyond FLT_MAX is ±FLT_MAX and a failure, never an infinity.
+  if (std::abs(d) > std::numeric_limits<float>::max()) {
+    v = std::copysign(std::numeric_limits<float>::max(), static_cast<float>(d));
+    return false;
+  }
   v = static_cast<float>(d);
   return ok;
 }
@@ -209,10 +224,21 @@ bool read_integral_list(std::string_view text, std::vector<I>& v) {
         push(0);
         continue;
       }
-      if (a <= b)
-        for (long long x = a; x <= b; x += s) push(x);
-      else
-        for (long long x = a; x >= b; x -= s) push(x);
+      // The count first: a range is a size taken from the scene ("0-888888888" would be
+      // 3.5 GB), refused (a failure, the caller warns) when it would not fit in memory;
+      // unsigned arithmetic so that ranges near the ends of long long cannot overflow.
+      const unsigned long long span = a <= b ? static_cast<unsigned long long>(b) - static_cast<unsigned long long>(a)
+                                             : static_cast<unsigned long long>(a) - static_cast<unsigned long long>(b);
+      const unsigned long long count = span / static_cast<unsigned long long>(s) + 1;
+      if (!allocation_fits(static_cast<double>(v.size()) + static_cast<double>(count), sizeof(I))) {
+        ok = false;
+        continue;
+      }
+      for (unsigned long long k = 0; k < count; ++k) {
+        const unsigned long long step = k * static_cast<unsigned long long>(s);
+        push(static_cast<long long>(a <= b ? static_cast<unsigned long long>(a) + step
+                                           : static_cast<unsigned long long>(a) - step));
+      }
       continue;
     }
     long long x = 0;

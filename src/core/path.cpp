@@ -48,8 +48,14 @@ Base* relative_index(Node& node, Component* owner, std::string_view elem, std::s
 Base* resolve_object_path(Node& start, Component* owner, std::string_view path,
                           const std::function<bool(Base*)>& accept, std::string* why) {
   if (!path.empty() && path[0] == '@') path.remove_prefix(1);
-  if (path.empty()) return owner ? static_cast<Base*>(owner) : &start;
-  if (path.front() == '[' && path.back() == ']') return relative_index(start, owner, path, why);
+  // "@" (the owner) and "@[k]" are checked against `accept` like every other path:
+  // a multi-link would otherwise drop a target of the wrong type without a word.
+  if (path.empty() || (path.front() == '[' && path.back() == ']')) {
+    Base* b = path.empty() ? (owner ? static_cast<Base*>(owner) : &start) : relative_index(start, owner, path, why);
+    if (!b || accept(b)) return b;
+    if (why) *why = b->describe() + " has the wrong type";
+    return nullptr;
+  }
 
   Node* node = &start;
   Base* current = nullptr;  // object reached, if any

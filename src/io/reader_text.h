@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <type_traits>
 #include <vector>
 
 namespace sinew::io::internal {
@@ -68,14 +70,33 @@ struct TokenStream {
 // A whole token as a number (double, float or an integer type), with an optional leading '+'.
 // "1e+", "0,5", "0.x" or "2.5" for an integer are errors: each makes SOFA's stream read (or its
 // safeStrToInt) fail, so accepting their valid prefix would build a mesh SOFA does not have.
+// So are "nan", "inf" and values beyond the type's range, which std::from_chars would accept
+// or saturate (and SOFA's stream read refuses): a mesh never brings a non-finite number.
 template <class T>
 bool to_number(std::string_view t, T& v) {
   if (t.empty()) return false;
   const char* b = t.data();
   const char* e = t.data() + t.size();
   if (*b == '+') ++b;
-  const auto r = std::from_chars(b, e, v);
-  return r.ec == std::errc() && r.ptr == e;
+  T x{};
+  const auto r = std::from_chars(b, e, x);
+  if (r.ec != std::errc() || r.ptr != e) return false;
+  if constexpr (std::is_floating_point_v<T>)
+    if (!std::isfinite(x)) return false;
+  v = x;
+  return true;
+}
+
+// Whether every coordinate of `points` is finite; otherwise the index of the first one
+// that is not in *bad. Binary formats (STL, VTK BINARY, VTU base64) carry raw floats.
+template <class V>
+bool all_finite(const std::vector<V>& points, std::size_t* bad) {
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!points[i].allFinite()) {
+      *bad = i;
+      return false;
+    }
+  return true;
 }
 
 // Reverses an element's vertex order when the loader flips normals.

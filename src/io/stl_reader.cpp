@@ -102,6 +102,16 @@ std::optional<MeshData> read_stl(const std::string& path, std::string* error, co
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;  // degenerate: dropped (as SOFA)
     m.triangles.push_back(maybe_flip(t, opt.flip_normals));
   }
+  // Raw floats may be NaN or infinite: refused here rather than met as a diverged state.
+  std::size_t bad = 0;
+  if (!all_finite(m.positions, &bad)) {
+    if (error) *error = path + ": vertex " + std::to_string(bad) + " has a non-finite coordinate";
+    return std::nullopt;
+  }
+  if (!all_finite(m.normals, &bad)) {
+    if (error) *error = path + ": facet " + std::to_string(bad) + " has a non-finite normal";
+    return std::nullopt;
+  }
   return m;
 }
 

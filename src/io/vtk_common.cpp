@@ -174,9 +174,12 @@ bool vtk_to_mesh(MeshData& m, const VtkCells& vc, const std::string& path, std::
   return true;
 }
 
-void set_points(MeshData& m, const std::vector<double>& xyz) {
+bool set_points(MeshData& m, const std::vector<double>& xyz, const std::string& path, std::string* error) {
   m.positions.resize(xyz.size() / 3);
   for (std::size_t i = 0; i < m.positions.size(); ++i) m.positions[i] = Vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+  std::size_t bad = 0;
+  if (all_finite(m.positions, &bad)) return true;
+  return fail(error, path + ": point " + std::to_string(bad) + " has a non-finite coordinate");
 }
 
 }  // namespace sinew::io::internal

@@ -66,8 +66,9 @@ struct VtkCells {
 // with the reason in *error for an index beyond the points, a truncated or unknown cell.
 bool vtk_to_mesh(MeshData& m, const VtkCells& vc, const std::string& path, std::string* error, bool flip);
 
-// Positions from a flat x, y, z array.
-void set_points(MeshData& m, const std::vector<double>& xyz);
+// Positions from a flat x, y, z array; false with "<path>: point k has a non-finite
+// coordinate" in *error when one is NaN or infinite (binary arrays carry raw floats).
+bool set_points(MeshData& m, const std::vector<double>& xyz, const std::string& path, std::string* error);
 
 // The two readers behind read_vtk, given the whole file text.
 std::optional<MeshData> read_vtk_legacy(const std::string& path, const std::string& text, std::string* error,

@@ -248,11 +248,13 @@ std::optional<MeshData> read_vtk_legacy(const std::string& path, const std::stri
   vc.polygons = std::move(polygons.v);
   vc.cells = std::move(cells.v);
   vc.types = std::move(types.v);
-  set_points(m, points.v);
+  if (!set_points(m, points.v, path, error)) return std::nullopt;
   if (normals.ok) {
     m.normals.resize(normals.v.size() / 3);
     for (std::size_t i = 0; i < m.normals.size(); ++i)
       m.normals[i] = Vec3(normals.v[3 * i], normals.v[3 * i + 1], normals.v[3 * i + 2]);
+    std::size_t bad = 0;
+    if (!all_finite(m.normals, &bad)) return err("normal " + std::to_string(bad) + " is not finite");
   }
   if (!vtk_to_mesh(m, vc, path, error, opt.flip_normals)) return std::nullopt;
   return m;

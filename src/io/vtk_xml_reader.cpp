@@ -160,7 +160,7 @@ std::optional<MeshData> read_vtk_xml(const std::string& path, const std::string&
   std::vector<double> points;
   // SOFA stores XML point coordinates as Float64 (ASCII values are not rounded to float).
   if (!read_data_array(*pts->FirstChildElement("DataArray"), layout, points, why, true)) return err("Points: " + why);
-  set_points(m, points);
+  if (!set_points(m, points, path, error)) return std::nullopt;
   VtkCells vc;
   // Connectivity, offsets and (unless every cell has `fixed_type`) types, by Name.
   auto read_cells = [&](const tx::XMLElement& cells, int fixed_type) -> bool {

@@ -7,6 +7,7 @@
 
 #include "core/node.h"
 #include "core/alloc_check.h"
+#include "core/pseudo_attribute.h"
 #include "core/registry.h"
 #include "core/state_creator.h"
 #include "math/rigid.h"
@@ -225,7 +226,7 @@ void MechanicalObject::parse(AttributeMap& attrs, Diagnostics& diag) {
   auto read_float = [&](const char* key, double& out) {
     if (const std::string* s = attrs.take(key)) {
       double d = 0;
-      parse::read(*s, d);
+      read_pseudo_number(*this, diag, key, *s, d);
       out = static_cast<double>(static_cast<float>(d));
       return true;
     }

@@ -7,6 +7,7 @@
 
 #include "core/node.h"
 #include "core/parse.h"
+#include "core/pseudo_attribute.h"
 #include "core/registry.h"
 #include "core/value_text.h"
 #include "io/mesh_readers.h"
@@ -47,7 +48,7 @@ void OglModel::parse(AttributeMap& attrs, Diagnostics& diag) {
   auto get_float = [&](const char* key, double def, bool& any) {
     if (const std::string* s = attrs.take(key)) {
       double d = 0;
-      parse::read(*s, d);
+      read_pseudo_number(*this, diag, key, *s, d);
       any = true;
       return static_cast<double>(static_cast<float>(d));
     }

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -289,4 +290,43 @@ TEST(ParseRigid3Mass, ShortTextGivesFewerValuesAndGarbageFails) {
   EXPECT_EQ(v, (std::vector<double>{1, 1, 1, 0}));
   // A second '[' is not a matrix decoration (SOFA skips one only).
   EXPECT_FALSE(parse::read_rigid3_mass("1 1 [[1 0 0 0 1 0 0 0 1]]", v));
+}
+
+// Found by fuzz_field_values: "3E33331" read as +inf and was written back as "inf",
+// which reads as 0. std::istream (SOFA's reader) stores ±max and fails on overflow.
+TEST(ParseDouble, OverflowIsTheLargestFiniteValueAndAFailure) {
+  double d = 0;
+  EXPECT_FALSE(parse::read("3E33331", d));
+  EXPECT_EQ(d, std::numeric_limits<double>::max());
+  EXPECT_FALSE(parse::read("-1e400", d));
+  EXPECT_EQ(d, -std::numeric_limits<double>::max());
+  float f = 0;
+  EXPECT_FALSE(parse::read("1e39", f));
+  EXPECT_EQ(f, std::numeric_limits<float>::max());
+  EXPECT_FALSE(parse::read("1e400", f));
+  EXPECT_EQ(f, std::numeric_limits<float>::max());
+  // Underflow is not a failure: zero (or a denormal), as strtod.
+  EXPECT_TRUE(parse::read("1e-400", d));
+  EXPECT_EQ(d, 0.0);
+  // A list stops at the overflowing number (as a stream read would).
+  std::vector<double> v;
+  EXPECT_FALSE(parse::read("1 1e400 2", v));
+  EXPECT_EQ(v, std::vector<double>{1.0});
+  Vec3 p = Vec3::Zero();
+  EXPECT_FALSE(parse::read("1 1e999 3", p));
+  EXPECT_TRUE(p.allFinite());
+}
+
+// Found by fuzz_field_values: "888888888-8" expanded to 888 million indices (3.5 GB).
+// A range is a size from the scene: refused (a failure the loader warns about) when it
+// would not fit in memory; ranges at the ends of long long do not overflow.
+TEST(ParseIndexList, RangeBeyondMemoryIsRefusedNotAllocated) {
+  std::vector<unsigned> v;
+  EXPECT_FALSE(parse::read("1 0-9000000000000000000 2", v));
+  EXPECT_EQ(v, (std::vector<unsigned>{1, 2}));
+  std::vector<int> w;
+  EXPECT_TRUE(parse::read("9223372036854775805-9223372036854775807", w));
+  EXPECT_EQ(w.size(), 3u);
+  EXPECT_TRUE(parse::read("10-4-3", v));
+  EXPECT_EQ(v, (std::vector<unsigned>{10, 7, 4}));
 }

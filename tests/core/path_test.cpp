@@ -119,6 +119,19 @@ TEST(PathResolution, EmptyPathIsTheOwner) {
   EXPECT_EQ(resolve_object_path(*g.body, g.b, "@", any), static_cast<Base*>(g.b));
 }
 
+// Found by fuzz_link_paths: "@" and "@[k]" returned an object the predicate refuses
+// (a multi-link then dropped it without a word); they are checked like every path.
+TEST(PathResolution, OwnerAndRelativeIndexAreCheckedAgainstTheType) {
+  Graph g;
+  std::string why;
+  EXPECT_EQ(resolve_object_path(*g.body, g.b, "@", is_foo, &why), nullptr);
+  EXPECT_NE(why.find("wrong type"), std::string::npos) << why;
+  why.clear();
+  EXPECT_EQ(resolve_object_path(*g.body, g.c, "@[-1]", is_foo, &why), nullptr);  // b is a Bar
+  EXPECT_NE(why.find("wrong type"), std::string::npos) << why;
+  EXPECT_EQ(resolve_object_path(*g.body, g.c, "@[-2]", is_foo), static_cast<Base*>(g.a));
+}
+
 // §2.3 rule 3: a leading / starts from the root.
 TEST(PathResolution, AbsolutePathStartsAtTheRoot) {
   Graph g;

@@ -116,6 +116,16 @@ void CGLinearSolver::solve_system(MechanicalOps& ops, int x, int rhs) {
         msg_warning("denominator threshold reached at the first iteration of CG; check the threshold value");
       }
       const double alpha = rho / den;
+      // Past convergence with tolerance and threshold 0, rho and den underflow towards
+      // denormals and alpha overflows: SOFA's loop then writes inf/NaN into x. Stop at the
+      // last finite iterate instead, once said.
+      if (!std::isfinite(alpha) || !std::isfinite(rho)) {
+        if (!breakdown_reported_)
+          msg_warning("CG breakdown at iteration " + std::to_string(k) +
+                      " (step length not finite): the iterations stop at the last finite solution");
+        breakdown_reported_ = true;
+        break;
+      }
       ops.v_peq(x, p_, alpha);
       ops.v_peq(r_, q_, -alpha);
       rho_prev = rho;

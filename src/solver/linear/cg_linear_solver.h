@@ -34,6 +34,7 @@ class CGLinearSolver final : public LinearSolver {
   int r_ = -1, p_ = -1, q_ = -1;
   long time_step_count_ = 0;
   int last_iterations_ = 0;
+  bool breakdown_reported_ = false;  // the non-finite step-length warning, once
   double last_error_ = 0;
 };
 

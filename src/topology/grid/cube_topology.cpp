@@ -1,6 +1,7 @@
 #include "topology/grid/cube_topology.h"
 
 #include "core/alloc_check.h"
+#include "core/pseudo_attribute.h"
 #include "core/registry.h"
 
 namespace sinew {
@@ -13,14 +14,14 @@ void CubeTopology::parse(AttributeMap& attrs, Diagnostics& diag) {
   float scale = 1.0f;
   if (const std::string* s = attrs.take("scale")) {
     double d = 1;
-    parse::read(*s, d);
+    read_pseudo_number(*this, diag, "scale", *s, d);
     scale = static_cast<float>(d);
   }
   if (all) {
     float v[6];
     for (int i = 0; i < 6; ++i) {
       double d = 0;
-      parse::read(*attrs.take(keys[i]), d);
+      read_pseudo_number(*this, diag, keys[i], *attrs.take(keys[i]), d);
       v[i] = static_cast<float>(d);
     }
     min.set(Vec3(static_cast<double>(v[0] * scale), static_cast<double>(v[1] * scale), static_cast<double>(v[2] * scale)));

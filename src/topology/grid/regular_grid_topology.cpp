@@ -1,9 +1,11 @@
 #include "topology/grid/regular_grid_topology.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
 #include "core/alloc_check.h"
+#include "core/pseudo_attribute.h"
 #include "core/registry.h"
 
 namespace sinew {
@@ -22,11 +24,13 @@ void RegularGridTopology::parse(AttributeMap& attrs, Diagnostics& diag) {
   const std::string* sz = attrs.peek("nz");
   if (sx && sy && sz) {
     VecNi<3> v;
-    int a = 0, b = 0, c = 0;
-    parse::read(*attrs.take("nx"), a);
-    parse::read(*attrs.take("ny"), b);
-    parse::read(*attrs.take("nz"), c);
-    v << a, b, c;
+    double a = 0, b = 0, c = 0;
+    read_pseudo_number(*this, diag, "nx", *attrs.take("nx"), a);
+    read_pseudo_number(*this, diag, "ny", *attrs.take("ny"), b);
+    read_pseudo_number(*this, diag, "nz", *attrs.take("nz"), c);
+    // Integers as SOFA's atoi reads them; out-of-range counts stay out of range (init refuses them).
+    auto to_int = [](double d) { return static_cast<int>(std::clamp(d, -2147483648.0, 2147483647.0)); };
+    v << to_int(a), to_int(b), to_int(c);
     n.set(v);
   }
   // xmin..zmax: all six required; read as single-precision floats and scaled (SOFA quirk).
@@ -37,13 +41,13 @@ void RegularGridTopology::parse(AttributeMap& attrs, Diagnostics& diag) {
     float scale = 1.0f;
     if (const std::string* s = attrs.take("scale")) {
       double d = 1;
-      parse::read(*s, d);
+      read_pseudo_number(*this, diag, "scale", *s, d);
       scale = static_cast<float>(d);
     }
     float v[6];
     for (int i = 0; i < 6; ++i) {
       double d = 0;
-      parse::read(*attrs.take(keys[i]), d);
+      read_pseudo_number(*this, diag, keys[i], *attrs.take(keys[i]), d);
       v[i] = static_cast<float>(d) * scale;
     }
     min.set(Vec3(v[0], v[1], v[2]));
