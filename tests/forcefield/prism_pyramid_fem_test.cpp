@@ -17,6 +17,7 @@
 #include "math/decompose.h"
 #include "math/finite_element.h"
 #include "test_scene.h"
+#include "topology/mesh_topology.h"
 #include "test_paths.h"
 
 namespace sinew {
@@ -151,8 +152,8 @@ TEST(PrismPyramidElements, HexahedraSplitIntoTwoPrismsEach) {
     <MechanicalObject name="state"/>
     <Node name="prisms"><MeshTopology name="out"/><Hexa2PrismTopologicalMapping input="@../grid" output="@out"/></Node>
   </Node>)");
-  auto* out = dynamic_cast<MeshTopology*>(s.root->find_object_named("out"));
-  if (!out) out = test::get<MeshTopology>(*s.root->children().front(), "out");
+  ASSERT_FALSE(s.root->children().empty());
+  auto* out = test::get<MeshTopology>(*s.root->children().front(), "out");
   ASSERT_NE(out, nullptr);
   const auto& p = out->prisms.get();
   ASSERT_EQ(p.size(), 4u);
