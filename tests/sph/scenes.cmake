@@ -18,5 +18,7 @@ foreach(scene OglFluidModel_SPH.scn OglFluidModel_SPHParticles.scn ParticleSink.
   add_test(NAME sph-run:${scene}
            COMMAND sh -c "test -f \"$1\" || { echo \"SOFA data absent ($1): skipped\"; exit 77; }; exec \"$0\" run \"$1\" -n 100 --hideProgressBar --data-path \"$2\""
                    $<TARGET_FILE:sinew> ${sph_examples}/${scene} ${SINEW_DATA_DIR}/share)
-  set_tests_properties(sph-run:${scene} PROPERTIES SKIP_RETURN_CODE 77 LABELS sofa TIMEOUT 900)
+  # From the source tree: XML macros (BoxConstraint) are looked up in the default data root.
+  set_tests_properties(sph-run:${scene} PROPERTIES SKIP_RETURN_CODE 77 LABELS sofa TIMEOUT 900
+                                                   WORKING_DIRECTORY ${CMAKE_SOURCE_DIR})
 endforeach()
