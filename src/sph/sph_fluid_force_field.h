@@ -65,7 +65,7 @@ class SPHFluidForceField final : public ForceField {
   std::vector<double> pair_q_;
   std::vector<std::uint32_t> row_start_, nb_j_;
   std::vector<double> nb_q_;
-  std::vector<double> density_, pressure_, normal_, curvature_;
+  std::vector<double> density_, pressure_, normal_, curvature_, p_over_rho2_;
   bool warned_kernel_ = false;
 };
 
