@@ -8,7 +8,7 @@
 
 namespace sinew {
 
-class PointCollisionModel final : public CollisionModelBase {
+class PointCollisionModel : public CollisionModelBase {
  public:
   PointCollisionModel() : CollisionModelBase(Kind::point) {}
 

@@ -1,0 +1,249 @@
+#include "sph/sph_fluid_force_field.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/node.h"
+#include "core/parse.h"
+#include "core/registry.h"
+#include "sph/spatial_grid_container.h"
+#include "sph/sph_kernels.h"
+
+namespace sinew {
+
+void SPHFluidForceField::parse(AttributeMap& attrs, Diagnostics& diag) {
+  Component::parse(attrs, diag);
+  if (!(radius.value() > 0))
+    diag.error(where, describe() + ": radius must be positive (got " + parse::format_double(radius.value()) + ")");
+  if (viscosity_type.value() < 0 || viscosity_type.value() > 2)
+    diag.error(where, describe() + ": viscosityType must be 0, 1 or 2 (got " +
+                          std::to_string(viscosity_type.value()) + ")");
+  if (surface_tension_type.value() < 0 || surface_tension_type.value() > 2)
+    diag.error(where, describe() + ": surfaceTensionType must be 0, 1 or 2 (got " +
+                          std::to_string(surface_tension_type.value()) + ")");
+  if (pressure_type.value() < 0 || pressure_type.value() > 1)
+    diag.error(where, describe() + ": pressureType must be 0 or 1 (got " + std::to_string(pressure_type.value()) + ")");
+}
+
+void SPHFluidForceField::init() {
+  ForceField::init();
+  if (state() != ComponentState::valid) return;
+  if (mstate->state_type() != StateType::vec3) {
+    msg_error("needs a Vec3d state (got " + std::string(mstate->info().name) + ")");
+    set_state(ComponentState::invalid);
+    return;
+  }
+  if (kernel_type.get() != 0 && kernel_type.get() != 1) {
+    // SOFA reports it at every step and falls back to the default kernels.
+    msg_error("unsupported kernelType " + std::to_string(kernel_type.get()) + ": using the default kernels (0)");
+  }
+  grid_ = node()->find_up<SpatialGridContainer>();
+  if (!grid_) msg_error("no SpatialGridContainer in this node or above: the slow O(n²) neighbour search is used");
+  else if (grid_->cell_width.get() < radius.get())
+    msg_warning("the SpatialGridContainer's cellWidth " + parse::format_double(grid_->cell_width.get()) +
+                " is smaller than the radius " + parse::format_double(radius.get()) + ": neighbours will be missed");
+  const std::size_t n = mstate->size();
+  density_.assign(n, density.get());
+  pressure_.assign(n, 0.0);
+}
+
+void SPHFluidForceField::find_neighbours(const std::vector<double>& x) {
+  const std::size_t n = x.size() / 3;
+  const double h = radius.value();
+  const double h2 = h * h;
+  pair_i_.clear();
+  pair_j_.clear();
+  pair_q_.clear();
+  // The grid is looked up again each step (cheap): it may have been removed from the graph.
+  grid_ = node()->find_up<SpatialGridContainer>();
+  if (grid_ && grid_->state() == ComponentState::valid) {
+    grid_->update(x);
+    grid_->grid().for_each_pair(h, [&](std::uint32_t a, std::uint32_t b, double r2) {
+      pair_i_.push_back(a < b ? a : b);
+      pair_j_.push_back(a < b ? b : a);
+      pair_q_.push_back(std::sqrt(r2 / h2));
+    });
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* xi = &x[3 * i];
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const double* xj = &x[3 * j];
+        const double dx = xj[0] - xi[0], dy = xj[1] - xi[1], dz = xj[2] - xi[2];
+        const double r2 = dx * dx + dy * dy + dz * dz;
+        if (r2 < h2) {
+          pair_i_.push_back(static_cast<std::uint32_t>(i));
+          pair_j_.push_back(static_cast<std::uint32_t>(j));
+          pair_q_.push_back(std::sqrt(r2 / h2));
+        }
+      }
+    }
+  }
+  // Rows by lower index, pairs of a row in the order found (SOFA's push_back per particle).
+  const std::size_t np = pair_i_.size();
+  row_start_.assign(n + 1, 0);
+  for (std::size_t k = 0; k < np; ++k) ++row_start_[pair_i_[k] + 1];
+  for (std::size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
+  nb_j_.resize(np);
+  nb_q_.resize(np);
+  // Fill with a cursor per row (row_start_ shifted back afterwards).
+  for (std::size_t k = 0; k < np; ++k) {
+    const std::uint32_t slot = row_start_[pair_i_[k]]++;
+    nb_j_[slot] = pair_j_[k];
+    nb_q_[slot] = pair_q_[k];
+  }
+  for (std::size_t i = n; i > 0; --i) row_start_[i] = row_start_[i - 1];
+  row_start_[0] = 0;
+
+  if (debug_grid.value() && grid_) {
+    // Brute-force check of the grid's pairs, per particle (SOFA's debugGrid).
+    std::size_t missing = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* xi = &x[3 * i];
+      std::size_t count = 0;
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const double* xj = &x[3 * j];
+        const double dx = xj[0] - xi[0], dy = xj[1] - xi[1], dz = xj[2] - xi[2];
+        if (dx * dx + dy * dy + dz * dz < h2) ++count;
+      }
+      if (count != row_start_[i + 1] - row_start_[i]) ++missing;
+    }
+    if (missing)
+      msg_error(std::to_string(missing) + " particles have a different neighbour count on the grid than by brute force");
+  }
+}
+
+template <class Kd, class Kp, class Kv, class Kc>
+void SPHFluidForceField::compute_force(const std::vector<double>& x, const std::vector<double>& v,
+                                       std::vector<double>& f) {
+  const double h = radius.value();
+  const double h2 = h * h;
+  const double m = mass.value();
+  const double m2 = m * m;
+  const double d0 = density.value();
+  const double k = pressure.value();
+  const double mu = viscosity.value();
+  const int visc_type = mu == 0 ? 0 : viscosity_type.value();
+  const double sigma = surface_tension.value();
+  const int tension_type = sigma <= 0 ? 0 : surface_tension_type.value();
+  const std::size_t n = x.size() / 3;
+  const Kd kd(h);
+  const Kp kp(h);
+  const Kv kv(h);
+  const Kc kc(h);
+  const std::uint32_t* rs = row_start_.data();
+  const std::uint32_t* nj = nb_j_.data();
+  const double* nq = nb_q_.data();
+
+  density_.assign(n, 0.0);
+  pressure_.assign(n, 0.0);
+  // Density: lower-index contributions arrive first, then the particle's own term, then its row.
+  const double self = m * kd.W(0);
+  for (std::size_t i = 0; i < n; ++i) {
+    double rho = density_[i];
+    rho += self;
+    for (std::uint32_t e = rs[i]; e < rs[i + 1]; ++e) {
+      const double d = m * kd.W(nq[e]);
+      rho += d;
+      density_[nj[e]] += d;
+    }
+    density_[i] = rho;
+    pressure_[i] = k * (rho - d0);
+  }
+
+  if (tension_type == 1) {
+    normal_.assign(3 * n, 0.0);
+    curvature_.assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::uint32_t e = rs[i]; e < rs[i + 1]; ++e) {
+        const std::uint32_t j = nj[e];
+        const double q = nq[e];
+        const double s = m / density_[j] - m / density_[i];
+        const double g = kc.grad(q);
+        for (int c = 0; c < 3; ++c) {
+          const double nc = (x[3 * i + c] - x[3 * j + c]) * g * s;
+          normal_[3 * i + c] += nc;
+          normal_[3 * j + c] -= nc;
+        }
+        const double cv = kc.lap(q) * s;
+        curvature_[i] += cv;
+        curvature_[j] -= cv;
+      }
+  }
+
+  // p/ρ² once per particle: the same operations on the same operands as SOFA's per-pair
+  // expression, so the same bits, at a third of the divisions.
+  p_over_rho2_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) p_over_rho2_[i] = pressure_[i] / (density_[i] * density_[i]);
+  const double* a = p_over_rho2_.data();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double rho_i = density_[i];
+    const double* xi = &x[3 * i];
+    const double* vi = &v[3 * i];
+    double* fi = &f[3 * i];
+    for (std::uint32_t e = rs[i]; e < rs[i + 1]; ++e) {
+      const std::uint32_t j = nj[e];
+      const double q = nq[e];
+      const double rho_j = density_[j];
+      const double* xj = &x[3 * j];
+      const double* vj = &v[3 * j];
+      double* fj = &f[3 * j];
+      double pressure_fv = -m2 * (a[i] + a[j]);
+      if (visc_type == 1) {
+        const double s = m2 * mu / (rho_i * rho_j) * kv.lap(q);
+        for (int c = 0; c < 3; ++c) {
+          const double fv = (vj[c] - vi[c]) * s;
+          fi[c] += fv;
+          fj[c] -= fv;
+        }
+      } else if (visc_type == 2) {
+        double vx = (vi[0] - vj[0]) * (xi[0] - xj[0]);
+        vx += (vi[1] - vj[1]) * (xi[1] - xj[1]);
+        vx += (vi[2] - vj[2]) * (xi[2] - xj[2]);
+        // SOFA's literal constants are floats: 0.01f is not 0.01.
+        if (vx < 0)
+          pressure_fv += vx * mu * h * m /
+                         ((q * q + static_cast<double>(0.01f) * h2) * (rho_i + rho_j) * static_cast<double>(0.5f));
+      }
+      const double g = kp.grad(q);
+      for (int c = 0; c < 3; ++c) {
+        const double fp = (xi[c] - xj[c]) * g * pressure_fv;
+        fi[c] += fp;
+        fj[c] -= fp;
+      }
+    }
+    if (tension_type == 1) {
+      const double* ni = &normal_[3 * i];
+      const double nn = std::sqrt(ni[0] * ni[0] + ni[1] * ni[1] + ni[2] * ni[2]);
+      if (nn > 0.000001) {
+        const double s = -m * sigma * curvature_[i] / nn;
+        for (int c = 0; c < 3; ++c) fi[c] += ni[c] * s;
+      }
+    }
+  }
+}
+
+void SPHFluidForceField::add_force(const MechParams& p) {
+  MechanicalState& s = *mstate;
+  const std::vector<double>& x = s.read(p.x);
+  const std::vector<double>& v = s.read(p.v);
+  std::vector<double>& f = s.write(p.f);
+  find_neighbours(x);
+  if (kernel_type.value() == 1)
+    compute_force<sph::CubicKernel, sph::CubicKernel, sph::CubicKernel, sph::CubicKernel>(x, v, f);
+  else
+    compute_force<sph::DensityKernel, sph::PressureKernel, sph::ViscosityKernel, sph::DensityKernel>(x, v, f);
+}
+
+void register_sph_fluid_force_field(Registry& r) {
+  ComponentInfo info;
+  info.name = "SPHFluidForceField";
+  info.category = "SPH";
+  info.description = "smoothed particle hydrodynamics fluid forces (SofaSphFluid)";
+  info.templates = {"Vec3d"};
+  info.default_template = "Vec3d";
+  info.requirement = Requirement::state;
+  info.create = creator<SPHFluidForceField>();
+  r.add(std::move(info));
+}
+
+}  // namespace sinew
