@@ -97,6 +97,11 @@ bool BaseROI::elem_in(const Elem& e, bool strict_mode) const {
       if (!point_in_roi(point(v))) return false;
     return true;
   }
+  if (inside_vertices_suffice()) {
+    bool all = true;
+    for (unsigned v : e) all = all && point_in_roi(point(v));
+    if (all) return true;
+  }
   double c[3] = {0, 0, 0};
   for (unsigned v : e)
     for (int k = 0; k < dim_; ++k) c[k] += point(v)[k];

@@ -92,6 +92,9 @@ class BaseROI : public Engine {
   // Extra element tests (SphereROI's angle criteria).
   virtual bool edge_extra(const Edge&) const { return true; }
   virtual bool triangle_extra(const Triangle&) const { return true; }
+  // Non-strict mode: an element whose vertices are all in the ROI is in it,
+  // before the centroid test (SOFA's MeshROI, through its indices).
+  virtual bool inside_vertices_suffice() const { return false; }
 
   void do_update() override;
   // Coordinates of point i of the current positions (valid during do_update).

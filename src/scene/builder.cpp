@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <sstream>
@@ -157,8 +158,41 @@ class Builder {
     for (const auto& [k, v] : e.attributes) spec.attributes.set(k, v);
     spec.where = e.where;
     spec.base_dir = e.base_dir;
-    add_object(node, spec, paths_, *diag_, &out_.missing);
+    Component* c = add_object(node, spec, paths_, *diag_, &out_.missing);
+    if (c && c->class_name() == "AddDataRepository") add_data_repository(*c, spec);
   }
+
+  // SOFA's AddDataRepository adds its folder to the data paths as it is parsed,
+  // so the files named after it in the scene are also searched there. A
+  // relative folder is taken from the scene file's folder (SOFA loads a file
+  // from its own directory). The field is rewritten with the absolute path, as SOFA does.
+  void add_data_repository(Component& c, const ObjectSpec& spec) {
+    BaseField* f = c.find_field("path");
+    if (!f) return;
+    std::string dir = f->text();
+    if (dir.empty()) {
+      diag_->error(spec.where, c.describe() + ": 'path' is empty: no folder added to the data paths");
+      return;
+    }
+    if (dir.front() != '/') dir = spec.base_dir + "/" + dir;
+    dir = absolute_normal(dir);
+    std::error_code ec;
+    if (!std::filesystem::exists(dir, ec)) {
+      diag_->error(spec.where, c.describe() + ": " + dir + " does not exist: not added to the data paths");
+      return;
+    }
+    if (!std::filesystem::is_directory(dir, ec)) {
+      diag_->error(spec.where, c.describe() + ": " + dir + " is not a folder: not added to the data paths");
+      return;
+    }
+    f->read(dir);
+    paths_.add(dir);
+  }
+
+ public:
+  const ResourcePaths& paths() const { return paths_; }
+
+ private:
 
   // Data links (and engines whose outputs feed their own inputs) that form a
   // cycle: no value can be computed; the scene is refused.
@@ -176,7 +210,7 @@ class Builder {
     }
   }
 
-  const ResourcePaths& paths_;
+  ResourcePaths paths_;  // a copy: AddDataRepository extends it while the scene is built
   LoadedScene& out_;
 };
 
@@ -243,7 +277,7 @@ LoadedScene build_scene(const Element& root, const ResourcePaths& paths) {
   Builder b(paths, out);
   b.build(root);
   // Components that write next to the data (SOFA's DataRepository first path) read them at init.
-  if (out.root) out.root->data_dirs = paths.dirs();
+  if (out.root) out.root->data_dirs = b.paths().dirs();
   return out;
 }
 
