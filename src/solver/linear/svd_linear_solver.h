@@ -2,8 +2,11 @@
 // decomposition of its dense copy (spec/solvers.md §3; SOFA's
 // SVDLinearSolver). Templates FullMatrix (default), CompressedRowSparseMatrixd
 // and CompressedRowSparseMatrixMat3x3d: the template only changes how the
-// system is stored; the decomposition is always dense (Eigen's JacobiSVD,
-// thin U and V), O(n³) per assembly: for small or ill-conditioned systems.
+// system is stored; the decomposition is always dense, O(n³) per assembly:
+// for small or ill-conditioned systems. SOFA uses Eigen's JacobiSVD; Sinew
+// uses Eigen's divide-and-conquer BDCSVD (the same decomposition to
+// round-off): Jacobi sweeps take 40 s per step on FEMBAR's 960 unknowns,
+// BDCSVD well under a second.
 //
 // x = V·S⁺·Uᵀ·b where S⁺ inverts the singular values above
 // `minSingularValue` and zeroes the others (a least-squares solution that
@@ -35,7 +38,7 @@ class SVDLinearSolver final : public MatrixLinearSolver {
   std::string system_template() const override;
 
  private:
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd_;
+  Eigen::BDCSVD<Eigen::MatrixXd> svd_;
   Eigen::VectorXd utb_;
   bool decomposed_ = false;
 };
