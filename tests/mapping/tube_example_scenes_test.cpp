@@ -52,7 +52,7 @@ struct SceneRun {
   }
 };
 
-#define SKIP_WITHOUT_DATA(run)                                                   \
+#define SKIP_OR_CHECK_RUN(run)                                                   \
   if (!(run).session) GTEST_SKIP() << "SOFA data not found at " << kData;       \
   ASSERT_TRUE((run).session->ok()) << (run).problems().front();                 \
   ASSERT_EQ((run).session->steps_done(), 100)
@@ -72,7 +72,7 @@ std::pair<double, double> ring_radii(const MechanicalState& frames, const std::v
 
 TEST(TubeExampleScenes, FixedLagrangianConstraintRigid3HoldsACantilever) {
   SceneRun run("Component/Constraint/Lagrangian/FixedLagrangianConstaint_Rigid3.scn");
-  SKIP_WITHOUT_DATA(run);
+  SKIP_OR_CHECK_RUN(run);
   EXPECT_TRUE(run.problems().empty()) << run.problems().front();
   EXPECT_TRUE(test::all_finite(run.session->root()));
   const MechanicalState& beam = *test::get<MechanicalState>(run.node({"Needle"}), "mstate");
@@ -95,7 +95,7 @@ TEST(TubeExampleScenes, FixedLagrangianConstraintRigid3HoldsACantilever) {
 
 TEST(TubeExampleScenes, Edge2QuadTopologicalMappingSkinsAFallingBeam) {
   SceneRun run("Component/Topology/Mapping/Edge2QuadTopologicalMapping.scn");
-  SKIP_WITHOUT_DATA(run);
+  SKIP_OR_CHECK_RUN(run);
   EXPECT_TRUE(run.problems().empty()) << run.problems().front();
   EXPECT_TRUE(test::all_finite(run.session->root()));
   const MechanicalState& beam = *test::get<MechanicalState>(run.node({"Beam"}), "BeamDof");
@@ -116,7 +116,7 @@ TEST(TubeExampleScenes, Edge2QuadTopologicalMappingSkinsAFallingBeam) {
 
 TEST(TubeExampleScenes, BarycentricMappingTrussBeamCarriesTheBeamWithTheTruss) {
   SceneRun run("Component/Mapping/Linear/BarycentricMappingTrussBeam.scn");
-  SKIP_WITHOUT_DATA(run);
+  SKIP_OR_CHECK_RUN(run);
   EXPECT_TRUE(run.problems().empty()) << run.problems().front();
   EXPECT_TRUE(test::all_finite(run.session->root()));
   Node& beam_node = run.node({"Truss", "Beam"});
