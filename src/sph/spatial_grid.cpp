@@ -63,15 +63,17 @@ void SpatialGrid::update(const double* x, std::size_t n) {
   cell_start_.assign(ncell + 1, 0);
   for (std::size_t i = 0; i < n; ++i) ++cell_start_[point_cell_[i] + 1];
   for (std::size_t c = 0; c < ncell; ++c) cell_start_[c + 1] += cell_start_[c];
-  entry_index_.resize(n);
-  entry_pos_.resize(3 * n);
+  entry_index_.resize(n + kPad, 0);
+  entry_x_.resize(n + kPad, 0.0);
+  entry_y_.resize(n + kPad, 0.0);
+  entry_z_.resize(n + kPad, 0.0);
   // point_cell_ becomes the fill cursor's target slot per point.
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint32_t slot = cell_start_[point_cell_[i]]++;
     entry_index_[slot] = static_cast<std::uint32_t>(i);
-    entry_pos_[3 * slot] = x[3 * i];
-    entry_pos_[3 * slot + 1] = x[3 * i + 1];
-    entry_pos_[3 * slot + 2] = x[3 * i + 2];
+    entry_x_[slot] = x[3 * i];
+    entry_y_[slot] = x[3 * i + 1];
+    entry_z_[slot] = x[3 * i + 2];
   }
   // The cursors now hold each cell's end: shift back to starts.
   for (std::size_t c = ncell; c > 0; --c) cell_start_[c] = cell_start_[c - 1];

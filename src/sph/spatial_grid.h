@@ -89,6 +89,14 @@ struct PoolAllocator {
   bool operator==(const PoolAllocator<U>& o) const { return pool == o.pool; }
 };
 
+// Output of SpatialGrid::find_pairs. The vectors are scratch storage, longer
+// than `size` (the kernels write a few lanes past the last pair).
+struct PairBuffer {
+  std::vector<std::uint32_t> first, second;
+  std::vector<double> r2;
+  std::size_t size = 0;
+};
+
 class SpatialGrid {
  public:
   static constexpr int kLog2 = 3;
@@ -120,6 +128,13 @@ class SpatialGrid {
   // visited cell; either may be the larger index). Exact when dist <= cell_width.
   template <class F>
   void for_each_pair(double dist, F&& f) const;
+
+  // The pairs of for_each_pair, same pairs in the same order with the same r2
+  // bits, appended to flat arrays: out.first[k], out.second[k] are the point
+  // indices (i1, i2) for_each_pair would pass, out.r2[k] their squared
+  // distance. Uses AVX2 when the processor has it and `simd` is true.
+  // The arrays only grow (allocation-free once warm); out.size counts the pairs.
+  void find_pairs(double dist, PairBuffer& out, bool simd = true) const;
 
   // Number of blocks created by the last update (non-empty ones and their face neighbours).
   std::size_t block_count() const { return blocks_.size() - 1; }
@@ -159,19 +174,26 @@ class SpatialGrid {
   std::vector<Block> blocks_;               // [0] = the empty block
   std::vector<std::uint32_t> cell_start_;   // per global cell, +1 sentinel (block 0's cells are empty)
   std::vector<std::uint32_t> point_cell_;   // per point: its global cell
-  std::vector<std::uint32_t> entry_index_;  // points sorted by cell (stable)
-  std::vector<double> entry_pos_;           // their positions, 3 per entry
+  // Points sorted by cell (stable), and their coordinates (one array per axis).
+  // Each array has kPad entries more than points, so that a 4-wide load
+  // starting at any entry stays inside it (the extra lanes are masked).
+  static constexpr std::size_t kPad = 4;
+  std::vector<std::uint32_t> entry_index_;
+  std::vector<double> entry_x_, entry_y_, entry_z_;
 };
+
+// SOFA's stencil: the cell, then 13 forward neighbours, in this order.
+inline constexpr int kPairStencil[14][3] = {{0, 0, 0},  {1, 0, 0},  {0, 1, 0},  {1, 1, 0},   {0, 0, 1},
+                                            {1, 0, 1},  {0, 1, 1},  {1, 1, 1},  {-1, 1, 0},  {-1, 0, 1},
+                                            {-1, 1, 1}, {-1, -1, 1}, {0, -1, 1}, {1, -1, 1}};
 
 template <class F>
 void SpatialGrid::for_each_pair(double dist, F&& f) const {
   const double dist2 = dist * dist;
-  // SOFA's stencil: the cell, then 13 forward neighbours, in this order.
-  static constexpr int kStencil[14][3] = {{0, 0, 0},  {1, 0, 0},  {0, 1, 0},  {1, 1, 0},  {0, 0, 1},
-                                          {1, 0, 1},  {0, 1, 1},  {1, 1, 1},  {-1, 1, 0}, {-1, 0, 1},
-                                          {-1, 1, 1}, {-1, -1, 1}, {0, -1, 1}, {1, -1, 1}};
   const std::uint32_t* start = cell_start_.data();
-  const double* pos = entry_pos_.data();
+  const double* px = entry_x_.data();
+  const double* py = entry_y_.data();
+  const double* pz = entry_z_.data();
   const std::uint32_t* idx = entry_index_.data();
   for (const auto& kv : map_) {
     const std::uint32_t b = kv.second;
@@ -183,19 +205,18 @@ void SpatialGrid::for_each_pair(double dist, F&& f) const {
           const std::uint32_t b0 = start[c0], e0 = start[c0 + 1];
           if (b0 == e0) continue;
           std::uint32_t cells[13];
-          for (int s = 1; s < 14; ++s) cells[s - 1] = cell_of(b, x + kStencil[s][0], y + kStencil[s][1], z + kStencil[s][2]);
+          for (int s = 1; s < 14; ++s)
+            cells[s - 1] = cell_of(b, x + kPairStencil[s][0], y + kPairStencil[s][1], z + kPairStencil[s][2]);
           for (std::uint32_t p = b0; p < e0; ++p) {
-            const double* p1 = pos + 3 * p;
+            const double x1 = px[p], y1 = py[p], z1 = pz[p];
             for (std::uint32_t q = p + 1; q < e0; ++q) {
-              const double* p2 = pos + 3 * q;
-              const double dx = p2[0] - p1[0], dy = p2[1] - p1[1], dz = p2[2] - p1[2];
+              const double dx = px[q] - x1, dy = py[q] - y1, dz = pz[q] - z1;
               const double r2 = dx * dx + dy * dy + dz * dz;
               if (r2 < dist2) f(idx[p], idx[q], r2);
             }
             for (std::uint32_t c : cells) {
               for (std::uint32_t q = start[c], qe = start[c + 1]; q < qe; ++q) {
-                const double* p2 = pos + 3 * q;
-                const double dx = p2[0] - p1[0], dy = p2[1] - p1[1], dz = p2[2] - p1[2];
+                const double dx = px[q] - x1, dy = py[q] - y1, dz = pz[q] - z1;
                 const double r2 = dx * dx + dy * dy + dz * dz;
                 if (r2 < dist2) f(idx[p], idx[q], r2);
               }

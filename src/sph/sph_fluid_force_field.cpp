@@ -1,5 +1,6 @@
 #include "sph/sph_fluid_force_field.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -51,19 +52,13 @@ void SPHFluidForceField::find_neighbours(const std::vector<double>& x) {
   const std::size_t n = x.size() / 3;
   const double h = radius.value();
   const double h2 = h * h;
-  pair_i_.clear();
-  pair_j_.clear();
-  pair_q_.clear();
   // The grid is looked up again each step (cheap): it may have been removed from the graph.
   grid_ = node()->find_up<SpatialGridContainer>();
   if (grid_ && grid_->state() == ComponentState::valid) {
     grid_->update(x);
-    grid_->grid().for_each_pair(h, [&](std::uint32_t a, std::uint32_t b, double r2) {
-      pair_i_.push_back(a < b ? a : b);
-      pair_j_.push_back(a < b ? b : a);
-      pair_q_.push_back(std::sqrt(r2 / h2));
-    });
+    grid_->grid().find_pairs(h, found_);
   } else {
+    found_.size = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const double* xi = &x[3 * i];
       for (std::size_t j = i + 1; j < n; ++j) {
@@ -71,25 +66,36 @@ void SPHFluidForceField::find_neighbours(const std::vector<double>& x) {
         const double dx = xj[0] - xi[0], dy = xj[1] - xi[1], dz = xj[2] - xi[2];
         const double r2 = dx * dx + dy * dy + dz * dz;
         if (r2 < h2) {
-          pair_i_.push_back(static_cast<std::uint32_t>(i));
-          pair_j_.push_back(static_cast<std::uint32_t>(j));
-          pair_q_.push_back(std::sqrt(r2 / h2));
+          if (found_.size == found_.r2.size()) {
+            const std::size_t grown = std::max<std::size_t>(64, 2 * found_.size);
+            found_.first.resize(grown);
+            found_.second.resize(grown);
+            found_.r2.resize(grown);
+          }
+          found_.first[found_.size] = static_cast<std::uint32_t>(i);
+          found_.second[found_.size] = static_cast<std::uint32_t>(j);
+          found_.r2[found_.size] = r2;
+          ++found_.size;
         }
       }
     }
   }
-  // Rows by lower index, pairs of a row in the order found (SOFA's push_back per particle).
-  const std::size_t np = pair_i_.size();
+  // SOFA's addNeighbor puts each pair in the row of its lower index, in the
+  // order found; a counting sort by row keeps that order within each row.
+  const std::size_t np = found_.size;
+  const std::uint32_t* first = found_.first.data();
+  const std::uint32_t* second = found_.second.data();
   row_start_.assign(n + 1, 0);
-  for (std::size_t k = 0; k < np; ++k) ++row_start_[pair_i_[k] + 1];
+  for (std::size_t k = 0; k < np; ++k) ++row_start_[std::min(first[k], second[k]) + 1];
   for (std::size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
   nb_j_.resize(np);
   nb_q_.resize(np);
-  // Fill with a cursor per row (row_start_ shifted back afterwards).
+  // Fill with a cursor per row (row_start_ shifted back afterwards); q = √(r²/h²).
   for (std::size_t k = 0; k < np; ++k) {
-    const std::uint32_t slot = row_start_[pair_i_[k]]++;
-    nb_j_[slot] = pair_j_[k];
-    nb_q_[slot] = pair_q_[k];
+    const std::uint32_t lo = std::min(first[k], second[k]);
+    const std::uint32_t slot = row_start_[lo]++;
+    nb_j_[slot] = std::max(first[k], second[k]);
+    nb_q_[slot] = std::sqrt(found_.r2[k] / h2);
   }
   for (std::size_t i = n; i > 0; --i) row_start_[i] = row_start_[i - 1];
   row_start_[0] = 0;
@@ -134,6 +140,20 @@ void SPHFluidForceField::compute_force(const std::vector<double>& x, const std::
   const std::uint32_t* nj = nb_j_.data();
   const double* nq = nb_q_.data();
 
+  const std::size_t np = nb_j_.size();
+
+  // Per-pair kernel terms first, in a loop without branches or indirection
+  // (the compiler vectorizes it): m·W(q) for the density, ∇W's scalar for the
+  // pressure. The same expressions as inline, so the same bits.
+  pair_w_.resize(np);
+  pair_g_.resize(np);
+  for (std::size_t e = 0; e < np; ++e) {
+    pair_w_[e] = m * kd.W(nq[e]);
+    pair_g_[e] = kp.grad(nq[e]);
+  }
+  const double* w = pair_w_.data();
+  const double* grad = pair_g_.data();
+
   density_.assign(n, 0.0);
   pressure_.assign(n, 0.0);
   // Density: lower-index contributions arrive first, then the particle's own term, then its row.
@@ -142,9 +162,8 @@ void SPHFluidForceField::compute_force(const std::vector<double>& x, const std::
     double rho = density_[i];
     rho += self;
     for (std::uint32_t e = rs[i]; e < rs[i + 1]; ++e) {
-      const double d = m * kd.W(nq[e]);
-      rho += d;
-      density_[nj[e]] += d;
+      rho += w[e];
+      density_[nj[e]] += w[e];
     }
     density_[i] = rho;
     pressure_[i] = k * (rho - d0);
@@ -175,50 +194,67 @@ void SPHFluidForceField::compute_force(const std::vector<double>& x, const std::
   p_over_rho2_.resize(n);
   for (std::size_t i = 0; i < n; ++i) p_over_rho2_[i] = pressure_[i] / (density_[i] * density_[i]);
   const double* a = p_over_rho2_.data();
+  const double* rho = density_.data();
+  // SOFA's literal constants are floats: 0.01f is not 0.01, 0.5f happens to be 0.5.
+  const double soft = static_cast<double>(0.01f) * h2;
+  const double half = static_cast<double>(0.5f);
   for (std::size_t i = 0; i < n; ++i) {
-    const double rho_i = density_[i];
-    const double* xi = &x[3 * i];
-    const double* vi = &v[3 * i];
-    double* fi = &f[3 * i];
+    const double rho_i = rho[i], a_i = a[i];
+    const double xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
+    const double vi0 = v[3 * i], vi1 = v[3 * i + 1], vi2 = v[3 * i + 2];
+    // Row i's pairs are the only updates of f_i while the row runs (the others
+    // touch j > i), so f_i stays in registers: the same additions in the same order.
+    double fi0 = f[3 * i], fi1 = f[3 * i + 1], fi2 = f[3 * i + 2];
     for (std::uint32_t e = rs[i]; e < rs[i + 1]; ++e) {
       const std::uint32_t j = nj[e];
       const double q = nq[e];
-      const double rho_j = density_[j];
+      const double rho_j = rho[j];
       const double* xj = &x[3 * j];
       const double* vj = &v[3 * j];
       double* fj = &f[3 * j];
-      double pressure_fv = -m2 * (a[i] + a[j]);
+      double pressure_fv = -m2 * (a_i + a[j]);
       if (visc_type == 1) {
         const double s = m2 * mu / (rho_i * rho_j) * kv.lap(q);
-        for (int c = 0; c < 3; ++c) {
-          const double fv = (vj[c] - vi[c]) * s;
-          fi[c] += fv;
-          fj[c] -= fv;
-        }
+        const double fv0 = (vj[0] - vi0) * s, fv1 = (vj[1] - vi1) * s, fv2 = (vj[2] - vi2) * s;
+        fi0 += fv0;
+        fi1 += fv1;
+        fi2 += fv2;
+        fj[0] -= fv0;
+        fj[1] -= fv1;
+        fj[2] -= fv2;
       } else if (visc_type == 2) {
-        double vx = (vi[0] - vj[0]) * (xi[0] - xj[0]);
-        vx += (vi[1] - vj[1]) * (xi[1] - xj[1]);
-        vx += (vi[2] - vj[2]) * (xi[2] - xj[2]);
-        // SOFA's literal constants are floats: 0.01f is not 0.01.
-        if (vx < 0)
-          pressure_fv += vx * mu * h * m /
-                         ((q * q + static_cast<double>(0.01f) * h2) * (rho_i + rho_j) * static_cast<double>(0.5f));
+        double vx = (vi0 - vj[0]) * (xi0 - xj[0]);
+        vx += (vi1 - vj[1]) * (xi1 - xj[1]);
+        vx += (vi2 - vj[2]) * (xi2 - xj[2]);
+        // Computed for every pair and selected: a data-dependent branch here is
+        // mispredicted half of the time.
+        const double art = vx * mu * h * m / ((q * q + soft) * (rho_i + rho_j) * half);
+        pressure_fv = vx < 0 ? pressure_fv + art : pressure_fv;
       }
-      const double g = kp.grad(q);
-      for (int c = 0; c < 3; ++c) {
-        const double fp = (xi[c] - xj[c]) * g * pressure_fv;
-        fi[c] += fp;
-        fj[c] -= fp;
-      }
+      const double g = grad[e];
+      const double fp0 = (xi0 - xj[0]) * g * pressure_fv;
+      const double fp1 = (xi1 - xj[1]) * g * pressure_fv;
+      const double fp2 = (xi2 - xj[2]) * g * pressure_fv;
+      fi0 += fp0;
+      fi1 += fp1;
+      fi2 += fp2;
+      fj[0] -= fp0;
+      fj[1] -= fp1;
+      fj[2] -= fp2;
     }
     if (tension_type == 1) {
       const double* ni = &normal_[3 * i];
       const double nn = std::sqrt(ni[0] * ni[0] + ni[1] * ni[1] + ni[2] * ni[2]);
       if (nn > 0.000001) {
         const double s = -m * sigma * curvature_[i] / nn;
-        for (int c = 0; c < 3; ++c) fi[c] += ni[c] * s;
+        fi0 += ni[0] * s;
+        fi1 += ni[1] * s;
+        fi2 += ni[2] * s;
       }
     }
+    f[3 * i] = fi0;
+    f[3 * i + 1] = fi1;
+    f[3 * i + 2] = fi2;
   }
 }
 

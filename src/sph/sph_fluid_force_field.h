@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/roles.h"
+#include "sph/spatial_grid.h"
 
 namespace sinew {
 
@@ -60,12 +61,13 @@ class SPHFluidForceField final : public ForceField {
   void compute_force(const std::vector<double>& x, const std::vector<double>& v, std::vector<double>& f);
 
   SpatialGridContainer* grid_ = nullptr;  // found each step in the node (see find_neighbours)
-  // Pairs as found (lower index, higher index, q), then sorted by row (stable) into CSR.
-  std::vector<std::uint32_t> pair_i_, pair_j_;
-  std::vector<double> pair_q_;
+  // Pairs as the grid finds them, then sorted by row (stable) into CSR: row i
+  // lists (j > i, q = r/h).
+  sph::PairBuffer found_;
   std::vector<std::uint32_t> row_start_, nb_j_;
   std::vector<double> nb_q_;
   std::vector<double> density_, pressure_, normal_, curvature_, p_over_rho2_;
+  std::vector<double> pair_w_, pair_g_;  // per pair: m·W(q), the pressure kernel's gradient scalar
   bool warned_kernel_ = false;
 };
 

@@ -61,32 +61,28 @@ struct ViscosityKernel {
 };
 
 // Cubic spline (Monaghan), used for every role when kernelType = 1. grad precondition: q > 0.
+// Both pieces are computed and one is selected (no branch): callers evaluate it
+// over arrays of pairs, where the compiler then vectorizes it.
 struct CubicKernel {
   double cw, cgw, clw;
   explicit CubicKernel(double h)
       : cw((48 / std::numbers::pi) / (h * h * h)), cgw(cw / (h * h)), clw(cw / (h * h)) {}
   double W(double q) const {
-    if (q < 0.5) return cw * ((1.0 / 6.0) - q * q + q * q * q);
-    if (q < 1) {
-      const double s = 1 - q;
-      return cw * ((1.0 / 3.0) * (s * s * s));
-    }
-    return 0;
+    const double s = 1 - q;
+    const double inner = cw * ((1.0 / 6.0) - q * q + q * q * q);
+    const double outer = cw * ((1.0 / 3.0) * (s * s * s));
+    return q < 0.5 ? inner : (q < 1 ? outer : 0.0);
   }
   double grad(double q) const {
-    double g;
-    if (q < 0.5) g = 3 * q - 2;
-    else if (q < 1) {
-      const double s = 1 - q;
-      g = -s * s / q;
-    } else
-      return 0;
-    return cgw * g;
+    const double s = 1 - q;
+    const double inner = cgw * (3 * q - 2);
+    const double outer = cgw * (-s * s / q);
+    return q < 0.5 ? inner : (q < 1 ? outer : 0.0);
   }
   double lap(double q) const {
-    if (q < 0.5) return clw * (12 * q - 6);
-    if (q < 1) return clw * (6 - 4 * q - 2 / q);
-    return 0;
+    const double inner = clw * (12 * q - 6);
+    const double outer = clw * (6 - 4 * q - 2 / q);
+    return q < 0.5 ? inner : (q < 1 ? outer : 0.0);
   }
 };
 

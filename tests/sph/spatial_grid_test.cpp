@@ -127,6 +127,32 @@ TEST(SpatialGrid, SofaFloorRoundsToSixteenBitFixedPoint) {
   EXPECT_EQ(sofa_rfloor(3.0 - 1e-4), 2);
 }
 
+// find_pairs (scalar and AVX2 kernels) gives for_each_pair's pairs in the same
+// order with the same r² bits: the order decides the digits of SPH's sums.
+TEST(SpatialGrid, FindPairsEqualsForEachPairInOrder) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    for (double h : {0.1, 0.3, 0.745}) {
+      // Dense and sparse sets, spanning several blocks and negative coordinates.
+      auto x = uniform_points(seed == 3 ? 4000 : 700, -3.0, 4.0 * h * seed, seed);
+      SpatialGrid g(h);
+      g.update(x.data(), x.size() / 3);
+      std::vector<Pair> expected;
+      g.for_each_pair(h, [&](unsigned a, unsigned b, double r2) { expected.emplace_back(a, b, r2); });
+      ASSERT_GT(expected.size(), 0u);
+      for (bool simd : {false, true}) {
+        PairBuffer out;
+        g.find_pairs(h, out, simd);
+        ASSERT_EQ(out.size, expected.size()) << "simd " << simd;
+        for (std::size_t k = 0; k < out.size; ++k) {
+          ASSERT_EQ(out.first[k], std::get<0>(expected[k])) << "pair " << k << " simd " << simd;
+          ASSERT_EQ(out.second[k], std::get<1>(expected[k])) << "pair " << k << " simd " << simd;
+          ASSERT_EQ(out.r2[k], std::get<2>(expected[k])) << "pair " << k << " simd " << simd;
+        }
+      }
+    }
+  }
+}
+
 TEST(SpatialGrid, MovingPointsAllocateNothingOnceWarm) {
   if (!SINEW_COUNT_ALLOCATIONS) GTEST_SKIP() << "allocation counter not installed (sanitizer build)";
   auto x = uniform_points(3000, -2.0, 2.0, 3);
@@ -134,9 +160,11 @@ TEST(SpatialGrid, MovingPointsAllocateNothingOnceWarm) {
   std::size_t count = 0;
   auto visit = [&](unsigned, unsigned, double) { ++count; };
   // Warm-up: a few updates over the same region so that every buffer reached its size.
+  PairBuffer pairs;
   for (int s = 0; s < 3; ++s) {
     g.update(x.data(), x.size() / 3);
     g.for_each_pair(0.3, visit);
+    g.find_pairs(0.3, pairs);
   }
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> jitter(-0.01, 0.01);
@@ -145,6 +173,7 @@ TEST(SpatialGrid, MovingPointsAllocateNothingOnceWarm) {
     for (double& c : x) c = std::clamp(c + jitter(rng), -2.0, 2.0);
     g.update(x.data(), x.size() / 3);
     g.for_each_pair(0.3, visit);
+    g.find_pairs(0.3, pairs);
   }
   EXPECT_EQ(test::g_allocations.load() - before, 0);
   EXPECT_GT(count, 0u);
