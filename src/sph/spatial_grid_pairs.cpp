@@ -17,9 +17,14 @@
 namespace sinew::sph {
 namespace {
 
-// One visited cell: the range of its own points, then the 13 forward cells.
+// One visited cell: ranges of candidate entries in visiting order, the first
+// starting at the cell's own points (each point p of the cell tests from p + 1).
+// Stencil cells next to each other in a block row have adjacent entry ranges;
+// those are merged, so 14 ranges usually become 8.
 struct PairCellJob {
   std::uint32_t begin[14], end[14];
+  int ranges = 0;
+  std::uint32_t own_end = 0;  // end of the visited cell's own points
 };
 
 struct PairArrays {
@@ -29,19 +34,19 @@ struct PairArrays {
 
 // Upper bound of the pairs one job can add (every candidate kept).
 std::size_t pair_candidates(const PairCellJob& job) {
-  const std::size_t n0 = job.end[0] - job.begin[0];
-  std::size_t others = 0;
-  for (int s = 1; s < 14; ++s) others += job.end[s] - job.begin[s];
-  return n0 * (n0 - 1) / 2 + n0 * others;
+  const std::size_t n0 = job.own_end - job.begin[0];
+  std::size_t all = 0;
+  for (int s = 0; s < job.ranges; ++s) all += job.end[s] - job.begin[s];
+  return n0 * (n0 - 1) / 2 + n0 * (all - n0);
 }
 
 std::size_t pairs_scalar(const PairCellJob& job, const PairArrays& a, double dist2, PairBuffer& out, std::size_t n) {
   std::uint32_t* first = out.first.data();
   std::uint32_t* second = out.second.data();
   double* r2out = out.r2.data();
-  for (std::uint32_t p = job.begin[0]; p < job.end[0]; ++p) {
+  for (std::uint32_t p = job.begin[0]; p < job.own_end; ++p) {
     const double x1 = a.x[p], y1 = a.y[p], z1 = a.z[p];
-    for (int s = 0; s < 14; ++s) {
+    for (int s = 0; s < job.ranges; ++s) {
       for (std::uint32_t q = s == 0 ? p + 1 : job.begin[s]; q < job.end[s]; ++q) {
         const double dx = a.x[q] - x1, dy = a.y[q] - y1, dz = a.z[q] - z1;
         const double r2 = dx * dx + dy * dy + dz * dz;
@@ -88,10 +93,10 @@ __attribute__((target("avx2,popcnt"))) std::size_t pairs_avx2(const PairCellJob&
   double* r2out = out.r2.data();
   const __m256d d2 = _mm256_set1_pd(dist2);
   const __m256i lane = _mm256_set_epi64x(3, 2, 1, 0);
-  for (std::uint32_t p = job.begin[0]; p < job.end[0]; ++p) {
+  for (std::uint32_t p = job.begin[0]; p < job.own_end; ++p) {
     const __m256d x1 = _mm256_set1_pd(a.x[p]), y1 = _mm256_set1_pd(a.y[p]), z1 = _mm256_set1_pd(a.z[p]);
     const __m128i i1 = _mm_set1_epi32(static_cast<int>(a.idx[p]));
-    for (int s = 0; s < 14; ++s) {
+    for (int s = 0; s < job.ranges; ++s) {
       const std::uint32_t qe = job.end[s];
       for (std::uint32_t q = s == 0 ? p + 1 : job.begin[s]; q < qe; q += 4) {
         const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(a.x + q), x1);
@@ -138,10 +143,17 @@ void SpatialGrid::find_pairs(double dist, PairBuffer& out, bool simd) const {
           const std::uint32_t c0 = b * kCells + static_cast<std::uint32_t>(x + kDim * y + kDim * kDim * z);
           if (start[c0] == start[c0 + 1]) continue;
           PairCellJob job;
+          job.own_end = start[c0 + 1];
           for (int s = 0; s < 14; ++s) {
             const std::uint32_t c = cell_of(b, x + kPairStencil[s][0], y + kPairStencil[s][1], z + kPairStencil[s][2]);
-            job.begin[s] = start[c];
-            job.end[s] = start[c + 1];
+            // [a, b) then [b, c) is [a, c): same candidates, same order.
+            if (job.ranges > 0 && job.end[job.ranges - 1] == start[c]) {
+              job.end[job.ranges - 1] = start[c + 1];
+            } else {
+              job.begin[job.ranges] = start[c];
+              job.end[job.ranges] = start[c + 1];
+              ++job.ranges;
+            }
           }
           // Room for every candidate plus the lanes a 4-wide store writes past the last pair.
           const std::size_t need = n + pair_candidates(job) + 4;

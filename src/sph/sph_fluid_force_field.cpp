@@ -8,6 +8,7 @@
 #include "core/parse.h"
 #include "core/registry.h"
 #include "sph/spatial_grid_container.h"
+#include "sph/sph_pair_forces.h"
 #include "sph/sph_kernels.h"
 
 namespace sinew {
@@ -56,7 +57,7 @@ void SPHFluidForceField::find_neighbours(const std::vector<double>& x) {
   grid_ = node()->find_up<SpatialGridContainer>();
   if (grid_ && grid_->state() == ComponentState::valid) {
     grid_->update(x);
-    grid_->grid().find_pairs(h, found_);
+    grid_->grid().find_pairs(h, found_, sph::sph_simd_enabled());
   } else {
     found_.size = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -198,6 +199,27 @@ void SPHFluidForceField::compute_force(const std::vector<double>& x, const std::
   // SOFA's literal constants are floats: 0.01f is not 0.01, 0.5f happens to be 0.5.
   const double soft = static_cast<double>(0.01f) * h2;
   const double half = static_cast<double>(0.5f);
+  if (visc_type != 1 && tension_type != 1 && sph::pair_forces_simd_available()) {
+    sph::PairForceInput in;
+    in.n = n;
+    in.row_start = rs;
+    in.neighbour = nj;
+    in.q = nq;
+    in.grad = grad;
+    in.x = x.data();
+    in.v = v.data();
+    in.rho = rho;
+    in.p_over_rho2 = a;
+    in.m = m;
+    in.m2 = m2;
+    in.mu = mu;
+    in.h = h;
+    in.soft = soft;
+    in.half = half;
+    in.artificial_viscosity = visc_type == 2;
+    sph::add_pair_forces_avx2(in, f.data(), records_);
+    return;
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const double rho_i = rho[i], a_i = a[i];
     const double xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];

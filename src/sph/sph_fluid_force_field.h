@@ -68,6 +68,7 @@ class SPHFluidForceField final : public ForceField {
   std::vector<double> nb_q_;
   std::vector<double> density_, pressure_, normal_, curvature_, p_over_rho2_;
   std::vector<double> pair_w_, pair_g_;  // per pair: m·W(q), the pressure kernel's gradient scalar
+  std::vector<double> records_;          // scratch of the SIMD force path (sph_pair_forces.h)
   bool warned_kernel_ = false;
 };
 

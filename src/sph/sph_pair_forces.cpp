@@ -1,0 +1,128 @@
+#include "sph/sph_pair_forces.h"
+
+#include <immintrin.h>
+
+#include <atomic>
+
+namespace sinew::sph {
+namespace {
+
+std::atomic<bool> g_sph_simd{true};
+
+bool cpu_runs_avx2() {
+  static const bool yes = __builtin_cpu_supports("avx2");
+  return yes;
+}
+
+// Transposes the 4×4 block of doubles r0..r3 (one particle record half each)
+// into c0..c3 (one field for the four particles each).
+__attribute__((target("avx2"))) inline void transpose4(__m256d r0, __m256d r1, __m256d r2, __m256d r3, __m256d& c0,
+                                                        __m256d& c1, __m256d& c2, __m256d& c3) {
+  const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
+  const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
+  c0 = _mm256_permute2f128_pd(t0, t2, 0x20);
+  c1 = _mm256_permute2f128_pd(t1, t3, 0x20);
+  c2 = _mm256_permute2f128_pd(t0, t2, 0x31);
+  c3 = _mm256_permute2f128_pd(t1, t3, 0x31);
+}
+
+}  // namespace
+
+bool pair_forces_simd_available() { return g_sph_simd.load(std::memory_order_relaxed) && cpu_runs_avx2(); }
+void set_sph_simd(bool enabled) { g_sph_simd.store(enabled, std::memory_order_relaxed); }
+bool sph_simd_enabled() { return g_sph_simd.load(std::memory_order_relaxed); }
+
+__attribute__((target("avx2"))) void add_pair_forces_avx2(const PairForceInput& in, double* f,
+                                                           std::vector<double>& records) {
+  const std::size_t n = in.n;
+  // One 64-byte record per particle, (x, ρ) then (v, p/ρ²): the four records of
+  // a chunk of pairs load as eight vectors and transpose into eight fields.
+  records.resize(8 * n + 4);
+  double* rec = records.data();
+  if (reinterpret_cast<std::uintptr_t>(rec) % 32 != 0) rec += (32 - reinterpret_cast<std::uintptr_t>(rec) % 32) / 8;
+  for (std::size_t i = 0; i < n; ++i) {
+    double* r = rec + 8 * i;
+    r[0] = in.x[3 * i];
+    r[1] = in.x[3 * i + 1];
+    r[2] = in.x[3 * i + 2];
+    r[3] = in.rho[i];
+    r[4] = in.v[3 * i];
+    r[5] = in.v[3 * i + 1];
+    r[6] = in.v[3 * i + 2];
+    r[7] = in.p_over_rho2[i];
+  }
+  const __m256d minus_m2 = _mm256_set1_pd(-in.m2);
+  const __m256d mu = _mm256_set1_pd(in.mu), h = _mm256_set1_pd(in.h), m = _mm256_set1_pd(in.m);
+  const __m256d soft = _mm256_set1_pd(in.soft), half = _mm256_set1_pd(in.half);
+  const __m256d zero = _mm256_setzero_pd();
+  alignas(32) double fp[3][4];
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t e_end = in.row_start[i + 1];
+    std::uint32_t e = in.row_start[i];
+    if (e == e_end) continue;
+    const double* ri = rec + 8 * i;
+    const __m256d xi0 = _mm256_set1_pd(ri[0]), xi1 = _mm256_set1_pd(ri[1]), xi2 = _mm256_set1_pd(ri[2]);
+    const __m256d rho_i = _mm256_set1_pd(ri[3]);
+    const __m256d vi0 = _mm256_set1_pd(ri[4]), vi1 = _mm256_set1_pd(ri[5]), vi2 = _mm256_set1_pd(ri[6]);
+    const __m256d a_i = _mm256_set1_pd(ri[7]);
+    // Row i's pairs are the only updates of f_i while the row runs (the others
+    // touch j > i): f_i stays in registers, lanes added in pair order.
+    double fi0 = f[3 * i], fi1 = f[3 * i + 1], fi2 = f[3 * i + 2];
+    for (; e < e_end; e += 4) {
+      const std::uint32_t count = e_end - e < 4 ? e_end - e : 4;
+      // Lanes past the row's end repeat its last pair; they are computed and dropped.
+      std::uint32_t j[4];
+      for (std::uint32_t k = 0; k < 4; ++k) j[k] = in.neighbour[e + (k < count ? k : count - 1)];
+      __m256d xj0, xj1, xj2, rho_j, vj0, vj1, vj2, a_j;
+      transpose4(_mm256_load_pd(rec + 8 * j[0]), _mm256_load_pd(rec + 8 * j[1]), _mm256_load_pd(rec + 8 * j[2]),
+                 _mm256_load_pd(rec + 8 * j[3]), xj0, xj1, xj2, rho_j);
+      transpose4(_mm256_load_pd(rec + 8 * j[0] + 4), _mm256_load_pd(rec + 8 * j[1] + 4),
+                 _mm256_load_pd(rec + 8 * j[2] + 4), _mm256_load_pd(rec + 8 * j[3] + 4), vj0, vj1, vj2, a_j);
+      __m256d q, g;
+      if (count == 4) {
+        q = _mm256_loadu_pd(in.q + e);
+        g = _mm256_loadu_pd(in.grad + e);
+      } else {
+        alignas(32) double qs[4], gs[4];
+        for (std::uint32_t k = 0; k < 4; ++k) {
+          qs[k] = in.q[e + (k < count ? k : count - 1)];
+          gs[k] = in.grad[e + (k < count ? k : count - 1)];
+        }
+        q = _mm256_load_pd(qs);
+        g = _mm256_load_pd(gs);
+      }
+      // -m²·(p_i/ρ_i² + p_j/ρ_j²)
+      __m256d pressure_fv = _mm256_mul_pd(minus_m2, _mm256_add_pd(a_i, a_j));
+      const __m256d dx0 = _mm256_sub_pd(xi0, xj0), dx1 = _mm256_sub_pd(xi1, xj1), dx2 = _mm256_sub_pd(xi2, xj2);
+      if (in.artificial_viscosity) {
+        __m256d vx = _mm256_mul_pd(_mm256_sub_pd(vi0, vj0), dx0);
+        vx = _mm256_add_pd(vx, _mm256_mul_pd(_mm256_sub_pd(vi1, vj1), dx1));
+        vx = _mm256_add_pd(vx, _mm256_mul_pd(_mm256_sub_pd(vi2, vj2), dx2));
+        // vx·μ·h·m / ((q² + 0.01f·h²)·(ρ_i + ρ_j)·0.5f), kept where v·x < 0.
+        const __m256d num = _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(vx, mu), h), m);
+        const __m256d den =
+            _mm256_mul_pd(_mm256_mul_pd(_mm256_add_pd(_mm256_mul_pd(q, q), soft), _mm256_add_pd(rho_i, rho_j)), half);
+        const __m256d with_art = _mm256_add_pd(pressure_fv, _mm256_div_pd(num, den));
+        pressure_fv = _mm256_blendv_pd(pressure_fv, with_art, _mm256_cmp_pd(vx, zero, _CMP_LT_OQ));
+      }
+      // (x_i − x_j)·g·pressure_fv
+      _mm256_store_pd(fp[0], _mm256_mul_pd(_mm256_mul_pd(dx0, g), pressure_fv));
+      _mm256_store_pd(fp[1], _mm256_mul_pd(_mm256_mul_pd(dx1, g), pressure_fv));
+      _mm256_store_pd(fp[2], _mm256_mul_pd(_mm256_mul_pd(dx2, g), pressure_fv));
+      for (std::uint32_t k = 0; k < count; ++k) {
+        fi0 += fp[0][k];
+        fi1 += fp[1][k];
+        fi2 += fp[2][k];
+        double* fj = f + 3 * j[k];
+        fj[0] -= fp[0][k];
+        fj[1] -= fp[1][k];
+        fj[2] -= fp[2][k];
+      }
+    }
+    f[3 * i] = fi0;
+    f[3 * i + 1] = fi1;
+    f[3 * i + 2] = fi2;
+  }
+}
+
+}  // namespace sinew::sph

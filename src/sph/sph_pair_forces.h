@@ -1,0 +1,44 @@
+// The pressure and artificial-viscosity forces of SPHFluidForceField over its
+// pair rows, four pairs at a time with AVX2 (spec/interaction.md §8).
+//
+// SPHFluidForceField keeps the scalar loop, which covers every option; this
+// is the fast path for the case SOFA's fluid scenes use (viscosityType 0 or 2,
+// no colour-field surface tension). Each lane computes exactly the scalar
+// expressions (same operations, same order, no FMA) and the lanes are added
+// to the forces one after the other in pair order, so the result is the same
+// bit for bit (tests/sph/sph_fluid_test.cpp compares both paths).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace sinew::sph {
+
+struct PairForceInput {
+  std::size_t n = 0;                          // particles
+  const std::uint32_t* row_start = nullptr;   // n + 1 offsets: row i holds its pairs (j > i)
+  const std::uint32_t* neighbour = nullptr;   // j of each pair
+  const double* q = nullptr;                  // r/h of each pair
+  const double* grad = nullptr;               // the pressure kernel's gradient scalar of each pair
+  const double* x = nullptr;                  // positions, 3 per particle (length)
+  const double* v = nullptr;                  // velocities, 3 per particle
+  const double* rho = nullptr;                // densities
+  const double* p_over_rho2 = nullptr;        // p/ρ² per particle
+  double m = 0, m2 = 0;                       // particle mass and its square
+  double mu = 0, h = 0;                       // viscosity, kernel radius
+  double soft = 0, half = 0;                  // SOFA's float constants: 0.01f·h², 0.5f
+  bool artificial_viscosity = false;          // viscosityType 2 (else no viscosity term)
+};
+
+// True when the processor runs the AVX2 path and it is not switched off.
+bool pair_forces_simd_available();
+// Tests and benchmarks switch the SIMD paths of the SPH module off and on.
+void set_sph_simd(bool enabled);
+bool sph_simd_enabled();
+
+// Adds the forces of every pair to f (3 per particle). Precondition:
+// pair_forces_simd_available(). `records` is scratch (8 doubles per particle).
+void add_pair_forces_avx2(const PairForceInput& in, double* f, std::vector<double>& records);
+
+}  // namespace sinew::sph
