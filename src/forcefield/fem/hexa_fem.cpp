@@ -13,6 +13,7 @@
 
 #include "forcefield/fem/sofa_mat3.h"
 #include "math/decompose.h"
+#include "math/target_clones.h"
 
 namespace sinew::fem {
 
@@ -70,7 +71,7 @@ inline Vec3 edge_z(const std::array<Vec3, 8>& n) { return edge_chain(n, 4, 0, 5,
 // The 24 accumulators stay in registers (6 vectors of 4 rows; plain arrays
 // through pointers made GCC load/store F for every column).
 typedef double v4u __attribute__((vector_size(32), aligned(8)));
-__attribute__((target_clones("avx2", "default"))) void mul24_clones(const double* k, const double* D, double* F) {
+SINEW_AVX2_CLONES void mul24_clones(const double* k, const double* D, double* F) {
   const v4u d0 = {D[0], D[0], D[0], D[0]};
   v4u a0 = *reinterpret_cast<const v4u*>(k + 0) * d0;
   v4u a1 = *reinterpret_cast<const v4u*>(k + 4) * d0;
@@ -101,7 +102,7 @@ __attribute__((target_clones("avx2", "default"))) void mul24_clones(const double
 // k·X0 then += col·X_c for c = 3k + i in column order, as mul24), t = Rᵀ·F per
 // node, times kfactor. Every value gets the scalar sequence of operations of
 // element_dforce; only independent nodes/rows share the vector instructions.
-__attribute__((target_clones("avx2", "default"))) void hexa_dforce_soa(const double* kp, const Mat3& R, bool rotate,
+SINEW_AVX2_CLONES void hexa_dforce_soa(const double* kp, const Mat3& R, bool rotate,
                                                                       const double (*v)[8], double kfactor,
                                                                       double (*o)[8]) {
 #define L(p) (*reinterpret_cast<const v4u*>(p))

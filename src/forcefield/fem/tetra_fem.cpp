@@ -15,6 +15,7 @@
 #include "core/topology_change.h"
 #include "forcefield/fem/sofa_mat3.h"
 #include "math/decompose.h"
+#include "math/target_clones.h"
 
 namespace sinew::fem {
 
@@ -621,7 +622,7 @@ inline bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(do
 
 // One block: X = Rᵀ-rotated dx (kRot), strain, stress, ·fact, nodal, rotate back.
 template <bool kRot>
-__attribute__((target_clones("avx2", "default"))) void tetra_dforce_block(const TetraFEM::HotBlock& B,
+SINEW_AVX2_CLONES void tetra_dforce_block(const TetraFEM::HotBlock& B,
                                                                           const double (*in)[4], double fact,
                                                                           double (*out)[4]) {
   // Everything is loaded straight from the block (local arrays of vectors
@@ -689,7 +690,7 @@ namespace {
 // every lane doing force_range's scalar sequence). in[c][l]: node k component i
 // at c = 3k + i; q: q[1][0], q[2][0], q[2][1], q[3][0..2]. Writes rot (r[3i+j]
 // = R(j, i), as rot[e] = Rᵀ) and the 12 force components.
-__attribute__((target_clones("avx2", "default"))) void tetra_force_block_large(const TetraFEM::HotBlock& B,
+SINEW_AVX2_CLONES void tetra_force_block_large(const TetraFEM::HotBlock& B,
                                                                               const double (*in)[4],
                                                                               const double (*q)[4], double (*r)[4],
                                                                               double (*out)[4]) {
