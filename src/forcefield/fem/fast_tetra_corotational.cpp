@@ -35,8 +35,6 @@ inline Vec3 tmulv(const Mat3& A, const Vec3& v) {
               A(0, 2) * v[0] + A(1, 2) * v[1] + A(2, 2) * v[2]);
 }
 
-inline double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
 // SOFA's Vec::normalized(): divided by its norm unless the norm is ≤ DBL_EPSILON.
 inline Vec3 normalized(const Vec3& v) {
   const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);

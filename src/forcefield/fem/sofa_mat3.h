@@ -1,5 +1,5 @@
-// Small 3D helpers shared by the corotational kernels (TetraFEM, HexaFEM):
-// cross product, M·v, 3×3 determinant and inverse, written term by term as
+// Small 3D helpers shared by the FEM kernels (TetraFEM, HexaFEM, the
+// tensor-mass force fields): dot and cross products, M·v, 3×3 determinant and inverse, written term by term as
 // SOFA writes them: results are compared with SOFA's to
 // round-off, so the order of the operations matters and must stay as it is.
 // (math/finite_element.h has the same formulas for its own array-based Mat3d.)
@@ -11,6 +11,17 @@
 #include "math/types.h"
 
 namespace sinew::fem {
+
+// Point i of a flat array of coordinates (3 per point).
+inline Vec3 at3(const double* x, unsigned i) { return Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]); }
+
+// a·b summed in index order (Eigen's dot may pair the terms differently).
+inline double dot3(const Vec3& a, const Vec3& b) {
+  double r = a[0] * b[0];
+  r += a[1] * b[1];
+  r += a[2] * b[2];
+  return r;
+}
 
 inline Vec3 cross3(const Vec3& a, const Vec3& b) {
   return Vec3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
