@@ -90,20 +90,21 @@ bool axis_aligned_box(const std::array<Vec3, 8>& n, bool& cube) {
 }
 }  // namespace
 
-void HexahedralFEMForceField::init() {
-  ForceField::init();
-  if (state() != ComponentState::valid) return;
-  if (!topology) topology.set(node()->get_mesh_topology_link());
+template <class Role>
+void HexahedralFEMBase<Role>::init() {
+  Role::init();
+  if (this->state() != ComponentState::valid) return;
+  if (!topology) topology.set(this->node()->get_mesh_topology_link());
   if (!topology) {
-    msg_error("no topology found (a hexahedral mesh is required)");
-    set_state(ComponentState::invalid);
+    this->msg_error("no topology found (a hexahedral mesh is required)");
+    this->set_state(ComponentState::invalid);
     return;
   }
   const auto& hexas = topology->hexahedra();
   hexa_version_ = topology->elements_version(MeshTopologyBase::Elements::hexahedra);
   if (hexas.empty()) {
-    msg_error("Object must have a Topology with hexahedra: " + topology->describe() + " has none");
-    set_state(ComponentState::invalid);
+    this->msg_error("Object must have a Topology with hexahedra: " + topology->describe() + " has none");
+    this->set_state(ComponentState::invalid);
     return;
   }
   fem::HexaMethod m;
@@ -111,14 +112,14 @@ void HexahedralFEMForceField::init() {
   else if (method.value() == "polar") m = fem::HexaMethod::polar;
   else {
     // SOFA leaves its method undefined here; "small" exists only in HexahedronFEMForceField.
-    msg_error("unknown method '" + method.value() + "' (expected large or polar)");
-    set_state(ComponentState::invalid);
+    this->msg_error("unknown method '" + method.value() + "' (expected large or polar)");
+    this->set_state(ComponentState::invalid);
     return;
   }
-  MechanicalState& s = *mstate;
+  MechanicalState& s = *this->mstate;
   if (s.state_type() != StateType::vec3) {
-    msg_error("only Vec3d states are supported");
-    set_state(ComponentState::invalid);
+    this->msg_error("only Vec3d states are supported");
+    this->set_state(ComponentState::invalid);
     return;
   }
   const std::size_t ne = hexas.size();
@@ -133,12 +134,12 @@ void HexahedralFEMForceField::init() {
   bool fatal = false;
   for (const auto& is : fem_.init(x0, h, E, nu, m)) {
     const std::string where = is.element >= 0 ? "element " + std::to_string(is.element) + ": " : "";
-    if (is.fatal) msg_error(where + is.message);
-    else msg_warning(where + is.message);
+    if (is.fatal) this->msg_error(where + is.message);
+    else this->msg_warning(where + is.message);
     fatal = fatal || is.fatal;
   }
   if (fatal) {
-    set_state(ComponentState::invalid);
+    this->set_state(ComponentState::invalid);
     return;
   }
   // Stiffness: SOFA's closed form on the unrotated rest nodes replaces the kernel's Gauss K.
@@ -151,7 +152,7 @@ void HexahedralFEMForceField::init() {
     const Vec3 l = nodes[6] - nodes[0];
     if (std::fabs(l[0]) <= 1e-6 * l.norm() || std::fabs(l[1]) <= 1e-6 * l.norm() ||
         std::fabs(l[2]) <= 1e-6 * l.norm()) {
-      msg_error("element " + std::to_string(e) + ": the diagonal n6 - n0 = (" + parse::format_double(l[0]) + " " +
+      this->msg_error("element " + std::to_string(e) + ": the diagonal n6 - n0 = (" + parse::format_double(l[0]) + " " +
                 parse::format_double(l[1]) + " " + parse::format_double(l[2]) +
                 ") has a zero component: SOFA's closed-form stiffness cannot be computed (flat or rotated element; "
                 "use HexahedronFEMForceField)");
@@ -160,7 +161,7 @@ void HexahedralFEMForceField::init() {
     }
     fem::hexahedral_element_stiffness(nodes, fem_.material[e], fem_.K[e]);
     if (!fem_.K[e].allFinite()) {
-      msg_error("element " + std::to_string(e) + ": non-finite stiffness (check youngModulus, poissonRatio, positions)");
+      this->msg_error("element " + std::to_string(e) + ": non-finite stiffness (check youngModulus, poissonRatio, positions)");
       fatal = true;
       continue;
     }
@@ -173,20 +174,21 @@ void HexahedralFEMForceField::init() {
   }
   fem_.touch_stiffness();
   if (fatal) {
-    set_state(ComponentState::invalid);
+    this->set_state(ComponentState::invalid);
     return;
   }
   if (not_box > 0)
-    msg_warning(std::to_string(not_box) + " element(s) (first: " + std::to_string(first_not_box) +
+    this->msg_warning(std::to_string(not_box) + " element(s) (first: " + std::to_string(first_not_box) +
                 ") are not axis-aligned boxes: SOFA's closed-form stiffness, reproduced here, is wrong for them "
                 "(use HexahedronFEMForceField)");
   if (not_cube > 0)
-    msg_info(std::to_string(not_cube) + " element(s) (first: " + std::to_string(first_not_cube) +
+    this->msg_info(std::to_string(not_cube) + " element(s) (first: " + std::to_string(first_not_cube) +
              ") are not cubes: SOFA's closed-form stiffness scales the shear terms of each diagonal entry "
              "by one edge length, so it differs from HexahedronFEMForceField on them");
 }
 
-void HexahedralFEMForceField::follow_topology() {
+template <class Role>
+void HexahedralFEMBase<Role>::follow_topology() {
   if (!topology || topology->elements_version(MeshTopologyBase::Elements::hexahedra) == hexa_version_) return;
   if (topology->hexahedra().empty()) {
     // Every element was removed: no force, no error.
@@ -197,27 +199,30 @@ void HexahedralFEMForceField::follow_topology() {
   init();
 }
 
-void HexahedralFEMForceField::add_force(const MechParams& p) {
-  if (state() != ComponentState::valid) return;
+template <class Role>
+void HexahedralFEMBase<Role>::add_force(const MechParams& p) {
+  if (this->state() != ComponentState::valid) return;
   follow_topology();
-  if (state() != ComponentState::valid) return;
-  MechanicalState& s = *mstate;
+  if (this->state() != ComponentState::valid) return;
+  MechanicalState& s = *this->mstate;
   fem_.add_force(as_vec3(s.read(p.x)), as_vec3(s.write(p.f)));
 }
 
-void HexahedralFEMForceField::add_dforce(const MechParams& p, double kfactor) {
-  if (state() != ComponentState::valid) return;
+template <class Role>
+void HexahedralFEMBase<Role>::add_dforce(const MechParams& p, double kfactor) {
+  if (this->state() != ComponentState::valid) return;
   follow_topology();
-  if (state() != ComponentState::valid) return;
-  MechanicalState& s = *mstate;
+  if (this->state() != ComponentState::valid) return;
+  MechanicalState& s = *this->mstate;
   fem_.add_dforce(as_vec3(s.read(p.dx)), as_vec3(s.write(p.df)), kfactor);
 }
 
-bool HexahedralFEMForceField::build_stiffness(MatrixSink& sink) {
-  if (state() != ComponentState::valid) return true;
+template <class Role>
+bool HexahedralFEMBase<Role>::build_stiffness(MatrixSink& sink) {
+  if (this->state() != ComponentState::valid) return true;
   follow_topology();
-  if (state() != ComponentState::valid) return true;
-  const MechanicalState* s = mstate.get();
+  if (this->state() != ComponentState::valid) return true;
+  const MechanicalState* s = this->mstate.get();
   // SOFA stores Q = Rᵀ (element → world) but assembles −Qᵀ·K_ij·Q as if Q
   // were R, i.e. −R·K_ij·Rᵀ, not the −Rᵀ·K_ij·R that add_dforce applies.
   // Summation order as SOFA's: t = R·K_ij first, then t·Rᵀ.
@@ -241,6 +246,99 @@ bool HexahedralFEMForceField::build_stiffness(MatrixSink& sink) {
   return true;
 }
 
+template class HexahedralFEMBase<ForceField>;
+template class HexahedralFEMBase<Mass>;
+
+void HexahedralFEMForceFieldAndMass::init() {
+  HexahedralFEMBase<Mass>::init();
+  if (state() != ComponentState::valid) return;
+  const std::size_t ne = fem_.size();
+  const std::size_t np = mstate->size();
+  // SOFA's integrateVolume with every corner sign squared (= 8/27), in its literal order.
+  const double t1 = 1, t2 = 1, t3 = 1, t9 = t1 * t2;
+  const double integral =
+      t1 * t3 / 72.0 + t2 * t3 / 72.0 + t9 * t3 / 216.0 + t3 / 24.0 + 1.0 / 8.0 + t9 / 72.0 + t1 / 24.0 + t2 / 24.0;
+  const double rho = density.value();
+  element_mass_.assign(ne, 0.0);
+  particle_mass_.assign(np, 0.0);
+  for (std::size_t e = 0; e < ne; ++e) {
+    const auto& n = fem_.rest[e];  // the rotated rest element (SOFA's rotatedInitialElements)
+    const double volume = fem::len3(n[1] - n[0]) * fem::len3(n[3] - n[0]) * fem::len3(n[4] - n[0]);
+    const double total = volume * rho;
+    element_mass_[e] = total * integral;
+    const double corner = total * 0.125;
+    for (int w = 0; w < 8; ++w) particle_mass_[fem_.hexa[e][w]] += corner;
+  }
+  lumped_.clear();
+  if (lumped_mass.value()) {
+    lumped_.assign(np, Vec3::Zero());
+    for (std::size_t e = 0; e < ne; ++e)
+      for (int w = 0; w < 8; ++w)
+        for (int j = 0; j < 8; ++j)  // the 8 non-zero entries of each row of M_e
+          for (int c = 0; c < 3; ++c) lumped_[fem_.hexa[e][w]][c] += element_mass_[e];
+  }
+}
+
+void HexahedralFEMForceFieldAndMass::add_force(const MechParams& p) {
+  HexahedralFEMBase<Mass>::add_force(p);
+  if (state() != ComponentState::valid || separate_gravity.value()) return;
+  auto f = as_vec3(mstate->write(p.f));
+  const Vec3 g = node()->gravity.value();
+  for (std::size_t i = 0; i < particle_mass_.size() && i < f.size(); ++i) f[i] += g * particle_mass_[i];
+}
+
+void HexahedralFEMForceFieldAndMass::add_mdx(const MechParams&, int res, int dx, double factor) {
+  if (state() != ComponentState::valid) return;
+  auto f = as_vec3(mstate->write(res));
+  const auto d = as_vec3(mstate->read(dx));
+  if (lumped_mass.value()) {
+    for (std::size_t i = 0; i < lumped_.size() && i < f.size(); ++i)
+      for (int c = 0; c < 3; ++c) f[i][c] += lumped_[i][c] * d[i][c] * factor;
+    return;
+  }
+  for (std::size_t e = 0; e < fem_.size(); ++e) {
+    const auto& h = fem_.hexa[e];
+    const double m = element_mass_[e];
+    // Row (w, c) of M_e·dx: of its 24 products only the 8 on component c are
+    // non-zero (adding the others' exact zeros changes nothing).
+    Vec3 F;
+    for (int c = 0; c < 3; ++c) {
+      double s = 0.0;
+      for (int j = 0; j < 8; ++j) s += m * d[h[j]][c];
+      F[c] = s;
+    }
+    // Every row w of the element has the same sum.
+    for (int w = 0; w < 8; ++w) f[h[w]] += F * factor;
+  }
+}
+
+void HexahedralFEMForceFieldAndMass::acc_from_f(const MechParams&, int, int) {
+  msg_warning("accFromF is not available (as in SOFA: the element mass matrices are not inverted); "
+              "use an implicit solver");
+}
+
+void HexahedralFEMForceFieldAndMass::add_gravity_to_v(int v, double dt) {
+  auto vv = as_vec3(mstate->write(v));
+  const Vec3 dv = node()->gravity.value() * dt;
+  for (std::size_t i = 0; i < particle_mass_.size() && i < vv.size(); ++i) vv[i] += dv;
+}
+
+bool HexahedralFEMForceFieldAndMass::build_mass(MatrixSink& M) {
+  if (state() != ComponentState::valid) return true;
+  const MechanicalState* s = mstate.get();
+  for (std::size_t e = 0; e < fem_.size(); ++e) {
+    const Mat3 block = Mat3::Identity() * element_mass_[e];
+    for (int i = 0; i < 8; ++i) M.add_block(s, 3 * fem_.hexa[e][i], s, 3 * fem_.hexa[e][i], block);
+  }
+  return true;
+}
+
+double HexahedralFEMForceFieldAndMass::total() const {
+  double t = 0;
+  for (double m : particle_mass_) t += m;
+  return t;
+}
+
 }  // namespace sinew
 
 namespace sinew {
@@ -254,6 +352,18 @@ void register_hexahedral_fem_force_field(Registry& r) {
   info.default_template = "Vec3d";
   info.requirement = Requirement::state;
   info.create = creator<HexahedralFEMForceField>();
+  r.add(std::move(info));
+}
+
+void register_hexahedral_fem_force_field_and_mass(Registry& r) {
+  ComponentInfo info;
+  info.name = "HexahedralFEMForceFieldAndMass";
+  info.category = "ForceField/FEM";
+  info.description = "HexahedralFEMForceField that is also the mass of its object (SOFA's element masses)";
+  info.templates = {"Vec3d"};
+  info.default_template = "Vec3d";
+  info.requirement = Requirement::state;
+  info.create = creator<HexahedralFEMForceFieldAndMass>();
   r.add(std::move(info));
 }
 

@@ -9,6 +9,8 @@
 //  - the assembled stiffness blocks are −R·K_ij·Rᵀ (R: world → element
 //    frame), whereas add_dforce applies −Rᵀ·K·R: the two agree only when the
 //    element frames are symmetric (no rotation, or half-turns).
+// HexahedralFEMForceFieldAndMass is the same force field acting as the mass
+// of its object, with SOFA's element masses (below).
 #pragma once
 
 #include <array>
@@ -34,7 +36,9 @@ void hexahedral_element_stiffness(const std::array<Vec3, 8>& nodes, const HexaMa
 
 }  // namespace fem
 
-class HexahedralFEMForceField final : public ForceField {
+// The force field on top of either role: ForceField, or Mass for the "AndMass" variant.
+template <class Role>
+class HexahedralFEMBase : public Role {
  public:
   Field<std::vector<double>> young_modulus{this, "youngModulus", {5000.0},
                                            "Young's modulus, one value or one per element", "Material", "pressure (force/length²)"};
@@ -50,7 +54,7 @@ class HexahedralFEMForceField final : public ForceField {
 
   const fem::HexaFEM& kernel() const { return fem_; }
 
- private:
+ protected:
   // Hexahedra removed or added since the elements were built: rebuilt from the rest positions
   // (SOFA's per-hexahedron data is computed from them on creation and moved with swap-last on
   // removal, so a rebuild gives the same elements in the container's order).
@@ -58,6 +62,41 @@ class HexahedralFEMForceField final : public ForceField {
 
   fem::HexaFEM fem_;  // K replaced by hexahedral_element_stiffness after init
   std::uint64_t hexa_version_ = 0;
+};
+
+class HexahedralFEMForceField final : public HexahedralFEMBase<ForceField> {};
+
+// SOFA's element masses, from the rotated rest element of volume
+// V = |n1−n0|·|n3−n0|·|n4−n0|: every node pair (i, j) of the element gets
+// (ρV)·(8/27) on its 3×3 identity block (SOFA integrates each pair with the
+// first node's corner signs, squared: a constant), so M_e·dx couples all 8
+// nodes; gravity acts on ρV/8 per corner (unless separateGravity). Kept from
+// SOFA: the assembled mass (compatibility path of addMToMatrix) has the
+// diagonal blocks only, lumpedMass sums each row of M_e, and accFromF does not
+// exist (a warning, the acceleration is left as it is).
+class HexahedralFEMForceFieldAndMass final : public HexahedralFEMBase<Mass> {
+ public:
+  Field<double> density{this, "density", 1.0, "volumetric mass", "Mass", "mass/length³"};
+  Field<bool> lumped_mass{this, "lumpedMass", false, "use lumped masses (row sums of the element mass matrices)",
+                          "Mass"};
+
+  void init() override;
+  void add_force(const MechParams& p) override;
+  void add_mdx(const MechParams& p, int res, int dx, double factor) override;
+  void acc_from_f(const MechParams& p, int a, int f) override;
+  void add_gravity_to_v(int v, double dt) override;
+  bool build_mass(MatrixSink& M) override;
+  double total() const override;
+  bool is_diagonal() const override { return lumped_mass.value(); }
+
+  // Per element: the value of every diagonal entry of its 3×3 blocks (SOFA's M_e).
+  const std::vector<double>& element_masses() const { return element_mass_; }
+  const std::vector<double>& particle_masses() const { return particle_mass_; }
+
+ private:
+  std::vector<double> element_mass_;
+  std::vector<double> particle_mass_;  // ρV/8 per element corner, summed per point (gravity, total)
+  std::vector<Vec3> lumped_;           // row sums per point and component (lumpedMass)
 };
 
 }  // namespace sinew
