@@ -79,39 +79,12 @@ void PolynomialSpringsForceField::bwd_init() {
       }
   }
   // Polynomial p uses the next degree[p] coefficients.
-  const auto& degree = polynomial_degree.value();
-  poly_.clear();
-  unsigned next = 0;
-  for (unsigned d : degree) {
-    std::vector<unsigned> idx(d);
-    for (unsigned k = 0; k < d; ++k) idx[k] = next++;
-    poly_.push_back(std::move(idx));
-  }
-  if (next > polynomial_stiffness.value().size()) {
-    msg_error("polynomialDegree asks for " + std::to_string(next) + " coefficients but polynomialStiffness has " +
-              std::to_string(polynomial_stiffness.value().size()));
+  const std::string bad = poly_.build(polynomial_degree.value(), polynomial_stiffness.value());
+  if (!bad.empty()) {
+    msg_error(bad);
     set_state(ComponentState::invalid);
+    return;
   }
-}
-
-double PolynomialSpringsForceField::value(unsigned poly, double s) const {
-  const auto& c = polynomial_stiffness.value();
-  double power = 1.0, result = 0.0;
-  for (unsigned idx : poly_[poly]) {
-    power *= s;
-    result += c[idx] * power;
-  }
-  return result;
-}
-
-double PolynomialSpringsForceField::derivative(unsigned poly, double s) const {
-  const auto& c = polynomial_stiffness.value();
-  double power = 1.0, result = 0.0;
-  for (std::size_t k = 0; k < poly_[poly].size(); ++k) {
-    result += static_cast<double>(k + 1) * c[poly_[poly][k]] * power;
-    power *= s;
-  }
-  return result;
 }
 
 void PolynomialSpringsForceField::add_force(const MechParams& p) {
@@ -155,7 +128,7 @@ void PolynomialSpringsForceField::add_force(const MechParams& p) {
     const Vec3 u(d[0] / length, d[1] / length, d[2] / length);
     const double strain = std::fabs(length - rest_[i]) / rest_[i];
     const unsigned poly = one_per_spring ? static_cast<unsigned>(i) : 0u;
-    const double force = value(poly, strain);
+    const double force = poly_.value(poly, strain);
     const double sign = length - rest_[i] >= 0 ? 1.0 : compression;
     for (int c = 0; c < 3; ++c) {
       const double fc = force * sign * u[c];
@@ -164,7 +137,7 @@ void PolynomialSpringsForceField::add_force(const MechParams& p) {
     }
     // SOFA's ComputeJacobian.
     const double pf = force / length;
-    const double pd = derivative(poly, strain) / rest_[i];
+    const double pd = poly_.derivative(poly, strain) / rest_[i];
     Mat3& J = jacobian_[i];
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) J(r, c) = (pd - pf) * u[r] * u[c];

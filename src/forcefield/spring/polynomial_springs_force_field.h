@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/roles.h"
+#include "forcefield/spring/strain_polynomials.h"
 
 namespace sinew {
 
@@ -65,13 +66,11 @@ class PolynomialSpringsForceField : public ForceField {
 
  private:
   bool read_indices();                     // SOFA's recomputeIndices; false when the lists are unusable
-  double value(unsigned poly, double s) const;       // P(s)
-  double derivative(unsigned poly, double s) const;  // P'(s)
 
   MechanicalState* s1_ = nullptr;
   MechanicalState* s2_ = nullptr;
   std::vector<unsigned> first_, second_;
-  std::vector<std::vector<unsigned>> poly_;  // per polynomial: indices into polynomialStiffness
+  StrainPolynomials poly_;
   std::vector<double> rest_;
   std::vector<char> rest_pending_;           // rest length still to take from the first length seen
   std::vector<Mat3> jacobian_;
