@@ -59,7 +59,7 @@ void DiagonalMass::init() {
     return;
   }
   if (!meshgeo::bind_mesh_mass(*this, topology, geometry_state)) return;
-  const MassElement k = meshgeo::checked_mass_element(*this, *topology);
+  const MassElement k = meshgeo::checked_mass_element(*this, *topology, *geometry_state);
   if (k == MassElement::none) return;
   kind_ = static_cast<int>(k);
   follow_.owner = this;

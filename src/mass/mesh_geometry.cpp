@@ -41,20 +41,29 @@ bool bind_mesh_mass(Mass& mass, Link<MeshTopologyBase>& topology, Link<Mechanica
     Node* tn = topology->node() ? topology->node() : mass.node();
     geometry_state.set(tn->get_mechanical_state());
   }
-  if (!geometry_state || geometry_state->state_type() != s.state_type())
-    return fail("no state compatible with the mass was found for the topology's geometry");
+  // SOFA's Mass<DataTypes, GeometricalTypes>: the template's second type (else the state's)
+  // is the geometry's.
+  StateType geometry_type = s.state_type();
+  const std::string& tmpl = mass.template_name();
+  if (const std::size_t comma = tmpl.find(','); comma != std::string::npos) {
+    StateType t;
+    if (state_type_from_name(tmpl.substr(comma + 1), t)) geometry_type = t;
+  }
+  if (!geometry_state || geometry_state->state_type() != geometry_type)
+    return fail(std::string("no ") + state_type_info(geometry_type).name +
+                " state was found for the topology's geometry (geometryState, or the topology's node state)");
   return true;
 }
 
-MassElement checked_mass_element(Mass& mass, const MeshTopologyBase& t) {
+MassElement checked_mass_element(Mass& mass, const MeshTopologyBase& t, const MechanicalState& geometry) {
   const MassElement k = mass_element(t);
   if (k == MassElement::none) {
     mass.msg_error("the topology " + t.describe() + " is empty");
     mass.set_state(ComponentState::invalid);
     return MassElement::none;
   }
-  if ((k == MassElement::tetra || k == MassElement::hexa) && mass.mstate->info().spatial_dim < 3) {
-    mass.msg_error("volume elements need a 3D state");
+  if ((k == MassElement::tetra || k == MassElement::hexa) && geometry.info().spatial_dim < 3) {
+    mass.msg_error("volume elements need a 3D geometry state");
     mass.set_state(ComponentState::invalid);
     return MassElement::none;
   }

@@ -92,7 +92,7 @@ bool bind_mesh_mass(Mass& mass, Link<MeshTopologyBase>& topology, Link<Mechanica
 // The element kind the mass will use, checked against the state: an empty
 // topology, or volume elements on a 1D/2D state, are reported and mark the
 // mass invalid (the result is then MassElement::none).
-MassElement checked_mass_element(Mass& mass, const MeshTopologyBase& t);
+MassElement checked_mass_element(Mass& mass, const MeshTopologyBase& t, const MechanicalState& geometry);
 
 // The elements of kind k must only use points present in both the mass's state
 // and the geometry state; otherwise reports the largest index and marks the

@@ -86,7 +86,7 @@ void MeshMatrixMass::init() {
   MechanicalState& s = *mstate;
   if (!meshgeo::bind_mesh_mass(*this, topology, geometry_state)) return;
   const MeshTopologyBase& t = *topology;
-  const MassElement k = meshgeo::checked_mass_element(*this, t);
+  const MassElement k = meshgeo::checked_mass_element(*this, t, *geometry_state);
   if (k == MassElement::none) return;
   if (k == MassElement::edge) msg_warning("edge topologies get no mass (as in SOFA)");
   kind_ = static_cast<int>(k);
@@ -314,7 +314,11 @@ void register_mesh_matrix_mass(Registry& r) {
   info.name = "MeshMatrixMass";
   info.category = "Mass";
   info.description = "consistent (or lumped) mass matrix from the element lengths, areas or volumes of the topology";
-  info.templates = {"Vec1d", "Vec2d", "Vec3d"};
+  // SOFA's MeshMatrixMass<DataTypes, GeometricalTypes>: Vec3, Vec2, Vec2-Vec3, Vec1, Vec1-Vec2,
+  // Vec1-Vec3 (the one-parameter names are <T, T>). The geometry comes from `geometryState` or
+  // the topology's state either way (its own width).
+  info.templates = {"Vec1d", "Vec2d", "Vec3d", "Vec1d,Vec1d", "Vec1d,Vec2d", "Vec1d,Vec3d",
+                    "Vec2d,Vec2d", "Vec2d,Vec3d", "Vec3d,Vec3d"};
   info.default_template = "Vec3d";
   info.requirement = Requirement::state;
   info.create = creator<MeshMatrixMass>();

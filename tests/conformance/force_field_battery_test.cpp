@@ -187,6 +187,23 @@ const std::vector<ForceFieldCase> kCases = {
     // Linear in the displacement from the rest shape (not rotation invariant), symmetric tangent.
     {"TriangularTensorMassForceField", triangles(ff("TriangularTensorMassForceField", kSoft)),
      kEnergy | kStiffness | kNetForce},
+    {"TetrahedralTensorMassForceField", tetras(ff("TetrahedralTensorMassForceField", kSoft)),
+     kEnergy | kStiffness | kNetForce},
+    // Given rest lengths shorter than every spring: all stretched, where SOFA's tangent is exact
+    // (compressed springs keep the stretched tangent, see polynomial_springs_test.cpp).
+    {"PolynomialSpringsForceField",
+     node("<MechanicalObject name='dofs' position='0 0 0  1 0 0  0 1 0  0 0 1'/>" +
+          ff("PolynomialSpringsForceField", "firstObjectPoints='0 1' secondObjectPoints='2 3' polynomialDegree='2 1' "
+                                            "polynomialStiffness='20 50 30' computeZeroLength='0' zeroLength='0.5'")),
+     kStiffness | kMomentum},
+    // A Vec1 field diffusing on two tetrahedra whose geometry is the tagged Vec3d state above it.
+    {"TetrahedronDiffusionFEMForceField",
+     node("<MeshTopology name='topo' position='0 0 0  1 0 0  0 1 0  0 0 1  0.9 1.1 1.2' tetrahedra='0 1 2 3  1 2 3 4'/>"
+          "<MechanicalObject name='geo' tags='meca'/><Node name='heat'>"
+          "<MechanicalObject name='dofs' template='Vec1d' position='0.1 0.7 0.3 0.9 0.4'/>" +
+          ff("TetrahedronDiffusionFEMForceField", "template='Vec1d' topology='@../topo' constantDiffusionCoefficient='5'") +
+          "</Node>"),
+     kStiffness | kNetForce},
     {"FastTriangularBendingSprings", triangles(ff("FastTriangularBendingSprings", "bendingStiffness='10'")),
      kEnergy | kInternal},
     // Threads to a needle's back point (0.5 0.5 2), held: two stretched, one slack (no force, no stiffness).
@@ -340,6 +357,9 @@ const std::vector<ForceFieldCase> kCases = {
     // SOFA assembles R·K·Rᵀ with frames other than add_dforce's once they turn (hexahedral_fem_test.cpp).
     {"HexahedralFEMForceField_large", hexas(ff("HexahedralFEMForceField", kElastic + "method='large'")),
      (kCorotational & ~kStiffness) | kStiffnessAtRest, 0.2},
+    {"HexahedralFEMForceFieldAndMass",
+     hexas(ff("HexahedralFEMForceFieldAndMass", kElastic + "method='large' density='2'")),
+     (kCorotational & ~kStiffness) | kStiffnessAtRest, 0.2},
     {"HexahedralFEMForceField_polar", hexas(ff("HexahedralFEMForceField", kElastic + "method='polar'")),
      (kCorotational & ~kStiffness) | kStiffnessAtRest, 0.2},
     // J rebuilt from the current shape, not differentiated (as SOFA).
@@ -387,6 +407,8 @@ const std::map<std::string, std::string> kExcluded = {
     {"SPHFluidForceField", "explicit by design in SOFA: no tangent (tests/sph/ checks the force itself)"},
     // SOFA's tangent keeps only ks·(n·dx)·n/|d|² (no geometric term, no damping term).
     {"ParticlesRepulsionForceField", "SOFA's simplified tangent is not ∂f/∂x by design"},
+    // SOFA's tangent is diagonal (off-diagonal terms left out) and uses the smoothed length.
+    {"PolynomialRestShapeSpringsForceField", "SOFA's diagonal tangent is not ∂f/∂x by design"},
 };
 
 std::vector<ForceFieldCase> cases_with(unsigned checks) {

@@ -93,8 +93,13 @@ const std::vector<MassCase> kCases = {
      hexas(mass("HexahedronFEMForceFieldAndMass", "youngModulus='1000' poissonRatio='0.3' density='2'")), 0},
 };
 
-// Registered masses without a case, and why. (None.)
-const std::map<std::string, std::string> kExcluded = {};
+// Registered masses without a case, and why.
+const std::map<std::string, std::string> kExcluded = {
+    // SOFA's addMDx couples all 8 nodes of an element while its assembled mass (the
+    // addMToMatrix compatibility path) keeps the diagonal blocks only: build_mass ≠ add_mdx by
+    // design (hexahedral_fem_and_mass_test.cpp checks both against SOFA's formulas).
+    {"HexahedralFEMForceFieldAndMass", "SOFA's assembled mass keeps the diagonal blocks of its M·dx"},
+};
 
 std::string case_name(const ::testing::TestParamInfo<MassCase>& info) { return info.param.name; }
 std::vector<MassCase> cases_with(unsigned checks) {
