@@ -18,6 +18,7 @@ namespace tx = tinyxml2;
 struct BinaryLayout {
   std::size_t header_size = 4;  // the byte count before each array: header_type UInt32 or UInt64
   bool swap = false;            // byte_order is the other one than this machine's (BigEndian)
+  bool compressed = false;      // a compressor is named: binary arrays are block-compressed
 };
 
 // tinyxml2's ErrorStr() is "Error=<NAME> ErrorID=<n> (0x..) Line number=<n>[: <detail>]"; the line
@@ -104,6 +105,8 @@ bool read_data_array(const tx::XMLElement& da, const BinaryLayout& layout, std::
       }
     }
   } else if (format == "binary") {
+    if (layout.compressed)
+      return (why = "compressed binary DataArrays are not supported (ascii, or uncompressed binary)"), false;
     std::vector<unsigned char> bytes;
     if (!base64_decode(text, bytes)) return (why = "bad base64 data"), false;
     const std::size_t hs = layout.header_size;
@@ -141,12 +144,14 @@ std::optional<MeshData> read_vtk_xml(const std::string& path, const std::string&
   if (!root) return err("XML error: no root element");
   const std::string root_name = root->Name();
   if (root_name != "VTKFile") return err("root element is <" + root_name + ">, <VTKFile> expected");
-  if (!attr(*root, "compressor").empty()) return err("compressed VTK XML files are not supported");
+  // A compressor applies to binary arrays only: files that name one but store ASCII arrays
+  // (SOFA's share/mesh/skull.vtp) read as any other.
   // Binary arrays (and their byte-count headers) are in the file's byte order; ASCII arrays have none.
   const std::string byte_order = attr(*root, "byte_order", "LittleEndian");
   if (byte_order != "LittleEndian" && byte_order != "BigEndian")
     return err("unknown byte_order '" + byte_order + "' (LittleEndian or BigEndian expected)");
-  const BinaryLayout layout{attr(*root, "header_type", "UInt32") == "UInt64" ? 8u : 4u, byte_order == "BigEndian"};
+  const BinaryLayout layout{attr(*root, "header_type", "UInt32") == "UInt64" ? 8u : 4u, byte_order == "BigEndian",
+                            !attr(*root, "compressor").empty()};
   const std::string type = attr(*root, "type");
   const tx::XMLElement* grid = root->FirstChildElement(type.c_str());
   if (!grid || (type != "UnstructuredGrid" && type != "PolyData"))

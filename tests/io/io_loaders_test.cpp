@@ -585,6 +585,35 @@ TEST(IoVtk, XmlBigEndianAsciiArrays) {
   EXPECT_NE(err.find("unknown byte_order 'MiddleEndian'"), std::string::npos) << err;
 }
 
+// A compressor applies to binary arrays only: a file naming one with ASCII arrays (SOFA's
+// share/mesh/skull.vtp) reads as any other; a compressed binary array is refused by name.
+TEST(IoVtk, XmlCompressorWithAsciiArraysReads) {
+  TempDir t;
+  auto vtp = [](const char* points_array) {
+    return std::string(R"(<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian" compressor="vtkZLibDataCompressor">
+  <PolyData><Piece NumberOfPoints="3" NumberOfPolys="1">
+    <Points>)") + points_array + R"(</Points>
+    <Polys>
+      <DataArray type="Int32" Name="connectivity" format="ascii">0 1 2</DataArray>
+      <DataArray type="Int32" Name="offsets" format="ascii">3</DataArray>
+    </Polys>
+  </Piece></PolyData>
+</VTKFile>
+)";
+  };
+  std::string err;
+  auto m = io::read_vtk(
+      t.write("ascii.vtp", vtp(R"(<DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 2 0</DataArray>)")),
+      &err);
+  ASSERT_TRUE(m) << err;
+  EXPECT_EQ(m->positions, (std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {0, 2, 0}}));
+  EXPECT_EQ(m->triangles, (Tris{{0, 1, 2}}));
+  EXPECT_FALSE(io::read_vtk(
+      t.write("zlib.vtp", vtp(R"(<DataArray type="Float32" NumberOfComponents="3" format="binary">AQAAAA==</DataArray>)")),
+      &err));
+  EXPECT_NE(err.find("compressed binary DataArrays are not supported"), std::string::npos) << err;
+}
+
 // Big-endian base64 arrays are byte-swapped, their byte-count header too (UInt32 or UInt64), and
 // give the mesh of the little-endian file.
 TEST(IoVtk, XmlBigEndianBinaryArrays) {
