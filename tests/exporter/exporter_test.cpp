@@ -198,6 +198,55 @@ TEST(STLExporter, BinaryAndAscii) {
             "endsolid Exported from Sofa\n");
 }
 
+// Blender point cache: header, then the points from the last to the first (position,
+// velocity); hair adds the rest position and one root point per strand.
+TEST(BlenderExporter, PointCacheSoftBodyAndHair) {
+  TempDir dir;
+  auto scene = [](const std::string& folder, const std::string& attrs) {
+    return R"(<Node name="root" dt="0.01" gravity="0 0 0"><DefaultAnimationLoop/>
+      <MechanicalObject name="m" position="0 0 0  1 0 0  1 2 0  1 2 3" velocity="1 2 3  4 5 6  7 8 9  0 0 1"/>
+      <BlenderExporter filename=")" + folder + R"(/c" exportAtBegin="1" )" + attrs + "/></Node>";
+  };
+  run(dir, scene(dir.dir(), ""), 0);
+  std::string b = slurp(dir.dir() + "/c_00.bphys");
+  ASSERT_EQ(b.size(), 20u + 4u * 24u);
+  EXPECT_EQ(b.substr(0, 8), "BPHYSICS");
+  std::uint32_t head[3];
+  std::memcpy(head, b.data() + 8, 12);
+  EXPECT_EQ(head[0], 0u);
+  EXPECT_EQ(head[1], 4u);
+  EXPECT_EQ(head[2], 6u);
+  float rec[6];
+  std::memcpy(rec, b.data() + 20, 24);  // the last point first
+  EXPECT_EQ(rec[2], 3.f);
+  EXPECT_EQ(rec[5], 1.f);
+  std::memcpy(rec, b.data() + 20 + 3 * 24, 24);  // point 0 last
+  EXPECT_EQ(rec[0], 0.f);
+  EXPECT_EQ(rec[3], 1.f);
+  EXPECT_EQ(rec[4], 2.f);
+
+  TempDir dir2;
+  run(dir2, scene(dir2.dir(), R"(simulationType="3" nbPtsByHair="2")"), 0);
+  b = slurp(dir2.dir() + "/c_00.bphys");
+  // Two strands of two points: 4 + 2 root points of 36 bytes; type written as cloth (2), flags 22.
+  ASSERT_EQ(b.size(), 20u + 6u * 36u);
+  std::memcpy(head, b.data() + 8, 12);
+  EXPECT_EQ(head[0], 2u);
+  EXPECT_EQ(head[1], 6u);
+  EXPECT_EQ(head[2], 22u);
+  // Order: point 3, then root of strand (2, 3) = p2 + unit(p3 − p2) = (1 2 1), then point 2, ...
+  float r[9];
+  std::memcpy(r, b.data() + 20 + 36, 36);
+  EXPECT_EQ(r[0], 1.f);
+  EXPECT_EQ(r[1], 2.f);
+  EXPECT_EQ(r[2], 1.f);
+  EXPECT_EQ(r[6], 1.f);  // its "rest" is the root point again
+  // The hair info frame of init.
+  const std::string info = slurp(dir2.dir() + "/c");
+  ASSERT_EQ(info.size(), 32u);
+  EXPECT_EQ(info.substr(0, 8), "BPHYSICS");
+}
+
 TEST(VisualModelOBJExporter, GroupsMaterialsAndIndexOffsets) {
   TempDir dir;
   const std::string xml = R"(<Node name="root" dt="0.01">
