@@ -157,6 +157,10 @@ class SpatialGrid {
                                  PoolAllocator<std::pair<const Key, std::uint32_t>>>;
 
   std::uint32_t get_block(const Key& k);
+  // Calls f(cells) for every non-empty cell in SOFA's order (blocks in map order, cells
+  // z-major), cells[0] being that cell and cells[1..13] its forward stencil (global ids).
+  template <class F>
+  void for_each_cell(F&& f) const;
   // Global cell id of cell (x, y, z) of block b; coordinates may step one block out.
   std::uint32_t cell_of(std::uint32_t b, int x, int y, int z) const {
     if (x < 0) { b = blocks_[b].nb[0]; x += kDim; }
@@ -188,13 +192,8 @@ inline constexpr int kPairStencil[14][3] = {{0, 0, 0},  {1, 0, 0},  {0, 1, 0},  
                                             {-1, 1, 1}, {-1, -1, 1}, {0, -1, 1}, {1, -1, 1}};
 
 template <class F>
-void SpatialGrid::for_each_pair(double dist, F&& f) const {
-  const double dist2 = dist * dist;
+void SpatialGrid::for_each_cell(F&& f) const {
   const std::uint32_t* start = cell_start_.data();
-  const double* px = entry_x_.data();
-  const double* py = entry_y_.data();
-  const double* pz = entry_z_.data();
-  const std::uint32_t* idx = entry_index_.data();
   for (const auto& kv : map_) {
     const std::uint32_t b = kv.second;
     if (blocks_[b].empty) continue;
@@ -202,28 +201,41 @@ void SpatialGrid::for_each_pair(double dist, F&& f) const {
       for (int y = 0; y < kDim; ++y)
         for (int x = 0; x < kDim; ++x) {
           const std::uint32_t c0 = b * kCells + static_cast<std::uint32_t>(x + kDim * y + kDim * kDim * z);
-          const std::uint32_t b0 = start[c0], e0 = start[c0 + 1];
-          if (b0 == e0) continue;
-          std::uint32_t cells[13];
-          for (int s = 1; s < 14; ++s)
-            cells[s - 1] = cell_of(b, x + kPairStencil[s][0], y + kPairStencil[s][1], z + kPairStencil[s][2]);
-          for (std::uint32_t p = b0; p < e0; ++p) {
-            const double x1 = px[p], y1 = py[p], z1 = pz[p];
-            for (std::uint32_t q = p + 1; q < e0; ++q) {
-              const double dx = px[q] - x1, dy = py[q] - y1, dz = pz[q] - z1;
-              const double r2 = dx * dx + dy * dy + dz * dz;
-              if (r2 < dist2) f(idx[p], idx[q], r2);
-            }
-            for (std::uint32_t c : cells) {
-              for (std::uint32_t q = start[c], qe = start[c + 1]; q < qe; ++q) {
-                const double dx = px[q] - x1, dy = py[q] - y1, dz = pz[q] - z1;
-                const double r2 = dx * dx + dy * dy + dz * dz;
-                if (r2 < dist2) f(idx[p], idx[q], r2);
-              }
-            }
-          }
+          if (start[c0] == start[c0 + 1]) continue;
+          std::uint32_t cells[14];
+          for (int s = 0; s < 14; ++s)
+            cells[s] = cell_of(b, x + kPairStencil[s][0], y + kPairStencil[s][1], z + kPairStencil[s][2]);
+          f(cells);
         }
   }
+}
+
+template <class F>
+void SpatialGrid::for_each_pair(double dist, F&& f) const {
+  const double dist2 = dist * dist;
+  const std::uint32_t* start = cell_start_.data();
+  const double* px = entry_x_.data();
+  const double* py = entry_y_.data();
+  const double* pz = entry_z_.data();
+  const std::uint32_t* idx = entry_index_.data();
+  for_each_cell([&](const std::uint32_t* cells) {
+    const std::uint32_t b0 = start[cells[0]], e0 = start[cells[0] + 1];
+    for (std::uint32_t p = b0; p < e0; ++p) {
+      const double x1 = px[p], y1 = py[p], z1 = pz[p];
+      for (std::uint32_t q = p + 1; q < e0; ++q) {
+        const double dx = px[q] - x1, dy = py[q] - y1, dz = pz[q] - z1;
+        const double r2 = dx * dx + dy * dy + dz * dz;
+        if (r2 < dist2) f(idx[p], idx[q], r2);
+      }
+      for (int s = 1; s < 14; ++s) {
+        for (std::uint32_t q = start[cells[s]], qe = start[cells[s] + 1]; q < qe; ++q) {
+          const double dx = px[q] - x1, dy = py[q] - y1, dz = pz[q] - z1;
+          const double r2 = dx * dx + dy * dy + dz * dz;
+          if (r2 < dist2) f(idx[p], idx[q], r2);
+        }
+      }
+    }
+  });
 }
 
 }  // namespace sinew::sph

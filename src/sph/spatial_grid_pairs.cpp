@@ -134,38 +134,30 @@ void SpatialGrid::find_pairs(double dist, PairBuffer& out, bool simd) const {
   const PairArrays arrays{entry_x_.data(), entry_y_.data(), entry_z_.data(), entry_index_.data()};
   const std::uint32_t* start = cell_start_.data();
   std::size_t n = 0;
-  for (const auto& kv : map_) {
-    const std::uint32_t b = kv.second;
-    if (blocks_[b].empty) continue;
-    for (int z = 0; z < kDim; ++z)
-      for (int y = 0; y < kDim; ++y)
-        for (int x = 0; x < kDim; ++x) {
-          const std::uint32_t c0 = b * kCells + static_cast<std::uint32_t>(x + kDim * y + kDim * kDim * z);
-          if (start[c0] == start[c0 + 1]) continue;
-          PairCellJob job;
-          job.own_end = start[c0 + 1];
-          for (int s = 0; s < 14; ++s) {
-            const std::uint32_t c = cell_of(b, x + kPairStencil[s][0], y + kPairStencil[s][1], z + kPairStencil[s][2]);
-            // [a, b) then [b, c) is [a, c): same candidates, same order.
-            if (job.ranges > 0 && job.end[job.ranges - 1] == start[c]) {
-              job.end[job.ranges - 1] = start[c + 1];
-            } else {
-              job.begin[job.ranges] = start[c];
-              job.end[job.ranges] = start[c + 1];
-              ++job.ranges;
-            }
-          }
-          // Room for every candidate plus the lanes a 4-wide store writes past the last pair.
-          const std::size_t need = n + pair_candidates(job) + 4;
-          if (out.r2.size() < need) {
-            const std::size_t grown = std::max(need, 2 * out.r2.size());
-            out.first.resize(grown);
-            out.second.resize(grown);
-            out.r2.resize(grown);
-          }
-          n = wide ? pairs_avx2(job, arrays, dist2, out, n) : pairs_scalar(job, arrays, dist2, out, n);
-        }
-  }
+  for_each_cell([&](const std::uint32_t* cells) {
+    PairCellJob job;
+    job.own_end = start[cells[0] + 1];
+    for (int s = 0; s < 14; ++s) {
+      const std::uint32_t c = cells[s];
+      // [a, b) then [b, c) is [a, c): same candidates, same order.
+      if (job.ranges > 0 && job.end[job.ranges - 1] == start[c]) {
+        job.end[job.ranges - 1] = start[c + 1];
+      } else {
+        job.begin[job.ranges] = start[c];
+        job.end[job.ranges] = start[c + 1];
+        ++job.ranges;
+      }
+    }
+    // Room for every candidate plus the lanes a 4-wide store writes past the last pair.
+    const std::size_t need = n + pair_candidates(job) + 4;
+    if (out.r2.size() < need) {
+      const std::size_t grown = std::max(need, 2 * out.r2.size());
+      out.first.resize(grown);
+      out.second.resize(grown);
+      out.r2.resize(grown);
+    }
+    n = wide ? pairs_avx2(job, arrays, dist2, out, n) : pairs_scalar(job, arrays, dist2, out, n);
+  });
   out.size = n;
 }
 

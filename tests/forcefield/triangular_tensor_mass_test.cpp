@@ -16,9 +16,6 @@
 #include "topology/dynamic/triangle_set_topology_modifier.h"
 
 using namespace sinew;
-using sinew::test::dforce;
-using sinew::test::expect_near_rel;
-using sinew::test::fd_force;
 using sinew::test::force_at;
 using sinew::test::get;
 using sinew::test::load;
@@ -91,32 +88,7 @@ TEST(TriangularTensorMass, LinearForcesOfASymmetricTangent) {
   std::vector<double> x = st.read(kRestPosition);
   const auto w = wiggle(x.size(), 3);
   for (std::size_t i = 0; i < x.size(); ++i) x[i] = 1.2 * x[i] + 0.1 * w[i];
-  const auto f = force_at(ff, st, x);
-  const double h = 1e-6;
-  std::vector<double> g(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    auto xp = x, xm = x;
-    xp[i] += h;
-    xm[i] -= h;
-    force_at(ff, st, xp);
-    const double ep = *ff.potential_energy();
-    force_at(ff, st, xm);
-    g[i] = -(ep - *ff.potential_energy()) / (2 * h);
-  }
-  expect_near_rel(f, g, 1e-7, "force vs -dE/dx");
-  force_at(ff, st, x);
-  const auto dx = wiggle(x.size(), 11);
-  const auto k = dforce(ff, st, dx);
-  expect_near_rel(k, fd_force(ff, st, x, dx, 1e-6), 1e-7, "add_dforce vs finite differences");
-  const auto K = sinew::test::dense_stiffness(ff, st);
-  const std::size_t n = x.size();
-  std::vector<double> Kdx(n, 0.0);
-  for (std::size_t r = 0; r < n; ++r)
-    for (std::size_t c = 0; c < n; ++c) {
-      Kdx[r] += K[r * n + c] * dx[c];
-      EXPECT_NEAR(K[r * n + c], K[c * n + r], 1e-12) << r << " " << c;
-    }
-  expect_near_rel(Kdx, k, 1e-12, "build_stiffness vs add_dforce");
+  sinew::test::expect_consistent_energy_and_tangent(ff, st, x, 11, 1e-7, 1e-12);
 }
 
 TEST(TriangularTensorMass, EdgeTensorsFollowRemovalAndAddition) {

@@ -89,4 +89,37 @@ inline std::vector<double> wiggle(std::size_t n, unsigned seed) {
   return v;
 }
 
+// At positions x: add_force = −∇E (central differences of potential_energy(), step 1e-6),
+// add_dforce = finite differences of add_force along a seeded direction (both to rel), and
+// build_stiffness = add_dforce (to 1e-12), symmetric to `symmetry` (absolute).
+inline void expect_consistent_energy_and_tangent(ForceField& ff, MechanicalState& s, const std::vector<double>& x,
+                                                 unsigned seed, double rel = 1e-7, double symmetry = 1e-9) {
+  const auto f = force_at(ff, s, x);
+  const double h = 1e-6;
+  std::vector<double> g(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    auto xp = x, xm = x;
+    xp[i] += h;
+    xm[i] -= h;
+    force_at(ff, s, xp);
+    const double ep = *ff.potential_energy();
+    force_at(ff, s, xm);
+    g[i] = -(ep - *ff.potential_energy()) / (2 * h);
+  }
+  expect_near_rel(f, g, rel, "force vs -dE/dx");
+  force_at(ff, s, x);
+  const auto dx = wiggle(x.size(), seed);
+  const auto k = dforce(ff, s, dx);
+  expect_near_rel(k, fd_force(ff, s, x, dx, 1e-6), rel, "add_dforce vs finite differences");
+  const auto K = dense_stiffness(ff, s);
+  const std::size_t n = x.size();
+  std::vector<double> Kdx(n, 0.0);
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t c = 0; c < n; ++c) {
+      Kdx[r] += K[r * n + c] * dx[c];
+      EXPECT_NEAR(K[r * n + c], K[c * n + r], symmetry) << r << " " << c;
+    }
+  expect_near_rel(Kdx, k, 1e-12, "build_stiffness vs add_dforce");
+}
+
 }  // namespace sinew::test

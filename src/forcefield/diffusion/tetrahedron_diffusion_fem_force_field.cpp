@@ -121,39 +121,31 @@ void TetrahedronDiffusionFEMForceField::init() {
   }
 }
 
-void TetrahedronDiffusionFEMForceField::add_force(const MechParams& p) {
-  if (state() != ComponentState::valid) return;
-  const double* u = mstate->read(p.x).data();
-  double* f = mstate->write(p.f).data();
+// Per edge (v0, v1): f[v1] += (u[v1] − u[v0])·c·factor, f[v0] −= the same (factor 1 for the
+// force: a product by 1 changes no bit).
+void TetrahedronDiffusionFEMForceField::add_fluxes(const double* u, double* f, double factor) const {
   const auto& edges = topology->edges();
   const std::size_t ne = std::min(edges.size(), edge_coef_.size());
   const std::size_t w = static_cast<std::size_t>(width_);
   for (std::size_t i = 0; i < ne; ++i) {
     const std::size_t a = w * edges[i][0], b = w * edges[i][1];
     for (std::size_t c = 0; c < w; ++c) {
-      const double dp = (u[b + c] - u[a + c]) * edge_coef_[i];
+      const double dp = (u[b + c] - u[a + c]) * edge_coef_[i] * factor;
       f[b + c] += dp;
       f[a + c] -= dp;
     }
   }
 }
 
+void TetrahedronDiffusionFEMForceField::add_force(const MechParams& p) {
+  if (state() != ComponentState::valid) return;
+  add_fluxes(mstate->read(p.x).data(), mstate->write(p.f).data(), 1.0);
+}
+
 void TetrahedronDiffusionFEMForceField::add_dforce(const MechParams& p, double) {
   if (state() != ComponentState::valid) return;
-  const double k = p.k;  // SOFA's mparams->kFactor(), without rayleighStiffness
-  const double* du = mstate->read(p.dx).data();
-  double* df = mstate->write(p.df).data();
-  const auto& edges = topology->edges();
-  const std::size_t ne = std::min(edges.size(), edge_coef_.size());
-  const std::size_t w = static_cast<std::size_t>(width_);
-  for (std::size_t i = 0; i < ne; ++i) {
-    const std::size_t a = w * edges[i][0], b = w * edges[i][1];
-    for (std::size_t c = 0; c < w; ++c) {
-      const double dp = (du[b + c] - du[a + c]) * edge_coef_[i] * k;
-      df[b + c] += dp;
-      df[a + c] -= dp;
-    }
-  }
+  // SOFA's mparams->kFactor(), without rayleighStiffness.
+  add_fluxes(mstate->read(p.dx).data(), mstate->write(p.df).data(), p.k);
 }
 
 // Every component, as add_dforce applies it. SOFA's buildStiffnessMatrix fills only the

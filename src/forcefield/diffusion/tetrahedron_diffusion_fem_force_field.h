@@ -50,6 +50,7 @@ class TetrahedronDiffusionFEMForceField : public ForceField {
 
  private:
   MechanicalState* find_geometry() const;
+  void add_fluxes(const double* u, double* f, double factor) const;
 
   std::vector<double> edge_coef_;
   int width_ = 1;

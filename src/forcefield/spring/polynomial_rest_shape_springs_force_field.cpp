@@ -90,12 +90,7 @@ void PolynomialRestShapeSpringsForceField::add_force(const MechParams& p) {
     set_state(ComponentState::invalid);
     return;
   }
-  const bool one_per_spring = polynomial_degree.value().size() == index_.size();
-  if (!one_per_spring && !warned_first_poly_) {
-    msg_warning("polynomialDegree has " + std::to_string(polynomial_degree.value().size()) + " entries for " +
-                std::to_string(index_.size()) + " springs: every spring uses the first polynomial (as SOFA)");
-    warned_first_poly_ = true;
-  }
+  if (const std::string w = poly_.first_for_all_warning(index_.size()); !w.empty()) msg_warning(w);
   const double* x = mstate->read(p.x).data();
   const double* x0 = rest_positions()->data();
   double* f = mstate->write(p.f).data();
@@ -110,7 +105,7 @@ void PolynomialRestShapeSpringsForceField::add_force(const MechParams& p) {
     sq += d[2] * d[2];
     const double rest = i < l0.size() ? l0[i] : l0[0];
     const double strain = std::sqrt(sq) / rest;
-    const unsigned poly = one_per_spring ? static_cast<unsigned>(i) : 0u;
+    const unsigned poly = poly_.polynomial_of(i, index_.size());
     const double force = poly_.value(poly, strain);
     const double smooth = std::exp(shift - scale * sq);
     const double len = std::sqrt(sq + smooth);

@@ -61,7 +61,6 @@ class PolynomialRestShapeSpringsForceField : public ForceField {
   std::vector<unsigned> index_, ext_index_;
   StrainPolynomials poly_;
   std::vector<Vec3> jacobian_;
-  bool warned_first_poly_ = false;
 };
 
 }  // namespace sinew

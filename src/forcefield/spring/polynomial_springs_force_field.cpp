@@ -98,12 +98,7 @@ void PolynomialSpringsForceField::add_force(const MechParams& p) {
       return;
     }
   }
-  const bool one_per_spring = polynomial_degree.value().size() == first_.size();
-  if (!one_per_spring && !warned_first_poly_) {
-    msg_warning("polynomialDegree has " + std::to_string(polynomial_degree.value().size()) + " entries for " +
-                std::to_string(first_.size()) + " springs: every spring uses the first polynomial (as SOFA)");
-    warned_first_poly_ = true;
-  }
+  if (const std::string w = poly_.first_for_all_warning(first_.size()); !w.empty()) msg_warning(w);
   const double compression = compressible.value() ? -1.0 : 0.0;
   const auto [x1, v1, f1, x2, v2, f2] = pair_force_vectors(*s1_, *s2_, p);
   for (std::size_t i = 0; i < first_.size(); ++i) {
@@ -127,7 +122,7 @@ void PolynomialSpringsForceField::add_force(const MechParams& p) {
     }
     const Vec3 u(d[0] / length, d[1] / length, d[2] / length);
     const double strain = std::fabs(length - rest_[i]) / rest_[i];
-    const unsigned poly = one_per_spring ? static_cast<unsigned>(i) : 0u;
+    const unsigned poly = poly_.polynomial_of(i, first_.size());
     const double force = poly_.value(poly, strain);
     const double sign = length - rest_[i] >= 0 ? 1.0 : compression;
     for (int c = 0; c < 3; ++c) {

@@ -74,7 +74,6 @@ class PolynomialSpringsForceField : public ForceField {
   std::vector<double> rest_;
   std::vector<char> rest_pending_;           // rest length still to take from the first length seen
   std::vector<Mat3> jacobian_;
-  bool warned_first_poly_ = false;
   bool warned_degenerate_ = false;
 };
 

@@ -28,6 +28,18 @@ class StrainPolynomials {
   }
   std::size_t count() const { return index_.size(); }
 
+  // SOFA's rule: spring i uses polynomial i when there is one per spring, else the first.
+  unsigned polynomial_of(std::size_t spring, std::size_t springs) const {
+    return count() == springs ? static_cast<unsigned>(spring) : 0u;
+  }
+  // The warning to give (once) when the first polynomial serves every spring, else empty.
+  std::string first_for_all_warning(std::size_t springs) {
+    if (count() == springs || warned_) return {};
+    warned_ = true;
+    return "polynomialDegree has " + std::to_string(count()) + " entries for " + std::to_string(springs) +
+           " springs: every spring uses the first polynomial (as SOFA)";
+  }
+
   double value(unsigned p, double s) const {
     double power = 1.0, result = 0.0;
     for (unsigned idx : index_[p]) {
@@ -48,6 +60,7 @@ class StrainPolynomials {
  private:
   std::vector<double> coeff_;
   std::vector<std::vector<unsigned>> index_;
+  bool warned_ = false;
 };
 
 }  // namespace sinew
