@@ -8,9 +8,10 @@
 #include "engine/texture_interpolation.h"
 #include "test_scene.h"
 
-using namespace sinew;
-using sinew::test::get;
-using sinew::test::load;
+namespace sinew::texture_interpolation_test {
+
+using test::get;
+using test::load;
 
 TEST(TextureInterpolation, FieldValuesToTextureCoordinates) {
   auto s = load(R"(<Node>
@@ -55,3 +56,5 @@ TEST(TextureInterpolation, PlanarMappingWithoutAField) {
   EXPECT_EQ(t[2], Vec2(1, 0));
   EXPECT_EQ(t[3], Vec2(0.5, 0.5));
 }
+
+}  // namespace sinew::texture_interpolation_test

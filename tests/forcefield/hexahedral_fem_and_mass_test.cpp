@@ -16,8 +16,7 @@
 #include "state/mechanical_object.h"
 #include "test_scene.h"
 
-namespace sinew {
-namespace {
+namespace sinew::hexahedral_fem_and_mass_test {
 
 std::string box(const std::string& extra, const std::string& gravity = "0 -10 0") {
   return R"(<Node dt="0.01" gravity=")" + gravity +
@@ -139,5 +138,4 @@ TEST(HexahedralFEMForceFieldAndMass, NoHexahedraIsAnError) {
   EXPECT_FALSE(init_root(*s.root));
 }
 
-}  // namespace
-}  // namespace sinew
+}  // namespace sinew::hexahedral_fem_and_mass_test

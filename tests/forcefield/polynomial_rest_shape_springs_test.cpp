@@ -13,11 +13,12 @@
 #include "spring_helpers.h"
 #include "test_scene.h"
 
-using namespace sinew;
-using sinew::test::dforce;
-using sinew::test::force_at;
-using sinew::test::get;
-using sinew::test::load;
+namespace sinew::polynomial_rest_shape_springs_test {
+
+using test::dforce;
+using test::force_at;
+using test::get;
+using test::load;
 
 namespace {
 std::string rest_scene(const std::string& attrs) {
@@ -114,3 +115,5 @@ TEST(PolynomialRestShapeSprings, BadInputIsAnError) {
   EXPECT_TRUE(o.init_ok) << o.all();
   EXPECT_TRUE(o.finite);
 }
+
+}  // namespace sinew::polynomial_rest_shape_springs_test

@@ -14,13 +14,14 @@
 #include "spring_helpers.h"
 #include "test_scene.h"
 
-using namespace sinew;
-using sinew::test::dforce;
-using sinew::test::expect_near_rel;
-using sinew::test::fd_force;
-using sinew::test::force_at;
-using sinew::test::get;
-using sinew::test::load;
+namespace sinew::polynomial_springs_test {
+
+using test::dforce;
+using test::expect_near_rel;
+using test::fd_force;
+using test::force_at;
+using test::get;
+using test::load;
 
 namespace {
 // Points 0, 1 (spring 0: 0 → 1, rest length 1) and 2, 3 (spring 1: 2 → 3, rest length 2).
@@ -128,3 +129,5 @@ TEST(PolynomialSprings, BadInputIsAnError) {
   EXPECT_TRUE(o.init_ok) << o.all();
   EXPECT_TRUE(any_contains_all(o.warnings, {"'ps'", "zero"})) << o.all();
 }
+
+}  // namespace sinew::polynomial_springs_test

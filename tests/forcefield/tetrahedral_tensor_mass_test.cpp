@@ -15,12 +15,13 @@
 #include "test_scene.h"
 #include "topology/dynamic/tetrahedron_set_topology_modifier.h"
 
-using namespace sinew;
-using sinew::test::expect_near_rel;
-using sinew::test::force_at;
-using sinew::test::get;
-using sinew::test::load;
-using sinew::test::wiggle;
+namespace sinew::tetrahedral_tensor_mass_test {
+
+using test::expect_near_rel;
+using test::force_at;
+using test::get;
+using test::load;
+using test::wiggle;
 
 namespace {
 const char* kPoints = "0 0 0  1 0 0  0 1 0  0 0 1  1.1 0.9 0.8  -0.3 0.4 1.2";
@@ -135,3 +136,5 @@ TEST(TetrahedralTensorMass, BadInputIsAnErrorNamingTheComponent) {
   EXPECT_TRUE(any_contains_all(o.errors, {"'tm'", "TetrahedralTensorMassForceField"})) << o.all();
   EXPECT_FALSE(o.init_ok);
 }
+
+}  // namespace sinew::tetrahedral_tensor_mass_test

@@ -14,11 +14,12 @@
 #include "spring_helpers.h"
 #include "test_scene.h"
 
-using namespace sinew;
-using sinew::test::dforce;
-using sinew::test::force_at;
-using sinew::test::get;
-using sinew::test::load;
+namespace sinew::tetrahedron_diffusion_test {
+
+using test::dforce;
+using test::force_at;
+using test::get;
+using test::load;
 
 namespace {
 // Geometry (tagged "mechanics") in the root, the Vec1 field in a child node.
@@ -112,3 +113,5 @@ TEST(TetrahedronDiffusion, BadInputIsAnError) {
   o = run(kUnitTet, R"(tagMechanics="mechanics")");
   EXPECT_TRUE(o.init_ok) << o.all();
 }
+
+}  // namespace sinew::tetrahedron_diffusion_test
