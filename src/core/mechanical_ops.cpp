@@ -17,6 +17,11 @@ int MechanicalOps::alloc_vec() {
   return next++;
 }
 
+int MechanicalOps::alloc_coord_vec() {
+  static std::atomic<int> next{kFirstDynamicCoordVec};
+  return next++;
+}
+
 void MechanicalOps::sync() {
   if (built_version_ != node_->structure_version()) rebuild();
 }

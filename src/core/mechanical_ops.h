@@ -38,8 +38,11 @@ class MechanicalOps {
   const std::vector<Mapping*>& all_mappings() const { return all_mappings_; }
   const std::vector<ProjectiveConstraint*>& projective_constraints() const { return constraints_; }
 
-  // A fresh vector id (zero on first use, kept afterwards).
+  // A fresh vector id of derivatives (zero on first use, kept afterwards).
   static int alloc_vec();
+  // A fresh vector id of coordinates (positions: a rigid DoF has 7 scalars, the
+  // identity rotation on first use).
+  static int alloc_coord_vec();
 
   // ---- vector operations on independent states
   void v_clear(int r);                         // r = 0

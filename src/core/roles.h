@@ -39,10 +39,13 @@ enum VecId : int {
   kResetPosition,
   kResetVelocity,
   kFirstDynamicVec = 16,
+  // Solvers' temporaries that hold positions (Rigid3d: 7 scalars per DoF, not 6).
+  kFirstDynamicCoordVec = 1 << 24,
 };
-// Whether a standard id holds coordinates (positions) rather than derivatives.
+// Whether an id holds coordinates (positions) rather than derivatives.
 constexpr bool is_coord_vec(int id) {
-  return id == kPosition || id == kRestPosition || id == kFreePosition || id == kResetPosition;
+  return id == kPosition || id == kRestPosition || id == kFreePosition || id == kResetPosition ||
+         id >= kFirstDynamicCoordVec;
 }
 
 enum class StateType { vec1, vec2, vec3, vec6, rigid2, rigid3 };

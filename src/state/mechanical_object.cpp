@@ -91,7 +91,7 @@ void MechanicalObject::resize(std::size_t n) {
   for (int id : {kPosition, kVelocity, kForce, kDx}) resize_vec(standard(id)->edit().data, is_coord_vec(id), n);
   for (int id : {kRestPosition, kFreePosition, kFreeVelocity})
     if (!standard(id)->value().data.empty()) resize_vec(standard(id)->edit().data, is_coord_vec(id), n);
-  for (auto& [id, v] : dynamic_) resize_vec(v, false, n);
+  for (auto& [id, v] : dynamic_) resize_vec(v, is_coord_vec(id), n);
   if (!lambda.value().data.empty()) resize_vec(lambda.edit().data, false, n);
   size_field.set(static_cast<int>(n));
 }
@@ -107,7 +107,7 @@ void MechanicalObject::remove_points(const std::vector<unsigned>& decreasing) {
     if (f->parent()) f->set_parent(nullptr);  // the values now differ from the linked source
     remove_swap_last(f->edit().data, decreasing, is_coord_vec(id) ? inf.coord_width : inf.deriv_width);
   }
-  for (auto& [id, v] : dynamic_) remove_swap_last(v, decreasing, inf.deriv_width);
+  for (auto& [id, v] : dynamic_) remove_swap_last(v, decreasing, is_coord_vec(id) ? inf.coord_width : inf.deriv_width);
   if (!lambda.value().data.empty()) remove_swap_last(lambda.edit().data, decreasing, inf.deriv_width);
   size_ = decreasing.size() < size_ ? size_ - decreasing.size() : 0;
   size_field.set(static_cast<int>(size_));
@@ -138,8 +138,8 @@ void MechanicalObject::add_points(std::size_t n, const std::vector<std::vector<u
     vecs.push_back({&d, coord ? inf.coord_width : inf.deriv_width});
   }
   for (auto& [id, v] : dynamic_) {
-    resize_vec(v, false, prev + n);
-    vecs.push_back({&v, inf.deriv_width});
+    resize_vec(v, is_coord_vec(id), prev + n);
+    vecs.push_back({&v, is_coord_vec(id) ? inf.coord_width : inf.deriv_width});
   }
   if (!lambda.value().data.empty()) {
     resize_vec(lambda.edit().data, false, prev + n);
@@ -178,12 +178,13 @@ std::vector<double>& MechanicalObject::storage(int id) {
     if (id != kExternalForce && d.size() != size_ * f->value().width) resize_vec(d, is_coord_vec(id), size_);
     return d;
   }
+  const bool coord = is_coord_vec(id);
   auto it = dynamic_.find(id);
   if (it == dynamic_.end()) {
     it = dynamic_.emplace(id, std::vector<double>{}).first;
-    resize_vec(it->second, false, size_);
-  } else if (it->second.size() != size_ * info().deriv_width) {
-    resize_vec(it->second, false, size_);
+    resize_vec(it->second, coord, size_);
+  } else if (it->second.size() != size_ * (coord ? info().coord_width : info().deriv_width)) {
+    resize_vec(it->second, coord, size_);
   }
   return it->second;
 }

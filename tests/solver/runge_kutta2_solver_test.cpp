@@ -3,7 +3,9 @@
 
 #include <cmath>
 
+#include "core/mechanical_ops.h"
 #include "oscillator.h"
+#include "state/mechanical_object.h"
 
 namespace sinew {
 namespace {
@@ -40,4 +42,47 @@ TEST(RungeKutta2Solver, FreeFallIsExact) {
 }
 
 }  // namespace
+}  // namespace sinew
+
+namespace sinew {
+namespace rk_rigid_test {
+
+// Solvers' position temporaries of a rigid state are coordinates: 7 scalars
+// per DoF and the identity rotation (a Rigid3d midpoint once overflowed a
+// 6-scalar derivative vector: found by the whole-scene fuzzer on SOFA's
+// rungekutta2_heterogeneousobjects.scn).
+TEST(MechanicalObjectVectors, CoordinateTemporariesOfARigidStateHaveSevenScalarsPerDof) {
+  auto s = test::load(
+      "<Node dt=\"0.1\"><MechanicalObject name=\"dofs\" template=\"Rigid3d\" position=\"1 2 3 0 0 0 1  4 5 6 0 0 0 1\"/>"
+      "</Node>");
+  auto* mo = test::get<MechanicalObject>(*s.root, "dofs");
+  ASSERT_NE(mo, nullptr);
+  const auto& x = mo->read(MechanicalOps::alloc_coord_vec());
+  ASSERT_EQ(x.size(), 14u);
+  EXPECT_EQ(x[6], 1.0);
+  EXPECT_EQ(x[13], 1.0);
+  EXPECT_EQ(x[0], 0.0);
+  EXPECT_EQ(mo->read(MechanicalOps::alloc_vec()).size(), 12u);
+}
+
+// A spinning rigid body in free fall: both Runge-Kutta methods are exact for
+// a constant acceleration and a constant angular velocity (no torque).
+TEST(RungeKuttaSolvers, RigidFreeFallAndSpinAreExact) {
+  for (const char* solver : {"RungeKutta2Solver", "RungeKutta4Solver"}) {
+    auto s = test::load(std::string("<Node dt=\"0.1\" gravity=\"0 -10 0\"><DefaultAnimationLoop/><") + solver +
+                        "/><MechanicalObject name=\"dofs\" template=\"Rigid3d\" position=\"1 2 3 0 0 0 1\" "
+                        "velocity=\"0 0 0 0 0 1\"/><UniformMass template=\"Rigid3d\" totalMass=\"2\"/></Node>");
+    auto* mo = test::get<MechanicalObject>(*s.root, "dofs");
+    ASSERT_NE(mo, nullptr) << solver;
+    for (int i = 0; i < 10; ++i) animate(*s.root);
+    const auto& x = mo->read(kPosition);
+    ASSERT_EQ(x.size(), 7u);
+    EXPECT_NEAR(x[1], 2.0 - 5.0, 1e-12) << solver;
+    EXPECT_NEAR(x[5], std::sin(0.5), 1e-12) << solver;  // 1 rad about z
+    EXPECT_NEAR(x[6], std::cos(0.5), 1e-12) << solver;
+    EXPECT_NEAR(mo->read(kVelocity)[1], -10.0, 1e-12) << solver;
+  }
+}
+
+}  // namespace rk_rigid_test
 }  // namespace sinew

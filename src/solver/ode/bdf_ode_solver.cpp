@@ -155,9 +155,11 @@ void BDFOdeSolver::solve(double dt, int x_result, int v_result) {
   x_slots_[s - 1] = x_result;
   v_slots_[s - 1] = v_result;
   f_slots_[s - 1] = kForce;
-  for (std::size_t i = 0; i <= s; ++i)
-    for (int* id : {&x_slots_[i], &v_slots_[i], &f_slots_[i]})
+  for (std::size_t i = 0; i <= s; ++i) {
+    for (int* id : {&v_slots_[i], &f_slots_[i]})
       if (*id < 0) *id = MechanicalOps::alloc_vec();
+    if (x_slots_[i] < 0) x_slots_[i] = MechanicalOps::alloc_coord_vec();
+  }
 
   // First guess: the previous velocity kept, positions moved by it.
   ops.v_eq(x_slots_[s], x_slots_[s - 1]);

@@ -6,7 +6,8 @@
 namespace sinew {
 
 void RungeKutta2Solver::init() {
-  for (int* id : {&acc_, &new_x_, &new_v_}) *id = MechanicalOps::alloc_vec();
+  for (int* id : {&acc_, &new_v_}) *id = MechanicalOps::alloc_vec();
+  new_x_ = MechanicalOps::alloc_coord_vec();
 }
 
 void RungeKutta2Solver::acceleration(double t, int X, int V, int a) {

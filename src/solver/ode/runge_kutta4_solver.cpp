@@ -6,7 +6,8 @@
 namespace sinew {
 
 void RungeKutta4Solver::init() {
-  for (int* id : {&k1a_, &k2a_, &k3a_, &k4a_, &k2v_, &k3v_, &k4v_, &X_}) *id = MechanicalOps::alloc_vec();
+  for (int* id : {&k1a_, &k2a_, &k3a_, &k4a_, &k2v_, &k3v_, &k4v_}) *id = MechanicalOps::alloc_vec();
+  X_ = MechanicalOps::alloc_coord_vec();
 }
 
 void RungeKutta4Solver::acceleration(double t, int X, int V, int a) {

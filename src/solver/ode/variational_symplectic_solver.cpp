@@ -15,7 +15,8 @@ void VariationalSymplecticSolver::init() {
     set_state(ComponentState::invalid);
     return;
   }
-  for (int* id : {&p_, &newp_, &acc_, &oldpos_, &x0_, &resi_, &b_, &res_, &tmp_}) *id = MechanicalOps::alloc_vec();
+  for (int* id : {&p_, &newp_, &acc_, &b_, &res_, &tmp_}) *id = MechanicalOps::alloc_vec();
+  for (int* id : {&oldpos_, &x0_, &resi_}) *id = MechanicalOps::alloc_coord_vec();  // resi_: x1 - x0 per coordinate
   // SOFA opens (and empties) the file at init, whether or not the energies are saved.
   if (!file.value().empty()) {
     energies_.open(file.value(), std::ios::out);
