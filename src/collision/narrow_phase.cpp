@@ -8,7 +8,7 @@
 
 namespace sinew {
 
-std::size_t BVHNarrowPhase::output_index(CollisionModelBase* m1, CollisionModelBase* m2) {
+std::size_t NarrowPhase::output_index(CollisionModelBase* m1, CollisionModelBase* m2) {
   for (std::size_t i = 0; i < outputs_.size(); ++i)
     if (outputs_[i].models.first == m1 && outputs_[i].models.second == m2) return i;
   PairOutputs entry;

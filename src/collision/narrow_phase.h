@@ -17,15 +17,30 @@
 
 namespace sinew {
 
-class BVHNarrowPhase final : public Component {
+// What a pipeline asks of a narrow phase: contact candidates per pair of
+// models, from the broad phase's model pairs.
+class NarrowPhase : public Component {
  public:
-  explicit BVHNarrowPhase(bool parallel = false) : parallel_(parallel) {}
-
   // Detects every pair's contacts (outputs of earlier steps are emptied first).
-  void detect(const std::vector<ModelPair>& pairs, const Intersection& method);
+  virtual void detect(const std::vector<ModelPair>& pairs, const Intersection& method) = 0;
   // Pairs in map order; a pair without outputs this step is left out by users.
   const std::vector<PairOutputs>& outputs() const { return outputs_; }
   std::vector<PairOutputs>& outputs() { return outputs_; }
+
+ protected:
+  // The output entry of the ordered pair (m1, m2), created at its place in map order.
+  std::size_t output_index(CollisionModelBase* m1, CollisionModelBase* m2);
+  std::vector<PairOutputs> outputs_;
+
+ private:
+  FirstSeenIds ids_;
+};
+
+class BVHNarrowPhase final : public NarrowPhase {
+ public:
+  explicit BVHNarrowPhase(bool parallel = false) : parallel_(parallel) {}
+
+  void detect(const std::vector<ModelPair>& pairs, const Intersection& method) override;
 
   // The walk of one pair of trees (its stacks keep their capacity between pairs and steps).
   class Traversal {
@@ -71,11 +86,7 @@ class BVHNarrowPhase final : public Component {
     ElementTest test;
     std::size_t output;  // index in outputs_
   };
-  std::size_t output_index(CollisionModelBase* m1, CollisionModelBase* m2);
-
   bool parallel_;
-  std::vector<PairOutputs> outputs_;
-  FirstSeenIds ids_;
   std::vector<Job> jobs_;
   std::vector<Traversal> traversals_;  // one per job in parallel runs, one in sequential runs
 };

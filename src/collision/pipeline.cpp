@@ -35,7 +35,7 @@ std::string CollisionScope::missing() const {
   };
   need(intersection, "an intersection method (e.g. MinProximityIntersection)");
   need(broad, "a broad phase (BruteForceBroadPhase)");
-  need(narrow, "a narrow phase (BVHNarrowPhase)");
+  need(narrow, "a narrow phase (BVHNarrowPhase or RayTraceNarrowPhase)");
   need(manager, "a contact manager (CollisionResponse)");
   return m;
 }
@@ -145,7 +145,7 @@ class CollisionPipeline final : public CollisionPipelineBase {
     }
     scope_.intersection = node()->find_down<Intersection>();
     scope_.broad = node()->find_down<BruteForceBroadPhase>();
-    scope_.narrow = node()->find_down<BVHNarrowPhase>();
+    scope_.narrow = node()->find_down<NarrowPhase>();
     scope_.manager = node()->find_down<CollisionResponse>();
     scope_.depth = depth.value();
     scope_.models.clear();

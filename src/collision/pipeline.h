@@ -18,7 +18,7 @@ struct CollisionScope {
   std::vector<CollisionModelBase*> models;  // in scene order
   Intersection* intersection = nullptr;
   BruteForceBroadPhase* broad = nullptr;
-  BVHNarrowPhase* narrow = nullptr;
+  NarrowPhase* narrow = nullptr;
   CollisionResponse* manager = nullptr;
   int depth = 6;
 
@@ -43,7 +43,7 @@ class SubCollisionPipeline final : public Component {
   Link<Intersection> intersection_method{this, "intersectionMethod", "intersection method"};
   Link<CollisionResponse> contact_manager{this, "contactManager", "contact manager"};
   Link<BruteForceBroadPhase> broad_phase{this, "broadPhaseDetection", "broad phase"};
-  Link<BVHNarrowPhase> narrow_phase{this, "narrowPhaseDetection", "narrow phase"};
+  Link<NarrowPhase> narrow_phase{this, "narrowPhaseDetection", "narrow phase"};
 
   void init() override;
   CollisionScope& scope() { return scope_; }

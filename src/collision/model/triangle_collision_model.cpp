@@ -73,7 +73,7 @@ void TriangleCollisionModel::compute_bounding_tree(int depth) {
   tree_.resize(tris_.size());
   if (tris_.empty()) return;
   const double d = contact_distance.value();
-  const bool normals = compute_normals.value() || !tree_.built();
+  const bool normals = compute_normals.value() || always_compute_normals_ || !tree_.built();
   const std::size_t n = x_.size();
   for (unsigned i = 0; i < tris_.size(); ++i) {
     const Triangle& t = tris_[i];
@@ -98,6 +98,16 @@ void TriangleCollisionModel::compute_bounding_tree(int depth) {
     tree_.set_box(i, box);
   }
   tree_.update(depth);
+}
+
+void TriangleCollisionModel::update_normals() {
+  const std::size_t n = x_.size();
+  for (unsigned i = 0; i < tris_.size(); ++i) {
+    const Triangle& t = tris_[i];
+    if (t[0] >= n || t[1] >= n || t[2] >= n) continue;
+    normals_[i] = (x_[t[1]] - x_[t[0]]).cross(x_[t[2]] - x_[t[0]]);
+    sofa_normalize(normals_[i]);
+  }
 }
 
 bool TriangleCollisionModel::element_can_collide(unsigned i, const CollisionModelBase& other, unsigned j) const {

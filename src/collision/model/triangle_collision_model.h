@@ -9,7 +9,7 @@ namespace sinew {
 
 class PointCollisionModel;
 
-class TriangleCollisionModel final : public CollisionModelBase {
+class TriangleCollisionModel : public CollisionModelBase {
  public:
   TriangleCollisionModel() : CollisionModelBase(Kind::triangle) {}
 
@@ -37,15 +37,27 @@ class TriangleCollisionModel final : public CollisionModelBase {
   std::size_t topology_triangles() const { return n_topology_tris_; }
   const MeshTopologyBase* mesh() const { return topology.get(); }
 
+  // Unit normal of triangle i as of the last detection (SOFA's t.n()).
+  const Vec3& normal(unsigned i) const { return normals_[i]; }
+  // Which of triangle i's vertices and edges it owns (kFlagP1 …, §2.6).
+  int flags(unsigned i) const { return flags_[i]; }
+
  protected:
   bool init_model() override;
-
- private:
+  // Follows the topology; true when the triangles were rebuilt (normals then zero).
   bool update_from_topology();
-  void compute_flags();
+  // SOFA's updateNormals: every triangle's normal from the current positions.
+  void update_normals();
+
   std::span<const Vec3> x_;
   std::vector<Triangle> tris_;
   std::vector<Vec3> normals_;
+  // Normals recomputed at every detection even with computeNormals="false"
+  // (TriangleOctreeCollisionModel, as SOFA's).
+  bool always_compute_normals_ = false;
+
+ private:
+  void compute_flags();
   std::vector<int> flags_;
   std::size_t n_topology_tris_ = 0;
   std::uint64_t tris_version_ = ~std::uint64_t{0}, quads_version_ = ~std::uint64_t{0};
