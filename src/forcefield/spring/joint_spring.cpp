@@ -1,40 +1,18 @@
 #include "forcefield/spring/joint_spring.h"
 
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <sstream>
+
+#include "forcefield/spring/spring_text.h"
 
 namespace sinew::joints {
 
 namespace {
 
-// Splits on white space (spaces, tabs, new lines: the XML attribute keeps them).
-struct Tokens {
-  std::string_view text;
-  std::size_t pos = 0;
-  bool next(std::string_view& tok) {
-    auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; };
-    while (pos < text.size() && space(text[pos])) ++pos;
-    if (pos >= text.size()) return false;
-    const std::size_t b = pos;
-    while (pos < text.size() && !space(text[pos])) ++pos;
-    tok = text.substr(b, pos - b);
-    return true;
-  }
-};
-
-bool to_double(std::string_view t, double& v) {
-  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
-  const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-  return r.ec == std::errc() && r.ptr == t.data() + t.size();
-}
-
-bool to_unsigned(std::string_view t, unsigned& v) {
-  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
-  const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-  return r.ec == std::errc() && r.ptr == t.data() + t.size();
-}
+using spring_text::to_double;
+using spring_text::to_unsigned;
+using spring_text::Tokens;
 
 bool to_flag(std::string_view t, bool& v) {
   unsigned u = 0;
