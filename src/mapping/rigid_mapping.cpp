@@ -96,6 +96,11 @@ bool RigidMapping::init_mapping() {
     initial_points.set(pts);
   }
   const std::size_t n_pts = use_x0.value() ? n_out : pts.size() / dim_;
+  if (!per_point.empty() && per_point.size() != n_pts)
+    msg_warning("rigidIndexPerPoint has " + std::to_string(per_point.size()) + " entries for " +
+                std::to_string(n_pts) + " mapped points: it is ignored and every point follows rigid " +
+                (index_from_end.value() ? "index (from the end) " : "") + std::to_string(index.value()) +
+                ", as in SOFA (it is not the old per-rigid point count)");
   local_ = std::move(pts);
   rigid_.assign(n_pts, 0);
   for (std::size_t i = 0; i < n_pts; ++i) {
