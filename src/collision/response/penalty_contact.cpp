@@ -1,8 +1,7 @@
 #include "collision/response/penalty_contact.h"
 
-#include <algorithm>
-
 #include "collision/intersection.h"
+#include "collision/response/outputs_by_id.h"
 #include "core/node.h"
 
 namespace sinew {
@@ -106,18 +105,7 @@ void PenaltyContact::set_detection_outputs(std::vector<DetectionOutput>& outputs
 
   // One contact per id: the first output of smallest value (SOFA keeps the
   // winner at its own place in the output order).
-  by_id_.clear();
-  for (std::size_t i = 0; i < outputs.size(); ++i) by_id_.emplace_back(outputs[i].id, i);
-  std::sort(by_id_.begin(), by_id_.end(), [&](const auto& a, const auto& b) {
-    if (a.first != b.first) return a.first < b.first;
-    const double va = outputs[a.second].value, vb = outputs[b.second].value;
-    if (va != vb) return va < vb;
-    return a.second < b.second;
-  });
-  kept_.clear();
-  for (std::size_t k = 0; k < by_id_.size(); ++k)
-    if (k == 0 || by_id_[k].first != by_id_[k - 1].first) kept_.push_back(by_id_[k].second);
-  std::sort(kept_.begin(), kept_.end());
+  keep_smallest_per_id(outputs, by_id_, kept_);
 
   ff.clear(kept_.size());
   mapper1_.resize(kept_.size());

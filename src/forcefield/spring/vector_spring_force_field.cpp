@@ -74,10 +74,16 @@ void VectorSpringForceField::bwd_init() {
     list_.reserve(n1_);
     for (unsigned i = 0; i < n1_; ++i) list_.push_back(Spring{i, i, ks, kd, {}});
   }
-  std::vector<double> out;
-  out.reserve(list_.size() * 5);
+  springs_set();
+}
+
+// The states' sizes the springs were checked against, and the `springs` output.
+void VectorSpringForceField::springs_set() {
+  n1_ = s1_ ? s1_->size() : 0;
+  n2_ = s2_ ? s2_->size() : 0;
+  std::vector<double>& out = springs.edit();
+  out.clear();
   for (const auto& s : list_) out.insert(out.end(), {s.ks, s.kd, s.rest[0], s.rest[1], s.rest[2]});
-  springs.set(std::move(out));
 }
 
 bool VectorSpringForceField::ready() {

@@ -55,6 +55,17 @@ class VectorSpringForceField : public ForceField {
   };
   const std::vector<Spring>& spring_list() const { return list_; }
 
+  // Springs set by code rather than by the scene (the StickContactForceField
+  // response rebuilds them at each detection): the states, then the springs,
+  // then springs_set() once they are all added.
+  void bind(MechanicalState& s1, MechanicalState& s2) { s1_ = &s1, s2_ = &s2; }
+  void clear_springs(std::size_t reserve) {
+    list_.clear();
+    list_.reserve(reserve);
+  }
+  void add_spring(const Spring& s) { list_.push_back(s); }
+  void springs_set();
+
  private:
   bool ready();  // state valid, springs made, sizes unchanged
   MechanicalState* s1_ = nullptr;
