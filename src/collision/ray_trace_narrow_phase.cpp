@@ -3,12 +3,9 @@
 #include "collision/intersect/elements.h"
 #include "collision/model/triangle_octree_collision_model.h"
 #include "core/registry.h"
+#include "math/sofa_vec.h"
 
 namespace sinew {
-
-namespace {
-inline double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-}  // namespace
 
 void RayTraceNarrowPhase::detect(const std::vector<ModelPair>& pairs, const Intersection& /*method*/) {
   for (PairOutputs& p : outputs_) p.outputs.clear();
@@ -64,11 +61,11 @@ void RayTraceNarrowPhase::find_pairs_volume(const TriangleOctreeCollisionModel& 
       TriangleOctree::TraceResult res, res2;
       const int hit2 = octree2.trace(point, -normal, res);
       if (hit2 == -1) continue;
-      if (dot3(m1.normal(j), m2.normal(static_cast<unsigned>(hit2))) > 0) continue;
+      if (sofa_dot(m1.normal(j), m2.normal(static_cast<unsigned>(hit2))) > 0) continue;
       // … met before the ray leaves this surface (no exit: not a closed surface).
       const int hit1 = octree1.trace(point, -normal, res2);
       if (hit1 == -1 || res2.t < res.t) continue;
-      if (dot3(m1.normal(j), m1.normal(static_cast<unsigned>(hit1))) > 0) continue;
+      if (sofa_dot(m1.normal(j), m1.normal(static_cast<unsigned>(hit1))) > 0) continue;
       const Triangle& tri2 = m2.triangle(static_cast<unsigned>(hit2));
       const double w1 = 1.0 - res.u - res.v;
       Vec3 q;

@@ -3,15 +3,11 @@
 #include <cmath>
 #include <limits>
 
+#include "math/sofa_vec.h"
+
 namespace sinew {
 
 namespace {
-// SOFA's Vec operations, written out so that the rounding is the same
-// (sums left to right, no fused multiply-add).
-inline double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline Vec3 cross3(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 inline double max3(double a, double b, double c) {  // std::max({a, b, c})
   double m = a;
   if (m < b) m = b;
@@ -36,17 +32,17 @@ bool ray_triangle_intersection(const Vec3& n0, const Vec3& n1, const Vec3& n2, c
   constexpr double eps = std::numeric_limits<double>::epsilon();
   t = u = v = 0;
   const Vec3 e0 = n1 - n0, e1 = n2 - n0;
-  const Vec3 pvec = cross3(direction, e1);
-  const double det = dot3(e0, pvec);
+  const Vec3 pvec = sofa_cross(direction, e1);
+  const double det = sofa_dot(e0, pvec);
   if (std::fabs(det) <= eps) return false;
   const double inv_det = 1.0 / det;
   const Vec3 tvec = origin - n0;
-  u = dot3(tvec, pvec) * inv_det;
+  u = sofa_dot(tvec, pvec) * inv_det;
   if (u < 0.0 - eps || u > 1.0 + eps) return false;
-  const Vec3 qvec = cross3(tvec, e0);
-  v = dot3(direction, qvec) * inv_det;
+  const Vec3 qvec = sofa_cross(tvec, e0);
+  v = sofa_dot(direction, qvec) * inv_det;
   if (v < 0.0 - eps || (u + v) > 1.0 + eps) return false;
-  t = dot3(e1, qvec) * inv_det;
+  t = sofa_dot(e1, qvec) * inv_det;
   return !(t < eps || t != t || v != v || u != u);
 }
 

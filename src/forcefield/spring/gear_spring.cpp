@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "forcefield/spring/spring_text.h"
+#include "math/sofa_vec.h"
 
 namespace sinew::gears {
 
@@ -12,17 +13,10 @@ using spring_text::to_double;
 using spring_text::to_unsigned;
 using spring_text::Tokens;
 
-// SOFA's Vec operations written out (same rounding).
-inline double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline Vec3 cross3(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline double norm3(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-
 // Rotation vector taking unit vector u onto v (SOFA's getVectorAngle).
 Vec3 vector_angle(const Vec3& u, const Vec3& v) {
-  Vec3 w = cross3(u, v);
-  const double nw = norm3(w), dt = dot3(u, v);
+  Vec3 w = sofa_cross(u, v);
+  const double nw = sofa_norm(w), dt = sofa_dot(u, v);
   if (nw != 0) w *= std::atan2(nw, dt) / nw;
   return w;
 }
@@ -97,10 +91,10 @@ double angle_around_axis(const double* a, const double* b, unsigned axis) {
     if (j == axis) continue;
     ++count;
     const Vec3 w = vector_angle(column(Ma, j), column(Mb, j));
-    if (dot3(w, W) < 0)
-      angle -= norm3(w);
+    if (sofa_dot(w, W) < 0)
+      angle -= sofa_norm(w);
     else
-      angle += norm3(w);
+      angle += sofa_norm(w);
   }
   return angle / count;
 }
