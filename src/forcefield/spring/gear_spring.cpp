@@ -39,13 +39,8 @@ std::string parse_gear_springs(std::string_view text, std::vector<GearSpring>& o
     if (!in.next(a) || !in.next(b) || !in.next(c) || !in.next(d) || !to_unsigned(a, s.p1) || !to_unsigned(b, s.m1) ||
         !to_unsigned(c, s.p2) || !to_unsigned(d, s.m2))
       return where + ": BEGIN_SPRING must be followed by four frame indices (pivot1 gear1 pivot2 gear2)";
-    auto numbers = [&](std::string_view key, std::initializer_list<double*> slots) -> std::string {
-      for (double* v : slots) {
-        std::string_view t;
-        if (!in.next(t)) return where + ": " + std::string(key) + " needs " + std::to_string(slots.size()) + " numbers";
-        if (!to_double(t, *v)) return where + ": " + std::string(key) + " expects numbers, found '" + std::string(t) + "'";
-      }
-      return "";
+    auto numbers = [&](std::string_view key, std::initializer_list<double*> slots) {
+      return spring_text::read_numbers(in, where, key, slots);
     };
     bool closed = false;
     while (in.next(tok)) {

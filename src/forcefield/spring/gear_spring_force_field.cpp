@@ -17,18 +17,9 @@ std::vector<MechanicalState*> GearSpringForceField::states() const {
 
 void GearSpringForceField::init() {
   ready_ = false;
-  MechanicalState* local = node() ? node()->get_mechanical_state() : nullptr;
-  s1_ = object1 ? object1.get() : local;
-  s2_ = object2 ? object2.get() : local;
-  if (!s1_ || !s2_) {
-    msg_error("no mechanical state found (object1/object2 or the node's state)");
-    set_state(ComponentState::invalid);
-    return;
-  }
-  if (!mstate) mstate.set(s1_);
-  if (s1_->state_type() != StateType::rigid3 || s2_->state_type() != StateType::rigid3) {
-    msg_error(std::string("object1 and object2 must be Rigid3d states (object1 is ") + s1_->info().name +
-              ", object2 " + s2_->info().name + ")");
+  if (!bind_interaction_states(*this, object1, object2, s1_, s2_)) return;
+  if (s1_->state_type() != StateType::rigid3) {
+    msg_error(std::string("object1 and object2 must be Rigid3d states (they are ") + s1_->info().name + ")");
     set_state(ComponentState::invalid);
     return;
   }

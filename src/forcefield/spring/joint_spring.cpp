@@ -47,14 +47,8 @@ std::string parse_joint_springs(std::string_view text, std::vector<JointSpring>&
     if (!in.next(a) || !in.next(b) || !to_unsigned(a, s.m1) || !to_unsigned(b, s.m2))
       return where + ": BEGIN_SPRING must be followed by two frame indices (non-negative integers)";
     // Reads n numbers after keyword `key` into the given slots.
-    auto numbers = [&](std::string_view key, std::initializer_list<double*> slots) -> std::string {
-      for (double* d : slots) {
-        std::string_view t;
-        if (!in.next(t)) return where + ": " + std::string(key) + " needs " + std::to_string(slots.size()) + " numbers";
-        if (!to_double(t, *d))
-          return where + ": " + std::string(key) + " expects numbers, found '" + std::string(t) + "'";
-      }
-      return "";
+    auto numbers = [&](std::string_view key, std::initializer_list<double*> slots) {
+      return spring_text::read_numbers(in, where, key, slots);
     };
     bool closed = false;
     while (in.next(tok)) {

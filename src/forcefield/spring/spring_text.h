@@ -3,6 +3,8 @@
 #pragma once
 
 #include <charconv>
+#include <initializer_list>
+#include <string>
 #include <string_view>
 
 namespace sinew::spring_text {
@@ -33,6 +35,18 @@ inline bool to_unsigned(std::string_view t, unsigned& v) {
   if (!t.empty() && t.front() == '+') t.remove_prefix(1);
   const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
   return r.ec == std::errc() && r.ptr == t.data() + t.size();
+}
+
+// Reads one number per slot after keyword `key`; "" on success, else what is
+// wrong, prefixed by `where` (the spring).
+inline std::string read_numbers(Tokens& in, const std::string& where, std::string_view key,
+                                std::initializer_list<double*> slots) {
+  for (double* d : slots) {
+    std::string_view t;
+    if (!in.next(t)) return where + ": " + std::string(key) + " needs " + std::to_string(slots.size()) + " numbers";
+    if (!to_double(t, *d)) return where + ": " + std::string(key) + " expects numbers, found '" + std::string(t) + "'";
+  }
+  return "";
 }
 
 }  // namespace sinew::spring_text
