@@ -40,11 +40,13 @@ struct ConstraintBlock {
     unilateral_friction,  // 3 rows (n, t, s): Coulomb cone with coefficient mu
     bilateral_n,          // `rows` rows: f -= W_b⁻¹ d through an LDLᵀ of W_b kept in *factor
     stopper,              // 1 row: the free value d − W_jj f kept within [lo, hi]; f starts at 0
+    augmented_friction,   // 3 rows (n, t, s): augmented Lagrangian steps −ε·d in the Coulomb cone
   };
   Kind kind = Kind::bilateral;
   int first = 0;   // first row
   int rows = 1;    // number of rows
-  double mu = 0;   // unilateral_friction
+  double mu = 0;   // unilateral_friction, augmented_friction
+  double epsilon = 0;  // augmented_friction: penalty factor of the steps [force/length]
   double load = 1; // bilateral3
   double tolerance = 0;      // own tolerance (0: the solver's)
   double* warm = nullptr;    // previous forces: read at init, written at store (null: none)

@@ -80,6 +80,42 @@ TEST(ConstraintBlocks, FrictionStaysInTheCoulombCone) {
   EXPECT_DOUBLE_EQ(p.f[1], -0.2);
 }
 
+// SOFA's augmented Lagrangian law (AugmentedLagrangianResolutionWithFriction):
+// steps of −ε·d whatever W, the tangential step kept inside the cone, else
+// replaced by μ·ε·d_n along the slip.
+TEST(ConstraintBlocks, AugmentedLagrangianStepsByEpsilon) {
+  ConstraintProblem p = problem(3, {4, 0, 0, 0, 4, 0, 0, 0, 4}, {-0.1, 0.02, 0});
+  bool active = false;
+  ConstraintBlock b;
+  b.kind = ConstraintBlock::Kind::augmented_friction;
+  b.rows = 3;
+  b.mu = 0.5;
+  b.epsilon = 10;
+  b.active = &active;
+  solve_block(b, p);
+  // fn = 0 − (−0.1)·10 = 1; ft = −0.02·10 = −0.2, inside the cone (0.2 < 0.5·1).
+  EXPECT_DOUBLE_EQ(p.f[0], 1.0);
+  EXPECT_DOUBLE_EQ(p.f[1], -0.2);
+  EXPECT_DOUBLE_EQ(p.f[2], 0.0);
+  resolution_store(b, p.f.data());
+  EXPECT_TRUE(active);
+  // Sliding by 0.3: ft = −3 is outside the cone (3 > 0.5·fn), so SOFA steps f_t by
+  // −μ·d_n·ε·d_t/|d_t| from its value before (0) instead: with d_n = −0.1 that is +0.5
+  // (along the slip: SOFA's formula, kept as it is).
+  p = problem(3, {4, 0, 0, 0, 4, 0, 0, 0, 4}, {-0.1, 0.3, 0});
+  solve_block(b, p);
+  EXPECT_DOUBLE_EQ(p.f[0], 1.0);
+  EXPECT_DOUBLE_EQ(p.f[1], -(0.5 * -0.1 * 10 * 0.3 / 0.3));  // f_t −= μ·d_n·ε·d_t/|d_t|, from f_t = 0
+  EXPECT_DOUBLE_EQ(p.f[2], 0.0);
+  // Separating: every force back to 0.
+  p = problem(3, {4, 0, 0, 0, 4, 0, 0, 0, 4}, {0.1, 0.3, 0});
+  p.f[0] = 0.5;
+  p.f[1] = 0.2;
+  solve_block(b, p);
+  EXPECT_EQ(p.f[0], 0.0);
+  EXPECT_EQ(p.f[1], 0.0);
+}
+
 // A point of mass 2 resting on a fixed point through a bilateral constraint:
 // one step of FreeMotionAnimationLoop with UncoupledConstraintCorrection puts
 // it back exactly (W = dt/m, dx = C·Jᵀλ, x = xf + dt·dx, v = vf + dx).

@@ -48,6 +48,7 @@ const std::vector<std::string> kScenes = {
     "Component/Constraint/Lagrangian/NonBuiltConstraintCorrection.scn",
     "Component/Constraint/Lagrangian/PreconditionedConjugateResidual.scn",
     "Component/Constraint/Lagrangian/SlidingLagrangianConstraint.scn",
+    "Demos/fallingBeamAugmentedLagrangianCollision.scn",
 };
 
 struct Outcome {
@@ -105,7 +106,9 @@ TEST(LagrangianExamples, ListCoversBothFolders) {
       if (e.path().extension() == ".scn") found.push_back(std::string(dir) + "/" + e.path().filename().string());
   }
   std::sort(found.begin(), found.end());
-  std::vector<std::string> listed = kScenes;
+  std::vector<std::string> listed;
+  for (const std::string& scene : kScenes)  // the demos outside the two folders are extra
+    if (scene.rfind("Demos/", 0) != 0) listed.push_back(scene);
   std::sort(listed.begin(), listed.end());
   EXPECT_EQ(found, listed);
 }

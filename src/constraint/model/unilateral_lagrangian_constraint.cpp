@@ -14,7 +14,7 @@ void UnilateralLagrangianConstraint::clear(std::size_t reserve) {
 }
 
 void UnilateralLagrangianConstraint::add_contact(double mu, const Vec3& normal, double distance, int m1, int m2,
-                                                 std::int64_t id, std::int64_t local_id) {
+                                                 std::int64_t id, std::int64_t local_id, double epsilon) {
   Contact c;
   c.m1 = m1;
   c.m2 = m2;
@@ -28,6 +28,7 @@ void UnilateralLagrangianConstraint::add_contact(double mu, const Vec3& normal, 
   c.t = (-normal).cross(c.s);
   c.distance = distance;
   c.mu = mu;
+  c.epsilon = epsilon;
   c.id = id;
   c.local_id = local_id;
   contacts_.push_back(c);
@@ -115,9 +116,10 @@ void UnilateralLagrangianConstraint::constraint_resolutions(const ConstraintPara
     ConstraintBlock b;
     b.first = c.row;
     if (c.mu > 0.0) {
-      b.kind = ConstraintBlock::Kind::unilateral_friction;
+      b.kind = augmented ? ConstraintBlock::Kind::augmented_friction : ConstraintBlock::Kind::unilateral_friction;
       b.rows = 3;
       b.mu = c.mu;
+      b.epsilon = c.epsilon;
       b.tolerance = custom_tolerance;
       b.active = &c.active;
     } else {

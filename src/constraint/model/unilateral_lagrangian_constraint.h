@@ -7,6 +7,11 @@
 // J = −n/−t/−s on object1's point and +n/+t/+s on object2's. Violation at the
 // free positions, with SOFA's rule for the tangential part (the motion since
 // the collision, cut at the moment of first contact).
+//
+// With `augmented` set it is SOFA's AugmentedLagrangianConstraint (what the
+// AugmentedLagrangianResponseConstraint response creates): the same rows, the
+// frictional blocks solved by augmented Lagrangian steps of factor epsilon
+// (frictionless blocks are solved as unilateral ones, as SOFA does).
 #pragma once
 
 #include <cstdint>
@@ -24,6 +29,7 @@ class UnilateralLagrangianConstraint final : public LagrangianConstraint {
     Vec3 n, t, s;           // normal (1 → 2) and tangent frame
     double distance = 0;    // distance to keep along n
     double mu = 0;          // friction coefficient (0: one row)
+    double epsilon = 0;     // augmented Lagrangian penalty factor (augmented only)
     std::int64_t id = 0;    // persistent id (LCP warm start)
     std::int64_t local_id = 0;
     int row = 0;            // first row this step
@@ -35,11 +41,13 @@ class UnilateralLagrangianConstraint final : public LagrangianConstraint {
 
   // Tolerance of each contact's block (0: the solver's).
   double custom_tolerance = 0.0;
+  // Augmented Lagrangian law for the frictional blocks.
+  bool augmented = false;
 
   void clear(std::size_t reserve);
   // A contact at the current positions of points m1 (object1) and m2 (object2).
   void add_contact(double mu, const Vec3& normal, double distance, int m1, int m2, std::int64_t id,
-                   std::int64_t local_id);
+                   std::int64_t local_id, double epsilon = 0.0);
   const std::vector<Contact>& contacts() const { return contacts_; }
   // LCP warm start: false during the first solve after the constraint was made.
   bool yet_integrated = false;

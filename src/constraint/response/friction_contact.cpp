@@ -3,6 +3,10 @@
 // contact points of both sides (Coulomb friction, coefficient `mu`, set by
 // responseParams="mu=…"; 0.8 by default).
 //
+// AugmentedLagrangianResponseConstraint is the same contact with SOFA's
+// AugmentedLagrangianConstraint: mu (0 by default) and epsilon (the penalty
+// factor of the augmented Lagrangian steps, 0 by default) from responseParams.
+//
 // Each step: outputs closer than 1e-8 (squared, both points) to a kept one
 // are dropped; the mappers place the contact points on their elements; each
 // kept output becomes a contact with distance d0 + r1 + r2 and a persistent
@@ -34,25 +38,28 @@ std::int64_t next_contact_serial() {
 
 class FrictionContact final : public Contact {
  public:
-  FrictionContact(CollisionModelBase& m1, CollisionModelBase& m2, const Intersection& method)
+  FrictionContact(CollisionModelBase& m1, CollisionModelBase& m2, const Intersection& method, bool augmented)
       : Contact(m1, m2, method),
+        augmented_(augmented),
+        mu_(augmented ? 0.0 : 0.8),
         self_(&m1 == &m2),
         serial_(next_contact_serial()),
         mapper1_(m1, m1.name.value() + "-constraints"),
         mapper2_(m2, m2.name.value() + "-constraints") {}
 
   bool set_param(const std::string& name, const std::string& value, std::string& error) override {
-    double v = 0;
-    if (name == "mu" || name == "tol") {
-      if (!parse::read(value, v)) {
-        error = "FrictionContactConstraint: cannot read " + name + " = \"" + value + "\"";
-        return false;
-      }
-      (name == "mu" ? mu_ : tol_) = v;
-      return true;
+    const char* response = augmented_ ? "AugmentedLagrangianResponseConstraint" : "FrictionContactConstraint";
+    double* slot = name == "mu" ? &mu_ : name == "tol" ? &tol_ : (augmented_ && name == "epsilon") ? &epsilon_ : nullptr;
+    if (!slot) {
+      error = std::string(response) + " has no parameter '" + name + "' (" + (augmented_ ? "mu, epsilon, tol" : "mu, tol") +
+              ")";
+      return false;
     }
-    error = "FrictionContactConstraint has no parameter '" + name + "' (mu, tol)";
-    return false;
+    if (!parse::read(value, *slot)) {
+      error = std::string(response) + ": cannot read " + name + " = \"" + value + "\"";
+      return false;
+    }
+    return true;
   }
 
   void set_detection_outputs(std::vector<DetectionOutput>& outputs) override {
@@ -76,8 +83,9 @@ class FrictionContact final : public Contact {
       MechanicalState* s2 = self_ ? s1 : mapper2_.state();
       detached_ = std::make_unique<UnilateralLagrangianConstraint>(*s1, *s2);
       detached_->name.set(m1_->name.value() + "-" + m2_->name.value());
-      detached_->set_type("UnilateralLagrangianConstraint", "Vec3d");
+      detached_->set_type(augmented_ ? "AugmentedLagrangianConstraint" : "UnilateralLagrangianConstraint", "Vec3d");
       detached_->custom_tolerance = tol_;
+      detached_->augmented = augmented_;
       detached_->mark_initialised();
     }
     UnilateralLagrangianConstraint& c = constraint_ ? *constraint_ : *detached_;
@@ -107,7 +115,7 @@ class FrictionContact final : public Contact {
     for (std::size_t k = 0; k < kept_.size(); ++k) {
       const DetectionOutput& o = outputs[kept_[k]];
       c.add_contact(mu_, o.normal, mapped_[k].distance, static_cast<int>(mapped_[k].i1),
-                    static_cast<int>(mapped_[k].i2), cantor(o.id, serial_), o.id);
+                    static_cast<int>(mapped_[k].i2), cantor(o.id, serial_), o.id, epsilon_);
     }
     constraint_ = attach_response(where, constraint_, detached_);
   }
@@ -129,9 +137,11 @@ class FrictionContact final : public Contact {
     unsigned i1, i2;
     double distance;
   };
+  bool augmented_;
+  double mu_;
   bool self_;
   std::int64_t serial_;
-  double mu_ = 0.8, tol_ = 0.0;
+  double tol_ = 0.0, epsilon_ = 0.0;
   bool warned_stiffness_ = false;
   ContactMapper mapper1_, mapper2_;
   UnilateralLagrangianConstraint* constraint_ = nullptr;  // owned by the graph once attached
@@ -148,7 +158,11 @@ void register_friction_contact(Registry& r) {
   (void)r;
   add_contact_response("FrictionContactConstraint",
                        [](CollisionModelBase& a, CollisionModelBase& b, const Intersection& m) -> std::unique_ptr<Contact> {
-                         return std::make_unique<FrictionContact>(a, b, m);
+                         return std::make_unique<FrictionContact>(a, b, m, false);
+                       });
+  add_contact_response("AugmentedLagrangianResponseConstraint",
+                       [](CollisionModelBase& a, CollisionModelBase& b, const Intersection& m) -> std::unique_ptr<Contact> {
+                         return std::make_unique<FrictionContact>(a, b, m, true);
                        });
 }
 

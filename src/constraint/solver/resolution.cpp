@@ -74,6 +74,8 @@ bool resolution_init(ConstraintBlock& b, const ConstraintProblem& p, double* f) 
       b.w[1] = 1.0 / b.w[0];
       f[j] = 0.0;
       return true;
+    case ConstraintBlock::Kind::augmented_friction:
+      return true;  // no warm start (SOFA's previous-force container is never given)
   }
   return true;
 }
@@ -118,6 +120,28 @@ void resolution_solve(const ConstraintBlock& b, const ConstraintProblem& p, doub
       BlockFactor& F = *b.factor;
       F.step = F.ldlt.solve(Eigen::Map<const Eigen::VectorXd>(d + j, b.rows));
       for (int r = 0; r < b.rows; ++r) f[j + r] -= F.step[r];
+      return;
+    }
+    case ConstraintBlock::Kind::augmented_friction: {
+      // SOFA's AugmentedLagrangianResolutionWithFriction: steps of −ε·d; outside
+      // the cone the tangential step is along the slip, scaled by μ·ε·d_n.
+      const double eps = b.epsilon;
+      f[j] -= d[j] * eps;
+      if (f[j] < 0) {
+        f[j] = f[j + 1] = f[j + 2] = 0.0;
+        return;
+      }
+      const double ft0 = f[j + 1] - d[j + 1] * eps;
+      const double ft1 = f[j + 2] - d[j + 2] * eps;
+      const double criteria = std::sqrt(std::pow(ft0, 2.0) + std::pow(ft1, 2.0)) - b.mu * std::fabs(f[j]);
+      if (criteria < 0) {
+        f[j + 1] = ft0;
+        f[j + 2] = ft1;
+      } else {
+        const double norm_s = std::sqrt(std::pow(d[j + 1], 2.0) + std::pow(d[j + 2], 2.0));
+        f[j + 1] -= b.mu * d[j] * eps * d[j + 1] / norm_s;
+        f[j + 2] -= b.mu * d[j] * eps * d[j + 2] / norm_s;
+      }
       return;
     }
     case ConstraintBlock::Kind::stopper: {
