@@ -36,8 +36,18 @@ void gather(Node& root, GraphView& v) {
 void add_interaction_forces(Node& node) {
   MechParams p;
   p.f = kExternalForce;
-  for (ForceField* ff : node.interaction_force_fields)
-    if (ff->state() == ComponentState::valid) ff->add_force(p);
+  for (ForceField* ff : node.interaction_force_fields) {
+    if (ff->state() != ComponentState::valid) continue;
+    // externalForce is empty between steps (and not sized on demand like the other
+    // vectors): sized here for the force fields that write into it, as SOFA's
+    // addForce resizes f to x.
+    for (MechanicalState* s : ff->states()) {
+      if (!s) continue;
+      const std::size_t n = s->size() * static_cast<std::size_t>(s->info().deriv_width);
+      if (s->read(kExternalForce).size() < n) s->write(kExternalForce).resize(n, 0.0);
+    }
+    ff->add_force(p);
+  }
 }
 
 void solve_node(Node& node, double dt) {
