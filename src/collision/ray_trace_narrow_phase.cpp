@@ -44,8 +44,11 @@ void RayTraceNarrowPhase::find_pairs_volume(const TriangleOctreeCollisionModel& 
   const TriangleOctree& octree2 = m2.octree();
   const Aabb& box2 = m2.surface_box();
   const std::vector<Vec3>& normals1 = m1.vertex_normals();
+  const std::size_t n_points1 = m1.point_count();
   for (unsigned j = 0; j < m1.size(); ++j) {
     const Triangle& tri1 = m1.triangle(j);
+    // A triangle naming points the state does not have (reported by the model) casts nothing.
+    if (tri1[0] >= n_points1 || tri1[1] >= n_points1 || tri1[2] >= n_points1) continue;
     const int flags = m1.flags(j);
     unsigned vertex[3];
     int n_points = 0;

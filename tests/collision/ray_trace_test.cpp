@@ -238,6 +238,22 @@ TEST(TriangleOctreeCollisionModel, VertexNormalsLagOneDetectionAndLeaveOutTriang
   EXPECT_EQ(b.tetra->surface_box().min, Vec3(-1, -1, -1));
 }
 
+// Bad input: a triangle naming a point the state does not have is reported
+// by the model and casts no ray (no read past the positions).
+TEST(RayTraceNarrowPhase, TriangleBeyondThePointsCastsNothing) {
+  std::vector<Triangle> tris = tetra_triangles(true);
+  tris.push_back({0, 1, 9});
+  TwoBodies b = load_two_bodies(tris, false);
+  ASSERT_TRUE(b.tetra && b.box);
+  b.tetra->compute_bounding_tree(0);
+  b.box->compute_bounding_tree(0);
+  std::vector<DetectionOutput> out;
+  RayTraceNarrowPhase::find_pairs_volume(*b.tetra, *b.box, out);
+  EXPECT_EQ(out.size(), 1u);  // v0's contact, as without the bad triangle
+  RayTraceNarrowPhase::find_pairs_volume(*b.box, *b.tetra, out);
+  EXPECT_EQ(out.size(), 1u);
+}
+
 // End to end: in a pipeline, the tetrahedron's vertex inside the fixed box
 // gets a penalty contact pushing it out (along the vertex normal, towards -x -y -z).
 TEST(RayTraceNarrowPhase, PipelinePushesThePenetratingVertexOut) {

@@ -37,8 +37,9 @@ class TriangleOctreeCollisionModel final : public TriangleCollisionModel {
   const std::vector<Vec3>& vertex_normals() const { return vertex_normals_; }
   // Box of point 0 and the points of triangles 1 … (SOFA's single cube) [length].
   const Aabb& surface_box() const { return surface_box_; }
-  // Current position of point v.
+  // Current position of point v (v < point_count()).
   const Vec3& point(unsigned v) const { return x_[v]; }
+  std::size_t point_count() const { return x_.size(); }
 
  protected:
   bool init_model() override;
