@@ -10,7 +10,6 @@
 #include <functional>
 #include <map>
 #include <memory>
-#include <regex>
 #include <set>
 
 #include <oneapi/tbb/global_control.h>
@@ -434,44 +433,13 @@ int regress(const RegressArgs& a) {
                                                                                           : data.c_str());
     return 77;
   }
-  const std::string list_file = a.list.empty() ? data + "/examples/RegressionStateScenes.regression-tests" : a.list;
-  std::string err;
-  // SOFA's lists point at $REGRESSION_DIR/references/examples: the data folder plays that role.
-  regression::ListEnvironment env = regression::ListEnvironment::from_process();
-  if (!env.regression_dir) env.regression_dir = data;
-  auto list = regression::read_scene_list(list_file, env, &err);
-  if (!list) {
-    std::fprintf(stderr, "sinew regress: cannot read %s: %s\n", list_file.c_str(), err.c_str());
-    return 2;
-  }
-  for (const auto& p : list->problems) std::fprintf(stderr, "sinew regress: %s: %s\n", list_file.c_str(), p.c_str());
-  const runner::TestKind kind = list_file.find("Topology") != std::string::npos ? runner::TestKind::topology
-                                                                                 : runner::TestKind::state;
-  std::regex re;
-  if (!a.filter.empty()) {
-    try {
-      re = std::regex(a.filter);
-    } catch (const std::regex_error& e) {
-      std::fprintf(stderr, "sinew regress: bad --filter: %s\n", e.what());
-      return 2;
-    }
-  }
-  runner::RegressOptions opts;
-  opts.data_root = data;
-  opts.isolate = a.isolate;
-  opts.time_limit = a.time_limit;
-  int passed = 0, failed = 0;
-  for (const auto& entry : list->scenes) {
-    if (!a.filter.empty() && !std::regex_search(entry.scene, re)) continue;
-    const runner::RegressResult r = runner::regress_scene_isolated(*list, entry, kind, opts);
-    (r.passed ? passed : failed)++;
-    std::printf("%s  %-90s value %-12.6g eps %-8g %2d files %7.2fs%s%s\n", r.passed ? "PASS" : "FAIL",
-                entry.scene.c_str(), r.value, entry.epsilon, r.files, r.seconds, r.reason.empty() ? "" : "  ",
-                r.reason.c_str());
-    std::fflush(stdout);
-  }
-  std::printf("%d passed, %d failed\n", passed, failed);
-  return failed == 0 ? 0 : 1;
+  runner::RegressListArgs args;
+  args.list_file = a.list.empty() ? data + "/examples/RegressionStateScenes.regression-tests" : a.list;
+  args.filter = a.filter;
+  args.options.data_root = data;
+  args.options.isolate = a.isolate;
+  args.options.time_limit = a.time_limit;
+  return runner::regress_list(args);
 }
 
 }  // namespace sinew::cli

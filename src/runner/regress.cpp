@@ -7,8 +7,10 @@
 #include <chrono>
 #include <csignal>
 #include <cstring>
+#include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <regex>
 #include <unordered_map>
 #include <sstream>
 
@@ -214,6 +216,47 @@ RegressResult regress_scene_isolated(const regression::SceneList& list, const re
   r.seconds = std::strtod(lines[3].c_str(), nullptr);
   r.reason = text.substr(start);
   return r;
+}
+
+}  // namespace sinew::runner
+
+namespace sinew::runner {
+
+int regress_list(const RegressListArgs& args) {
+  const std::string& data = args.options.data_root;
+  std::string err;
+  // SOFA's lists point at $REGRESSION_DIR/references/examples: the data folder plays that role.
+  regression::ListEnvironment env = regression::ListEnvironment::from_process();
+  if (!env.regression_dir) env.regression_dir = data;
+  auto list = regression::read_scene_list(args.list_file, env, &err);
+  if (!list) {
+    std::fprintf(stderr, "sinew regress: cannot read %s: %s\n", args.list_file.c_str(), err.c_str());
+    return 2;
+  }
+  for (const auto& p : list->problems)
+    std::fprintf(stderr, "sinew regress: %s: %s\n", args.list_file.c_str(), p.c_str());
+  const TestKind kind = args.list_file.find("Topology") != std::string::npos ? TestKind::topology : TestKind::state;
+  std::regex re;
+  if (!args.filter.empty()) {
+    try {
+      re = std::regex(args.filter);
+    } catch (const std::regex_error& e) {
+      std::fprintf(stderr, "sinew regress: bad --filter: %s\n", e.what());
+      return 2;
+    }
+  }
+  int passed = 0, failed = 0;
+  for (const auto& entry : list->scenes) {
+    if (!args.filter.empty() && !std::regex_search(entry.scene, re)) continue;
+    const RegressResult r = regress_scene_isolated(*list, entry, kind, args.options);
+    (r.passed ? passed : failed)++;
+    std::printf("%s  %-90s value %-12.6g eps %-8g %2d files %7.2fs%s%s\n", r.passed ? "PASS" : "FAIL",
+                entry.scene.c_str(), r.value, entry.epsilon, r.files, r.seconds, r.reason.empty() ? "" : "  ",
+                r.reason.c_str());
+    std::fflush(stdout);
+  }
+  std::printf("%d passed, %d failed\n", passed, failed);
+  return failed == 0 ? 0 : 1;
 }
 
 }  // namespace sinew::runner

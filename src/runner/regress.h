@@ -35,4 +35,16 @@ RegressResult regress_scene(const regression::SceneList& list, const regression:
 RegressResult regress_scene_isolated(const regression::SceneList& list, const regression::SceneEntry& entry,
                                      TestKind kind, const RegressOptions& options);
 
+// A whole list run as `sinew regress` does: each scene of `list_file` whose path matches
+// `filter` (a regex; empty: all), a PASS/FAIL line each and a summary on stdout.
+// Returns 0 when all passed, 1 when one failed, 2 when the list or the filter is
+// unreadable (message on stderr). The list's kind (state or topology) comes from its
+// name, as SOFA's lists are named.
+struct RegressListArgs {
+  std::string list_file;
+  std::string filter;
+  RegressOptions options;  // data_root required
+};
+int regress_list(const RegressListArgs& args);
+
 }  // namespace sinew::runner

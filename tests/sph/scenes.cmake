@@ -6,7 +6,7 @@ set(sph_examples ${SINEW_DATA_DIR}/plugins/SofaSphFluid/examples)
 foreach(scene SPHFluidForceField.scn SPHFluidForceField_benchmarks.scn SPHFluidSurfaceMapping.scn
               SPHParticleSink.scn SPHParticleSource.scn)
   add_test(NAME sofa-sph:${scene}
-           COMMAND sinew regress --data ${SINEW_DATA_DIR} --list ${sph_examples}/RegressionStateScenes.regression-tests
+           COMMAND ${sinew_regress_command} --data ${SINEW_DATA_DIR} --list ${sph_examples}/RegressionStateScenes.regression-tests
                    --filter "^${scene}$")
   set_tests_properties(sofa-sph:${scene} PROPERTIES SKIP_RETURN_CODE 77 LABELS sofa TIMEOUT 900)
 endforeach()
