@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/alloc_check.h"
+#include "core/rigid_mass_text.h"
 
 namespace sinew::parse {
 
@@ -336,6 +337,26 @@ bool read_rigid3_mass(std::string_view text, std::vector<double>& v) {
   for (int k = 0; k < 2; ++k)
     if (const int r = stream_number(text, i, v); r <= 0) return r == 0;
   return stream_mat3(text, i, v) >= 0;  // a closing ']' and anything after it are not read
+}
+
+bool read_rigid3_mass_list(std::string_view text, std::vector<double>& v) {
+  v.clear();
+  std::size_t i = 0;
+  const std::size_t n = text.size();
+  std::vector<double> one;
+  while (true) {
+    one.clear();
+    int r = stream_number(text, i, one);
+    if (r == 0) return true;  // the end, between two masses
+    if (r > 0) r = stream_number(text, i, one);
+    if (r > 0) r = stream_mat3(text, i, one);
+    if (r <= 0) return false;  // an incomplete or unreadable mass ends the list
+    v.insert(v.end(), one.begin(), one.end());
+    // SOFA's Mat reader, after the last row: blanks and at most one ']'.
+    while (i < n && (text[i] == ' ' || text[i] == '\n' || text[i] == ']')) {
+      if (text[i++] == ']') break;
+    }
+  }
 }
 
 bool read(std::string_view text, Mat3& m) {

@@ -4,6 +4,7 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "mass/diagonal_rigid_mass.h"
 #include "mass/mesh_geometry.h"
 
 namespace sinew {
@@ -252,13 +253,18 @@ void register_diagonal_mass(Registry& r) {
   info.description = "lumped mass per vertex from the element lengths, areas or volumes of the topology";
   // SOFA registers DiagonalMass<DataTypes, GeometricalTypes> (the geometry type defaults to the
   // state's): "Vec3d,Vec3d", "Vec2d,Vec2d", "Vec2d,Vec3d", "Vec1d,Vec1d", "Vec1d,Vec2d",
-  // "Vec1d,Vec3d" (Rigid variants are not supported here). The one-parameter names are the same
-  // classes; the geometry comes from `geometryState` or the topology's state either way.
+  // "Vec1d,Vec3d", "Rigid3d,Rigid3d" (Rigid2d is not used by SOFA's examples and not
+  // supported here). The one-parameter names are the same classes; the geometry comes from
+  // `geometryState` or the topology's state either way. Rigid frames are another class: their
+  // masses are given, not computed from the topology.
   info.templates = {"Vec1d", "Vec2d", "Vec3d", "Vec1d,Vec1d", "Vec1d,Vec2d", "Vec1d,Vec3d",
-                    "Vec2d,Vec2d", "Vec2d,Vec3d", "Vec3d,Vec3d"};
+                    "Vec2d,Vec2d", "Vec2d,Vec3d", "Vec3d,Vec3d", "Rigid3d", "Rigid3d,Rigid3d"};
   info.default_template = "Vec3d";
   info.requirement = Requirement::state;
-  info.create = creator<DiagonalMass>();
+  info.create = [](const std::string& t) -> std::unique_ptr<Component> {
+    if (t.rfind("Rigid3d", 0) == 0) return std::make_unique<DiagonalRigidMass>();
+    return std::make_unique<DiagonalMass>();
+  };
   r.add(std::move(info));
 }
 

@@ -11,7 +11,7 @@
 #include "collision/model/triangle_octree_collision_model.h"
 #include "collision/ray_trace_narrow_phase.h"
 #include "collision/response/penalty_contact.h"
-#include "collision/triangle_octree.h"
+#include "math/triangle_octree.h"
 #include "state/mechanical_object.h"
 #include "test_scene.h"
 

@@ -393,6 +393,11 @@ const std::vector<ForceFieldCase> kCases = {
           ff("UniformMass", "vertexMass='2 1 1 0 0 0 2 0 0 0 3'"), kGravity),
      kEnergy | kStiffness},
     {"DiagonalMass", tetras(ff("DiagonalMass", "massDensity='3'"), kGravity), kEnergy | kStiffness},
+    {"DiagonalMass_Rigid3d",
+     node("<MechanicalObject name='dofs' template='Rigid3d' position='0 0 0 0 0 0 1  1 2 0 0 0 0.6 0.8'/>" +
+          ff("DiagonalMass", "template='Rigid3d,Rigid3d' vertexMass='2 1 [1 0.1 0,0.1 2 0,0 0 3] 0.5 1 1 0 0 0 1 0 0 0 4'"),
+          kGravity),
+     kEnergy | kStiffness},
     {"MeshMatrixMass", tetras(ff("MeshMatrixMass", "massDensity='3'"), kGravity), kStiffness},
     {"FEMMass_Tetrahedron", tetras("<NodalMassDensity property='3'/>" + ff("FEMMass"), kGravity), kEnergy | kStiffness},
     {"FEMMass_Hexahedron",

@@ -80,6 +80,12 @@ const std::vector<MassCase> kCases = {
      kDiagonal | kTotal},
     {"DiagonalMass", tetras(mass("DiagonalMass", "massDensity='3'")), kDiagonal | kTotal},
     {"DiagonalMass_Vec2d", triangles2d(mass("DiagonalMass", "massDensity='3'")), kDiagonal | kTotal},
+    // Two frames of different masses and a non-diagonal inertia (MeshTopology of the frames, as SOFA's example).
+    {"DiagonalMass_Rigid3d",
+     node("<MechanicalObject name='dofs' template='Rigid3d' position='0 0 0 0 0 0 1  1 2 0 0 0 0.6 0.8'/>"
+          "<MeshTopology name='topo' src='@dofs'/>" +
+          mass("DiagonalMass", "template='Rigid3d,Rigid3d' vertexMass='2 1 [1 0.1 0,0.1 2 0,0 0 3] 0.5 1 1 0 0 0 1 0 0 0 4'")),
+     kDiagonal | kTotal},
     {"DiagonalMass_Vec1d", edges1d(mass("DiagonalMass", "massDensity='3'")), kDiagonal | kTotal},
     {"MeshMatrixMass", tetras(mass("MeshMatrixMass", "massDensity='3'")), kTotal},
     {"MeshMatrixMass_lumped", tetras(mass("MeshMatrixMass", "massDensity='3' lumping='true'")), kDiagonal | kTotal},

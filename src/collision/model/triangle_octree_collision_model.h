@@ -19,7 +19,7 @@
 
 #include "collision/cube_tree.h"
 #include "collision/model/triangle_collision_model.h"
-#include "collision/triangle_octree.h"
+#include "math/triangle_octree.h"
 
 namespace sinew {
 

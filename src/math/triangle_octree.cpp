@@ -1,4 +1,4 @@
-#include "collision/triangle_octree.h"
+#include "math/triangle_octree.h"
 
 #include <cmath>
 #include <limits>

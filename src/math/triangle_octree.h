@@ -1,6 +1,6 @@
 // TriangleOctree: SOFA's octree of triangles for ray casting
-// (sofa::helper::TriangleOctree, used by TriangleOctreeCollisionModel and
-// RayTraceNarrowPhase).
+// (sofa::helper::TriangleOctree, used by TriangleOctreeCollisionModel,
+// RayTraceNarrowPhase and RandomPointDistributionInSurface).
 //
 // The octree spans the fixed cube [-800, 800]³ (SOFA's CUBE_SIZE; triangles
 // not inside it entirely are left out, counted by `outside()`). Each triangle
@@ -15,16 +15,17 @@
 // insertion order: rebuilding every step allocates nothing once warm.
 #pragma once
 
+#include <array>
 #include <span>
 #include <vector>
 
 #include "math/types.h"
-#include "core/roles.h"
 
 namespace sinew {
 
 class TriangleOctree {
  public:
+  using Triangle = std::array<unsigned, 3>;  // point indices (core's Triangle)
   static constexpr double kCubeSize = 800;  // half the side of the root cell [length]
 
   struct TraceResult {
