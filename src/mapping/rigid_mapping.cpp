@@ -1,5 +1,7 @@
 #include "mapping/rigid_mapping.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
 
 #include "core/registry.h"
@@ -33,8 +35,8 @@ bool RigidMapping::init_mapping() {
               quote_value(geometric_stiffness.get()));
     return false;
   }
-  if (gs_ == 2 || (gs_ == 1 && !rigid3())) {
-    msg_error("this geometricStiffness option is not supported (only None, and Exact for Rigid3d)");
+  if (gs_ != 0 && !rigid3()) {
+    msg_error("geometricStiffness Exact and Stabilized are for Rigid3d inputs only (SOFA has none in 2D)");
     return false;
   }
   if (!filename.value().empty()) {
@@ -256,11 +258,65 @@ void RigidMapping::apply_jt(int f, int role) {
   }
 }
 
-void RigidMapping::apply_djt(int df, int dx, double k) {
-  if (gs_ != 1 || !out_ || !rigid3()) return;
+void RigidMapping::stabilized_blocks() {
   const std::vector<double>& child_force = out_->read(kForce);
+  const std::size_t frames = in_size();
+  blocks_.assign(frames * 9, 0.0);
+  has_children_.assign(frames, 0);
+  const std::size_t n = std::min(rigid_.size(), child_force.size() / dw_);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* f = &child_force[i * dw_];  // the linear part for frames
+    const double* p = &rotated_[i * 3];
+    // SOFA's crossProductMatrix(f) · crossProductMatrix(p), summed k = 0, 1, 2.
+    const double A[3][3] = {{0, -f[2], f[1]}, {f[2], 0, -f[0]}, {-f[1], f[0], 0}};
+    const double B[3][3] = {{0, -p[2], p[1]}, {p[2], 0, -p[0]}, {-p[1], p[0], 0}};
+    if (rigid_[i] >= frames) continue;  // a frame removed since the points were attached
+    double* blk = &blocks_[rigid_[i] * 9];
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) blk[a * 3 + b] += A[a][0] * B[0][b] + A[a][1] * B[1][b] + A[a][2] * B[2][b];
+    has_children_[rigid_[i]] = 1;
+  }
+  for (std::size_t r = 0; r < frames; ++r) {
+    if (!has_children_[r]) continue;
+    double* blk = &blocks_[r * 9];
+    for (int a = 0; a < 3; ++a)  // SOFA's symmetrize(): (a + b) · 0.5 on both sides
+      for (int b = a + 1; b < 3; ++b) blk[a * 3 + b] = blk[b * 3 + a] = (blk[a * 3 + b] + blk[b * 3 + a]) * 0.5;
+    // Negative semi-definite projection: positive eigenvalues set to zero, A = Q·diag(w)·Qᵀ.
+    Mat3 m;
+    for (int k = 0; k < 9; ++k) m(k / 3, k % 3) = blk[k];
+    Eigen::SelfAdjointEigenSolver<Mat3> eig(m);
+    if (eig.info() != Eigen::Success) continue;
+    Vec3 w = eig.eigenvalues();
+    bool modified = false;
+    for (int c = 0; c < 3; ++c)
+      if (w[c] > 0) {
+        w[c] = 0;
+        modified = true;
+      }
+    if (!modified) continue;
+    const Mat3& Q = eig.eigenvectors();
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        blk[a * 3 + b] = Q(a, 0) * w[0] * Q(b, 0) + Q(a, 1) * w[1] * Q(b, 1) + Q(a, 2) * w[2] * Q(b, 2);
+  }
+}
+
+void RigidMapping::apply_djt(int df, int dx, double k) {
+  if (gs_ == 0 || !out_ || !rigid3()) return;
   std::vector<double>& f = in_deriv_write(df, kDforce);
   const std::vector<double>& d = in_deriv_write(dx, kDx);
+  if (gs_ == 2) {  // SOFA assembles the blocks, then adds k·K·dx
+    stabilized_blocks();
+    for (std::size_t r = 0; r < has_children_.size(); ++r) {
+      if (!has_children_[r]) continue;
+      const double* blk = &blocks_[r * 9];
+      const double* w = &d[r * 6 + 3];
+      double* t = &f[r * 6 + 3];
+      for (int a = 0; a < 3; ++a) t[a] += (blk[a * 3] * w[0] + blk[a * 3 + 1] * w[1] + blk[a * 3 + 2] * w[2]) * k;
+    }
+    return;
+  }
+  const std::vector<double>& child_force = out_->read(kForce);
   const std::size_t n = std::min(rigid_.size(), child_force.size() / dw_);
   for (std::size_t i = 0; i < n; ++i) {
     const double* fi = &child_force[i * dw_];  // the linear part for frames
@@ -275,6 +331,21 @@ void RigidMapping::apply_djt(int df, int dx, double k) {
     t[1] -= (fi[2] * c0 - fi[0] * c2) * k;
     t[2] -= (fi[0] * c1 - fi[1] * c0) * k;
   }
+}
+
+bool RigidMapping::build_geometric_stiffness(MatrixSink& K) {
+  if (gs_ == 0 || !out_) return true;
+  if (gs_ == 1) return false;  // not symmetric: matrix-free only
+  stabilized_blocks();
+  const MechanicalState* s = in_[0];
+  // All nine entries of each frame with points, zeros included: the pattern must not depend
+  // on the values (assembled systems reuse it).
+  for (std::size_t r = 0; r < has_children_.size(); ++r) {
+    if (!has_children_[r]) continue;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) K.add(s, r * 6 + 3 + a, s, r * 6 + 3 + b, blocks_[r * 9 + a * 3 + b]);
+  }
+  return true;
 }
 
 bool RigidMapping::has_jt_entry() const { return rigid3() && out_ && out_->state_type() == StateType::vec3; }

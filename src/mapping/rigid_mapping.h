@@ -8,8 +8,11 @@
 // rigidIndexPerPoint[i] when that list has one entry per point, else `index`
 // (counted from the end with indexFromEnd).
 // apply: rp_i = R(q_r)·local_i, out_i = c_r + rp_i; J: v_i = v_r + ω_r × rp_i;
-// Jᵀ: F_r += f_i, τ_r += rp_i × f_i. Geometric stiffness (Exact, Rigid3d):
-// τ_r −= k · f_i × (δω_r × rp_i).
+// Jᵀ: F_r += f_i, τ_r += rp_i × f_i. Geometric stiffness (Rigid3d inputs):
+// per frame K_r = Σ_i [f_i]×·[rp_i]× on its rotation, so that τ_r += k·K_r·δω_r
+// (Exact: as is, matrix-free only since it is not symmetric; Stabilized:
+// symmetrised, then its positive eigenvalues set to zero, SOFA's NSD
+// projection, and also available as assembled entries).
 // Rigid3d outputs also carry an orientation: out_i = (c_r + rp_i, q_r·q_i),
 // ω_i = ω_r, and their torques add to the rigid's (τ_r += τ_i + rp_i × f_i).
 #pragma once
@@ -53,13 +56,18 @@ class RigidMapping final : public MappingBase {
   void apply_djt(int df, int dx, double k) override;
   bool jacobian(std::vector<JacobianEntry>& out) override;
   // The Exact geometric stiffness is not symmetric: not available as assembled entries.
-  bool build_geometric_stiffness(MatrixSink&) override { return gs_ == 0; }
+  bool build_geometric_stiffness(MatrixSink& K) override;
 
  protected:
   bool init_mapping() override;
 
  private:
   bool rigid3() const { return in_type() == StateType::rigid3; }
+  // Stabilized: the 3×3 rotation block of each frame into blocks_ (9 per frame, row-major;
+  // has_children_ says which frames have points), from the output's forces.
+  void stabilized_blocks();
+  std::vector<double> blocks_;
+  std::vector<char> has_children_;
   std::vector<unsigned> rigid_;    // rigid index per point
   std::vector<double> local_;      // local coordinates, dim_ per point
   std::vector<double> rotated_;    // R·(local centre) at the last apply, spatial dimension per point

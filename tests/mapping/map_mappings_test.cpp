@@ -10,6 +10,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "core/matrix_sink.h"
 #include "core/mechanical_ops.h"
 #include "mapping/barycentric_mapping.h"
 #include "mapping/distance_mapping.h"
@@ -369,6 +370,50 @@ TEST(MapRigid, LocalCoordinatesPositionsVelocitiesAndGeometricStiffness) {
   expect_adjoint(m);
   expect_j_is_derivative(m);
   expect_djt_is_derivative(m, {0.3, -1.2, 0.7, 2.0, 0.5, -0.4});
+}
+
+// Stabilized: K = Σ [f]×·[p]× = Σ (p·fᵀ − (f·p)·I), symmetrised, positive eigenvalues dropped.
+TEST(MapRigid, StabilizedGeometricStiffnessIsTheNegativePartOfTheSymmetrisedBlock) {
+  auto torque_of = [](const char* points, const std::vector<double>& forces, const char* mode) {
+    auto s = load(std::string(R"(<Node gravity="0 0 0">
+      <MechanicalObject name="rigid" template="Rigid3d" position="0 0 0 0 0 0 1"/>
+      <Node name="local"><MechanicalObject name="pts" position=")") + points +
+                  R"("/><RigidMapping name="map" geometricStiffness=")" + mode + R"("/></Node></Node>)");
+    auto& m = mapping_of(s);
+    auto& rigid = find_named<MechanicalState>(*s.root, "rigid");
+    m.output()->write(kForce) = forces;
+    std::vector<std::vector<double>> K;  // columns: the torque for δω = e_c, k = 2
+    for (int c = 0; c < 3; ++c) {
+      std::vector<double> dx(6, 0.0);
+      dx[3 + c] = 1;
+      rigid.write(kDx) = dx;
+      std::fill(rigid.write(kDforce).begin(), rigid.write(kDforce).end(), 0.0);
+      m.apply_djt(kDforce, kDx, 2.0);
+      const auto& df = rigid.write(kDforce);
+      K.push_back({df[3] / 2, df[4] / 2, df[5] / 2});
+    }
+    // The assembled entries are the same matrix.
+    MatrixSink sink;
+    EXPECT_TRUE(m.build_geometric_stiffness(sink));
+    std::vector<double> dense(36, 0.0);
+    for (const auto& e : sink.entries()) dense[e.row * 6 + e.col] += e.value;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) EXPECT_NEAR(dense[(3 + a) * 6 + 3 + b], K[b][a], 1e-14) << a << b;
+    return K;
+  };
+  // p = (1,0,0), f = (0,3,0); p = (0,2,0), f = (1,0,0): K = [[0,3,0],[2,0,0],[0,0,0]], its
+  // symmetric part has eigenvalues ±2.5 and 0; the negative part is −2.5·v·vᵀ, v = (1,−1,0)/√2.
+  const auto K = torque_of("1 0 0  0 2 0", {0, 3, 0, 1, 0, 0}, "Stabilized");
+  const double want[3][3] = {{-1.25, 1.25, 0}, {1.25, -1.25, 0}, {0, 0, 0}};
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) EXPECT_NEAR(K[b][a], want[a][b], 1e-14) << a << b;
+  // Already negative semi-definite (a point pulled outward along its arm): kept as is,
+  // p·fᵀ − (f·p)·I = diag(0, −2, −2).
+  const auto K2 = torque_of("1 0 0", {2, 0, 0}, "2");
+  EXPECT_NEAR(K2[0][0], 0, 1e-14);
+  EXPECT_NEAR(K2[1][1], -2, 1e-14);
+  EXPECT_NEAR(K2[2][2], -2, 1e-14);
+  EXPECT_NEAR(K2[1][0], 0, 1e-14);
 }
 
 TEST(MapRigid, Rigid2dIndexFromEndAndPerPointRigids) {

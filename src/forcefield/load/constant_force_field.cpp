@@ -29,14 +29,6 @@ void ConstantForceField::init() {
     idx_.resize(system);
     for (std::size_t i = 0; i < system; ++i) idx_[i] = static_cast<unsigned>(i);
   }
-  const std::size_t n_state = mstate->size();
-  for (std::size_t i = 0; i < idx_.size(); ++i)
-    if (idx_[i] >= n_state) {
-      msg_error("index " + std::to_string(i) + " (" + std::to_string(idx_[i]) + ") exceeds the state size " +
-                std::to_string(n_state));
-      set_state(ComponentState::invalid);
-      return;
-    }
   const std::size_t w = static_cast<std::size_t>(w_);
   applied_.clear();
   std::vector<double> one;
@@ -78,6 +70,21 @@ void ConstantForceField::init() {
   for (std::size_t k = 0; k < applied_.size(); ++k)
     if (!std::isfinite(applied_[k])) {
       msg_error("the force of index " + std::to_string(k / w) + " is not a finite number");
+      set_state(ComponentState::invalid);
+      return;
+    }
+}
+
+// The indices are checked once the whole graph is initialised: a state under a mapping gets its
+// size from the mapping's init, which may come after this one (SOFA's MatrixLinearSystem.scn: a
+// Rigid3d state of one default frame, pushed by this force field, then sized by an IdentityMapping).
+void ConstantForceField::bwd_init() {
+  if (state() != ComponentState::valid) return;
+  const std::size_t n_state = mstate->size();
+  for (std::size_t i = 0; i < idx_.size(); ++i)
+    if (idx_[i] >= n_state) {
+      msg_error("index " + std::to_string(i) + " (" + std::to_string(idx_[i]) + ") exceeds the state size " +
+                std::to_string(n_state));
       set_state(ComponentState::invalid);
       return;
     }

@@ -30,6 +30,7 @@ class ConstantForceField final : public ForceField {
   Link<MeshTopologyBase> topology{this, "topology", "topology giving the number of points (default: the node's)"};
 
   void init() override;
+  void bwd_init() override;
   void add_force(const MechParams& p) override;
   void add_dforce(const MechParams&, double) override {}
   bool build_stiffness(MatrixSink&) override { return true; }

@@ -21,8 +21,13 @@ constexpr int kMaxDepth = 64;
 }  // namespace
 
 void MappedAssembly::project(MechanicalOps& ops, const std::vector<Pair>& pairs, MatrixSink& sink,
-                             const OffsetOf& offset_of) {
-  if (!unchanged(pairs, sink)) build(ops, pairs, sink, offset_of);
+                             const OffsetOf& offset_of, const std::vector<char>& constant) {
+  if (!unchanged(pairs, sink) || constant != constant_) {
+    constant_ = constant;
+    build(ops, pairs, sink, offset_of);
+    for (Product& p : products_)
+      p.frozen = static_cast<std::size_t>(p.pair) < constant_.size() && constant_[static_cast<std::size_t>(p.pair)];
+  }
   compute(sink);
   for (const Product& p : products_) {
     const auto oa = static_cast<std::uint32_t>(offset_of(chains_[p.chain_a].tops[p.top_a].top));
@@ -241,8 +246,19 @@ void MappedAssembly::compute(const MatrixSink& sink) {
     ++j;
   }
   for (Product& p : products_) {
-    csr_multiply_values(K_[p.pair], chains_[p.chain_b].tops[p.top_b].J, p.KJ, work_);
-    csr_multiply_values(chains_[p.chain_a].tops[p.top_a].Jt, p.KJ, p.R, work_);
+    const Csr* Jb = &chains_[p.chain_b].tops[p.top_b].J;
+    const Csr* Jat = &chains_[p.chain_a].tops[p.top_a].Jt;
+    if (p.frozen) {  // the Jacobians of the first assembly since the pattern was built
+      if (!p.captured) {
+        p.Jb = *Jb;
+        p.Jat = *Jat;
+        p.captured = true;
+      }
+      Jb = &p.Jb;
+      Jat = &p.Jat;
+    }
+    csr_multiply_values(K_[p.pair], *Jb, p.KJ, work_);
+    csr_multiply_values(*Jat, p.KJ, p.R, work_);
   }
 }
 

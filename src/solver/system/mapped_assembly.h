@@ -35,7 +35,11 @@ class MappedAssembly {
   // pairs[p], local scalar indices) and appends Jᵀ·K·J as target-0 triplets
   // in global indices. Pairs whose states cannot be reached through mappings
   // with Jacobians are skipped; those mappings are listed in missing().
-  void project(MechanicalOps& ops, const std::vector<Pair>& pairs, MatrixSink& sink, const OffsetOf& offset_of);
+  // `constant[p]` (when given): the Jacobians of pairs[p] are taken at the first assembly
+  // after a pattern build and reused until the next one (MatrixProjectionMethod's
+  // areJacobiansConstant).
+  void project(MechanicalOps& ops, const std::vector<Pair>& pairs, MatrixSink& sink, const OffsetOf& offset_of,
+               const std::vector<char>& constant = {});
 
   const std::vector<Mapping*>& missing() const { return missing_; }
   // Number of times the patterns were (re)built.
@@ -71,6 +75,9 @@ class MappedAssembly {
   struct Product {
     int pair, chain_a, top_a, chain_b, top_b;
     Csr KJ, R;  // K·J_b and J_aᵀ·K·J_b
+    bool frozen = false;    // Jacobians taken once (constant[pair])
+    bool captured = false;  // Jb, Jat hold them
+    Csr Jb, Jat;
   };
 
   bool unchanged(const std::vector<Pair>& pairs, const MatrixSink& sink);
@@ -80,6 +87,7 @@ class MappedAssembly {
   void compute(const MatrixSink& sink);
 
   std::vector<Pair> pairs_;
+  std::vector<char> constant_;  // per pair, as given to the last pattern build
   std::vector<MappingJacobian> jacobians_;
   std::vector<Chain> chains_;  // children before parents: values are computed in this order
   std::vector<Csr> K_;         // one per pair

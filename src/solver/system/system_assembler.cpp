@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "core/component.h"
+#include "core/node.h"
+#include "solver/system/matrix_projection_method.h"
 
 namespace sinew {
 
@@ -175,10 +177,30 @@ void SystemAssembler::build_pattern() {
 }
 
 void SystemAssembler::assemble_mapped(MechanicalOps& ops, const Component& owner) {
-  mapped_.project(ops, mapped_pairs_, sink_, [this](const MechanicalState* s) -> std::ptrdiff_t {
-    const StateBlock* b = find_block(s);
-    return b ? static_cast<std::ptrdiff_t>(b->offset) : -1;
-  });
+  // Pairs named by a MatrixProjectionMethod with areJacobiansConstant (the first one in the
+  // graph naming the pair, as SOFA searches from the root).
+  // The graph is searched again only when its structure changed.
+  constant_jacobians_.assign(mapped_pairs_.size(), 0);
+  if (Node* n = owner.node()) {
+    if (projection_methods_version_ != n->structure_version()) {
+      projection_methods_.clear();
+      n->root()->collect_down(projection_methods_);
+      projection_methods_version_ = n->structure_version();
+    }
+    for (std::size_t p = 0; p < mapped_pairs_.size(); ++p)
+      for (const MatrixProjectionMethod* m : projection_methods_)
+        if (m->has_pair(mapped_pairs_[p].first, mapped_pairs_[p].second)) {
+          constant_jacobians_[p] = m->are_jacobians_constant.value();
+          break;
+        }
+  }
+  mapped_.project(
+      ops, mapped_pairs_, sink_,
+      [this](const MechanicalState* s) -> std::ptrdiff_t {
+        const StateBlock* b = find_block(s);
+        return b ? static_cast<std::ptrdiff_t>(b->offset) : -1;
+      },
+      constant_jacobians_);
   for (Mapping* m : mapped_.missing())
     report_once(owner, m, m->describe() + " provides no Jacobian; contributions on its output are not assembled");
 }

@@ -25,6 +25,8 @@
 
 namespace sinew {
 
+class MatrixProjectionMethod;
+
 class SystemAssembler final : public MatrixSink::Layout {
  public:
   struct Options {
@@ -72,6 +74,9 @@ class SystemAssembler final : public MatrixSink::Layout {
   BlockCsrMatrix matrix_;
   MatrixSink sink_;
   std::vector<MappedAssembly::Pair> mapped_pairs_;
+  std::vector<char> constant_jacobians_;  // per mapped pair: MatrixProjectionMethod's areJacobiansConstant
+  std::vector<MatrixProjectionMethod*> projection_methods_;  // of the graph, in pre-order
+  std::uint64_t projection_methods_version_ = ~std::uint64_t{0};
   MappedAssembly mapped_;
   // Recorded insertion sequence of the global target and its value slots.
   std::vector<std::uint64_t> keys_;
