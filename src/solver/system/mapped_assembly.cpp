@@ -108,7 +108,7 @@ void MappedAssembly::build(MechanicalOps& ops, const std::vector<Pair>& pairs, c
     if (ca < 0 || cb < 0) continue;
     for (std::size_t ta = 0; ta < chains_[ca].tops.size(); ++ta)
       for (std::size_t tb = 0; tb < chains_[cb].tops.size(); ++tb) {
-        Product prod{static_cast<int>(p), ca, static_cast<int>(ta), cb, static_cast<int>(tb), {}, {}};
+        Product prod{static_cast<int>(p), ca, static_cast<int>(ta), cb, static_cast<int>(tb), {}, {}, false, false, {}, {}};
         csr_multiply_pattern(K_[p], chains_[cb].tops[tb].J, prod.KJ);
         csr_multiply_pattern(chains_[ca].tops[ta].Jt, prod.KJ, prod.R);
         products_.push_back(std::move(prod));

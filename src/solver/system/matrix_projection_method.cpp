@@ -1,6 +1,5 @@
 #include "solver/system/matrix_projection_method.h"
 
-#include "core/node.h"
 #include "core/registry.h"
 
 namespace sinew {
@@ -19,15 +18,6 @@ void MatrixProjectionMethod::init() {
 bool MatrixProjectionMethod::has_pair(const MechanicalState* rows, const MechanicalState* cols) const {
   const auto& s = mechanical_states.get();
   return state() == ComponentState::valid && s.size() >= 2 && s[0] == rows && s[1] == cols;
-}
-
-const MatrixProjectionMethod* find_projection_method(Node& root, const MechanicalState* rows,
-                                                     const MechanicalState* cols) {
-  std::vector<MatrixProjectionMethod*> all;
-  root.collect_down(all);
-  for (const MatrixProjectionMethod* m : all)
-    if (m->has_pair(rows, cols)) return m;
-  return nullptr;
 }
 
 void register_matrix_projection_method(Registry& r) {

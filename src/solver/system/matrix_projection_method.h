@@ -25,8 +25,4 @@ class MatrixProjectionMethod final : public Component {
   bool has_pair(const MechanicalState* rows, const MechanicalState* cols) const;
 };
 
-// The first MatrixProjectionMethod under `root` (pre-order) naming the pair, or nullptr.
-const MatrixProjectionMethod* find_projection_method(Node& root, const MechanicalState* rows,
-                                                     const MechanicalState* cols);
-
 }  // namespace sinew
