@@ -21,10 +21,9 @@ void DiagonalRigidMass::parse(AttributeMap& attrs, Diagnostics& diag) {
   if (text && !text->empty() && (*text)[0] != '@') {
     std::vector<double> values;
     if (!parse::read_rigid3_mass_list(*text, values))
-      diag.warning(where, describe() + ": vertexMass: could not read past the " +
-                              std::to_string(values.size() / kValuesPerMass) +
-                              "th mass (each is 'mass volume [I00 I01 I02,I10 I11 I12,I20 I21 I22]'): " +
-                              quote_value(*text));
+      diag.warning(where, describe() + ": vertexMass: only " + std::to_string(values.size() / kValuesPerMass) +
+                              " complete rigid masses could be read (each is 'mass volume [I00 I01 I02,I10 I11 "
+                              "I12,I20 I21 I22]'): " + quote_value(*text));
     vertex_mass.set(std::move(values));
     attrs.take("vertexMass");
   }

@@ -86,5 +86,16 @@ TEST(DiagonalMassRigid3, WrongCountsAndSingularMassesAreRefused) {
   EXPECT_TRUE(errors_of("2 1 [1 0 0,0 2 0,0 0 4] 1 1 1 0 0 0 1 0 0 0 1").empty());
 }
 
+TEST(DiagonalMassRigid3, UnreadableMassListIsReported) {
+  std::string xml = kFrames;
+  const std::string from = "0.5 1 1 0 0 0 3 0 0 0 1\"";
+  xml.replace(xml.find(from), from.size(), "0.5 1 [1 0 x]\"");
+  Diagnostics tree;
+  scene::LoadedScene s = test::build(xml, &tree);
+  std::vector<std::string> all = test::messages(tree, Severity::warning);
+  for (const auto& m : test::messages(s.root->diagnostics(), Severity::warning)) all.push_back(m);
+  EXPECT_TRUE(test::any_contains(all, "only 1 complete rigid masses could be read"));
+}
+
 }  // namespace diagonal_rigid_test
 }  // namespace sinew
