@@ -50,6 +50,19 @@ void BaseField::copy_generic(const BaseField& other) {
     set_rows(flat, w_other);
     return;
   }
+  if (row_width() > 0) {
+    // A single fixed-size vector into a list is one element, as SOFA's element-wise copy between
+    // Data of different types: a Rigid3d position linked to a Vec3 (GeomagicDriver's
+    // positionBase) is one frame at that centre with the identity rotation. As text, the three
+    // numbers would not make one Rigid3d coordinate.
+    other.update();
+    const FieldLayout l = const_cast<BaseField&>(other).layout();
+    if (l.scalar == FieldLayout::Scalar::f64 && l.dims == 1 && !l.list && l.data && l.cols > 0) {
+      const double* d = static_cast<const double*>(l.data);
+      set_rows(std::vector<double>(d, d + l.cols), l.cols);
+      return;
+    }
+  }
   read(other.text());
 }
 

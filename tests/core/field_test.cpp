@@ -198,6 +198,20 @@ TEST(FieldLink, Width7StateFromPointsGetsIdentityOrientations) {
   EXPECT_EQ(rigid.get().data, (std::vector<double>{1, 2, 3, 0, 0, 0, 1, 4, 5, 6, 0, 0, 0, 1}));
 }
 
+// SOFA copies a fixed-size parent into a list element by element: a Rigid3d position linked to
+// a Vec3 (GeomagicDriver's positionBase) is one frame at that centre with the identity rotation.
+TEST(FieldLink, Width7StateFromOneVec3IsOneFrame) {
+  Owner o;
+  Field<Vec3> base{&o, "positionBase", Vec3(1, 2, 3), ""};
+  Field<FlatVec> rigid{&o, "position", FlatVec{7, {}}, ""};
+  rigid.set_parent(&base);
+  EXPECT_EQ(rigid.get().data, (std::vector<double>{1, 2, 3, 0, 0, 0, 1}));
+  // A Vec1d state takes the first value only (SOFA: one element of min(1, 3) values).
+  Field<FlatVec> vec1{&o, "x", FlatVec{1, {}}, ""};
+  vec1.set_parent(&base);
+  EXPECT_EQ(vec1.get().data, (std::vector<double>{1}));
+}
+
 // §2.6: types without rows go through text.
 TEST(FieldLink, ScalarToStringGoesThroughText) {
   Owner o;

@@ -325,6 +325,8 @@ TEST_P(HapticScenes, LoadAndRun100Steps) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, HapticScenes,
                          ::testing::Values("plugins/Geomagic/scenes/Geomagic-Demo.scn",
+                                           "plugins/Geomagic/scenes/Geomagic-DeformableCubes.scn",
+                                           "plugins/Geomagic/scenes/Geomagic-DeformableSphere.scn",
                                            "plugins/Geomagic/scenes/Geomagic-FEMLiver.scn",
                                            "plugins/Geomagic/scenes/Geomagic-RigidCubes.scn",
                                            "plugins/Geomagic/scenes/Geomagic-RigidSphere.scn",

@@ -188,6 +188,28 @@ TEST(TopoSparseGridRamification, SofaSceneGridOfTheOLetterFromVerticesOnly) {
   EXPECT_EQ(g.hexahedra().size(), 8u);  // the ring of a 3×1×3 grid: nothing to split
 }
 
+TEST(TopoSparseGridRamification, GridFromALoaderThroughSrcEqualsTheGridFromTheFile) {
+  // Geomagic-DeformableSphere.scn gives its grid the loader's mesh with src="@loader": the
+  // loader's (empty) hexahedra list is linked too, and must not replace the cells built from
+  // the surface (it did: "no volume").
+  const std::filesystem::path mesh = std::filesystem::path(SINEW_DATA_DIR) / "share" / "mesh" / "sphere_05.obj";
+  if (!std::filesystem::exists(mesh)) GTEST_SKIP() << "no " << mesh;
+  for (const char* type : {"SparseGridTopology", "SparseGridRamificationTopology"}) {
+    const std::string attrs = R"( n="6 6 6" nbVirtualFinerLevels="3" finestConnectivity="0")";
+    auto via_src = load(std::string("<Node><MeshOBJLoader name=\"l\" filename=\"") + mesh.string() +
+                        "\"/><" + type + " name=\"g\" src=\"@l\"" + attrs + "/></Node>");
+    auto via_file = load(std::string("<Node><") + type + " name=\"g\" fileTopology=\"" + mesh.string() + "\"" +
+                         attrs + "/></Node>");
+    auto& a = find<SparseGridTopology>(via_src, "g");
+    auto& b = find<SparseGridTopology>(via_file, "g");
+    EXPECT_EQ(a.state(), ComponentState::valid) << type;
+    ASSERT_FALSE(a.hexahedra().empty()) << type;
+    EXPECT_EQ(a.hexahedra(), b.hexahedra()) << type;
+    ASSERT_EQ(a.nb_points(), b.nb_points()) << type;
+    for (std::size_t i = 0; i < a.nb_points(); ++i) EXPECT_EQ(a.point(i), b.point(i)) << type << " " << i;
+  }
+}
+
 TEST(TopoSparseGridRamification, MissingMeshFileIsAnError) {
   auto s =
       test::build(R"(<Node><SparseGridRamificationTopology name="g" fileTopology="/nonexistent/none.obj"/></Node>)");

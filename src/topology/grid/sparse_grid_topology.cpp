@@ -335,6 +335,14 @@ bool SparseGridTopology::prepare(VecNi<3>& dims, std::vector<Vec3>& vertices,
 }
 
 void SparseGridTopology::adopt(Level&& level) {
+  // The grid's own lists may be linked to a loader's through src="@loader" (position,
+  // hexahedra, ...). Pull them first, as SOFA's beginEdit does, so that the values written
+  // here stand until the loader changes: an unread link would otherwise replace the cells
+  // with the loader's (empty) hexahedra at the first read.
+  for (const BaseField* f : {static_cast<const BaseField*>(&min), static_cast<const BaseField*>(&max),
+                             static_cast<const BaseField*>(&n), static_cast<const BaseField*>(&position),
+                             static_cast<const BaseField*>(&hexahedra_f)})
+    f->update();
   min.set(level.min);
   max.set(level.max);
   n.set(level.grid.n);
