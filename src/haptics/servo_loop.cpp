@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
+#include <mutex>
+#include <thread>
 #include <vector>
 
 namespace sinew::haptics {
@@ -15,52 +18,121 @@ std::int64_t ServoLoop::now_ns() {
       .count();
 }
 
+// One servo thread and the loops it serves (all of the same period).
+struct ServoThread {
+  std::chrono::steady_clock::duration period{};
+  std::mutex mutex;                // guards loops; held while a cycle runs the ticks
+  std::vector<ServoLoop*> loops;   // in the order they started
+  std::atomic<bool> stop{false};
+  std::atomic<bool> realtime{false};
+  std::thread thread;
+
+  void run();
+};
+
+namespace {
+
+// The servo threads by period (nanoseconds). Starting and stopping loops take this lock; the
+// servo threads never do, so stop() may join one while holding it.
+struct Registry {
+  std::mutex mutex;
+  std::map<std::int64_t, std::unique_ptr<ServoThread>> threads;
+};
+
+Registry& registry() {
+  // Never destroyed: a loop stopped during static destruction still finds it.
+  static Registry* r = new Registry;
+  return *r;
+}
+
+}  // namespace
+
+void ServoThread::run() {
+  // Real-time priority when allowed (a haptic servo's deadline is 1 ms); a refusal is normal
+  // for an unprivileged user and leaves the thread as it was.
+  sched_param sp{};
+  sp.sched_priority = sched_get_priority_max(SCHED_FIFO);
+  realtime.store(pthread_setschedparam(pthread_self(), SCHED_FIFO, &sp) == 0, std::memory_order_relaxed);
+  const bool rt = realtime.load(std::memory_order_relaxed);
+  using clock = std::chrono::steady_clock;
+  auto next = clock::now();
+  while (!stop.load(std::memory_order_acquire)) {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      for (ServoLoop* loop : loops) loop->run_tick(ServoLoop::now_ns(), rt);
+    }
+    // Deadlines advance by the period: a short delay (the OS scheduling another thread)
+    // is made up by the next cycles, so the rate holds on average; after a stall of more
+    // than 20 periods the schedule restarts from now instead of bursting.
+    next += period;
+    const auto now = clock::now();
+    if (now - next > 20 * period) next = now;
+    std::this_thread::sleep_until(next);
+  }
+}
+
+void ServoLoop::run_tick(std::int64_t start_ns, bool realtime) {
+  const std::uint64_t k = ticks_.load(std::memory_order_relaxed);
+  stamps_[k % kRing].store(start_ns, std::memory_order_relaxed);
+  if (last_ns_ >= 0) {
+    const double ms = static_cast<double>(start_ns - last_ns_) * 1e-6;
+    if (ms > max_period_ms_.load(std::memory_order_relaxed)) max_period_ms_.store(ms, std::memory_order_relaxed);
+  }
+  last_ns_ = start_ns;
+  realtime_.store(realtime, std::memory_order_relaxed);
+  tick_();
+  ticks_.store(k + 1, std::memory_order_release);
+}
+
 void ServoLoop::start(double rate_hz, std::function<void()> tick) {
   stop();
-  stop_.store(false);
   ticks_.store(0);
   max_period_ms_.store(0);
+  last_ns_ = -1;
   if (!stamps_) stamps_ = std::make_unique<std::atomic<std::int64_t>[]>(kRing);
   for (std::size_t i = 0; i < kRing; ++i) stamps_[i].store(0, std::memory_order_relaxed);
+  tick_ = std::move(tick);
   const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(1.0 / (rate_hz > 0 ? rate_hz : 1000.0)));
-  thread_ = std::thread([this, period, tick = std::move(tick)] {
-    // Real-time priority when allowed (a haptic servo's deadline is 1 ms); a refusal is normal
-    // for an unprivileged user and leaves the thread as it was.
-    sched_param sp{};
-    sp.sched_priority = sched_get_priority_max(SCHED_FIFO);
-    realtime_.store(pthread_setschedparam(pthread_self(), SCHED_FIFO, &sp) == 0, std::memory_order_relaxed);
-    using clock = std::chrono::steady_clock;
-    auto next = clock::now();
-    auto last = next;
-    while (!stop_.load(std::memory_order_acquire)) {
-      const auto start = clock::now();
-      const std::uint64_t k = ticks_.load(std::memory_order_relaxed);
-      stamps_[k % kRing].store(
-          std::chrono::duration_cast<std::chrono::nanoseconds>(start.time_since_epoch()).count(),
-          std::memory_order_relaxed);
-      if (k > 0) {
-        const double ms = std::chrono::duration<double, std::milli>(start - last).count();
-        if (ms > max_period_ms_.load(std::memory_order_relaxed)) max_period_ms_.store(ms, std::memory_order_relaxed);
-      }
-      last = start;
-      tick();
-      ticks_.store(k + 1, std::memory_order_release);
-      // Deadlines advance by the period: a short delay (the OS scheduling another thread)
-      // is made up by the next ticks, so the rate holds on average; after a stall of more
-      // than 20 periods the schedule restarts from now instead of bursting.
-      next += period;
-      const auto now = clock::now();
-      if (now - next > 20 * period) next = now;
-      std::this_thread::sleep_until(next);
-    }
-  });
+  const std::int64_t key = std::chrono::duration_cast<std::chrono::nanoseconds>(period).count();
+  Registry& r = registry();
+  std::lock_guard<std::mutex> reg(r.mutex);
+  std::unique_ptr<ServoThread>& t = r.threads[key];
+  if (!t) {
+    t = std::make_unique<ServoThread>();
+    t->period = period;
+    t->loops.push_back(this);
+    ServoThread* raw = t.get();
+    t->thread = std::thread([raw] { raw->run(); });
+  } else {
+    std::lock_guard<std::mutex> lock(t->mutex);  // between two cycles
+    t->loops.push_back(this);
+  }
+  running_ = true;
 }
 
 void ServoLoop::stop() {
-  if (!thread_.joinable()) return;
-  stop_.store(true, std::memory_order_release);
-  thread_.join();
+  if (!running_) return;
+  Registry& r = registry();
+  std::lock_guard<std::mutex> reg(r.mutex);
+  for (auto it = r.threads.begin(); it != r.threads.end(); ++it) {
+    ServoThread& t = *it->second;
+    bool last = false;
+    {
+      std::lock_guard<std::mutex> lock(t.mutex);  // no cycle runs: none of our ticks is under way
+      auto found = std::find(t.loops.begin(), t.loops.end(), this);
+      if (found == t.loops.end()) continue;
+      t.loops.erase(found);
+      last = t.loops.empty();
+    }
+    if (last) {
+      t.stop.store(true, std::memory_order_release);
+      t.thread.join();
+      r.threads.erase(it);
+    }
+    break;
+  }
+  running_ = false;
 }
 
 PeriodStats ServoLoop::period_stats(std::int64_t from_ns, std::int64_t to_ns) const {

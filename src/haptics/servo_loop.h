@@ -1,10 +1,15 @@
-// ServoLoop: the haptic thread. Calls a tick function at a fixed rate (1 kHz by
-// default) with std::this_thread::sleep_until on a steady clock, until stop() or
-// destruction. Deadlines advance by the period: a tick late by less than 20
-// periods is made up (the rate holds on average); a longer stall restarts the
-// schedule. The thread asks for real-time scheduling (SCHED_FIFO, as the
-// OpenHaptics servo runs at the highest priority) and keeps its normal priority
-// when the system refuses.
+// ServoLoop: one device's servo callback, called at a fixed rate (1 kHz by default)
+// until stop() or destruction. As OpenHaptics' scheduler, which runs the callbacks
+// of every device in one servo thread, loops of the same rate share one thread:
+// each cycle calls their ticks in the order they started. Two servo threads on
+// two CPUs fare worse here: each waits on its own CPU's wake-ups, so one device
+// or the other sees the late ones. The thread sleeps with
+// std::this_thread::sleep_until on a steady clock; deadlines advance by the
+// period: a cycle late by less than 20 periods is made up (the rate holds on
+// average); a longer stall restarts the schedule. The thread asks for real-time
+// scheduling (SCHED_FIFO, as the OpenHaptics servo runs at the highest priority)
+// and keeps its normal priority when the system refuses. It ends when its last
+// loop stops.
 //
 // Each tick's start time goes into a ring preallocated at start() (the last
 // kRing ticks), so the period distribution can be read while or after the
@@ -15,7 +20,6 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <thread>
 
 namespace sinew::haptics {
 
@@ -35,14 +39,15 @@ class ServoLoop {
   ServoLoop& operator=(const ServoLoop&) = delete;
   ~ServoLoop() { stop(); }
 
-  // Starts the thread (stops a running one first). `tick` runs on the servo thread.
+  // Starts calling `tick` on the servo thread of this rate (stops first when running).
   void start(double rate_hz, std::function<void()> tick);
-  // Asks the thread to finish and joins it; returns once no tick runs any more.
+  // Leaves the servo thread (joined when it was the last loop on it); returns once no tick of
+  // this loop runs any more.
   void stop();
-  bool running() const { return thread_.joinable(); }
+  bool running() const { return running_; }
   std::uint64_t ticks() const { return ticks_.load(std::memory_order_acquire); }
   double max_period_ms() const { return max_period_ms_.load(std::memory_order_relaxed); }
-  // Whether the thread got real-time scheduling.
+  // Whether the servo thread got real-time scheduling.
   bool realtime() const { return realtime_.load(std::memory_order_relaxed); }
   // Steady-clock time in nanoseconds (the clock of the tick stamps).
   static std::int64_t now_ns();
@@ -52,8 +57,13 @@ class ServoLoop {
   PeriodStats period_stats(std::int64_t from_ns, std::int64_t to_ns) const;
 
  private:
-  std::thread thread_;
-  std::atomic<bool> stop_{false};
+  friend struct ServoThread;
+  // On the servo thread: stamps the start, runs the tick, counts it.
+  void run_tick(std::int64_t start_ns, bool realtime);
+
+  std::function<void()> tick_;
+  bool running_ = false;  // registered with a servo thread (changed under the registry lock)
+  std::int64_t last_ns_ = -1;
   std::atomic<std::uint64_t> ticks_{0};
   std::atomic<double> max_period_ms_{0};
   std::atomic<bool> realtime_{false};

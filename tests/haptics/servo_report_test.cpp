@@ -5,7 +5,9 @@
 
 #include <chrono>
 #include <cstdio>
+#include <mutex>
 #include <thread>
+#include <vector>
 
 #include "haptics/haptics_report.h"
 #include "haptics/servo_loop.h"
@@ -35,6 +37,54 @@ TEST(ServoLoop, PeriodStatsOfAOneKilohertzLoop) {
   EXPECT_LT(s.p50, 1.5);
   // A window before the loop started holds nothing.
   EXPECT_EQ(loop.period_stats(0, from - 1'000'000'000).updates, 0u);
+}
+
+// As OpenHaptics' scheduler, loops of one rate share a servo thread: each cycle runs their
+// ticks in the order they started. A loop that stops leaves the others running; a loop of
+// another rate has its own thread.
+TEST(ServoLoop, LoopsOfOneRateShareOneThread) {
+  std::mutex m;
+  std::vector<std::pair<int, std::thread::id>> calls;
+  auto record = [&](int who) {
+    std::lock_guard<std::mutex> lock(m);
+    if (calls.size() < 100000) calls.emplace_back(who, std::this_thread::get_id());
+  };
+  ServoLoop a, b, c;
+  a.start(1000.0, [&] { record(0); });
+  b.start(1000.0, [&] { record(1); });
+  c.start(500.0, [&] { record(2); });
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  a.stop();
+  EXPECT_FALSE(a.running());
+  EXPECT_TRUE(b.running());
+  const auto a_ticks = a.ticks();
+  const auto b_ticks = b.ticks();
+  std::this_thread::sleep_for(std::chrono::milliseconds(30));
+  EXPECT_EQ(a.ticks(), a_ticks);  // stopped: never called again
+  EXPECT_GT(b.ticks(), b_ticks + 10);
+  b.stop();
+  c.stop();
+  std::lock_guard<std::mutex> lock(m);
+  std::thread::id ta, tb, tc;
+  int order_checked = 0;
+  for (std::size_t i = 0; i < calls.size(); ++i) {
+    const auto& [who, id] = calls[i];
+    std::thread::id& seen = who == 0 ? ta : who == 1 ? tb : tc;
+    if (seen == std::thread::id()) seen = id;
+    EXPECT_EQ(seen, id) << who;  // one thread per loop throughout
+    if (who == 0) {
+      // In a cycle, b runs right after a on the same thread (c's ticks may fall in between).
+      for (std::size_t j = i + 1; j < calls.size(); ++j) {
+        if (calls[j].first == 2) continue;
+        EXPECT_EQ(calls[j].first, 1);
+        ++order_checked;
+        break;
+      }
+    }
+  }
+  EXPECT_EQ(ta, tb);
+  EXPECT_NE(ta, tc);
+  EXPECT_GT(order_checked, 20);
 }
 
 TEST(HapticsReport, OneLinePerServedDriver) {
