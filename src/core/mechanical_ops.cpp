@@ -124,6 +124,18 @@ double MechanicalOps::v_dot(int a, int b) const {
     const auto& bv = s->read(b);
     const int w = s->info().deriv_width;
     const std::size_t n = std::min(av.size(), bv.size()) / static_cast<std::size_t>(w);
+    if (w == 3) {  // the same sums with the component loop unrolled (CG calls this twice per iteration)
+      const double* pa = av.data();
+      const double* pb = bv.data();
+      for (std::size_t i = 0; i < n; ++i) {
+        double d = 0;
+        d += pa[3 * i] * pb[3 * i];
+        d += pa[3 * i + 1] * pb[3 * i + 1];
+        d += pa[3 * i + 2] * pb[3 * i + 2];
+        total += d;
+      }
+      continue;
+    }
     for (std::size_t i = 0; i < n; ++i) {
       double d = 0;  // per-DOF partial sum first, as SOFA's Vec dot product
       for (int c = 0; c < w; ++c) d += av[i * w + c] * bv[i * w + c];

@@ -240,6 +240,14 @@ void UniformMass::add_mdx(const MechParams&, int res, int dx, double factor) {
     return;
   }
   const double mf = m_ * factor;
+  if (w == 3) {  // the common case, unrolled (once per CG iteration)
+    for (unsigned i : active_) {
+      r[3 * i] += d[3 * i] * mf;
+      r[3 * i + 1] += d[3 * i + 1] * mf;
+      r[3 * i + 2] += d[3 * i + 2] * mf;
+    }
+    return;
+  }
   for (unsigned i : active_)
     for (int c = 0; c < w; ++c) r[i * w + c] += d[i * w + c] * mf;
 }

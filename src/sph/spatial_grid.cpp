@@ -9,7 +9,7 @@ NodePool::~NodePool() {
 }
 
 SpatialGrid::SpatialGrid(double cell_width)
-    : cell_width_(cell_width), inv_cell_width_(1 / cell_width), map_(0, KeyHash{}, std::equal_to<Key>{},
+    : cell_width_(cell_width), inv_cell_width_(1 / cell_width), map_(0, KeyHash{}, KeyEqual{},
                                                                     PoolAllocator<std::pair<const Key, std::uint32_t>>(&pool_)) {
   blocks_.emplace_back();  // the empty block: its neighbours are itself
 }
@@ -58,11 +58,22 @@ void SpatialGrid::update(const double* x, std::size_t n) {
     }
     point_cell_[i] = b * kCells + static_cast<std::uint32_t>(ix + kDim * iy + kDim * kDim * iz);
   }
+  // Cells for block 0 and the occupied blocks only; point_cell_ moves to them.
+  cell_base_.resize(blocks_.size());
+  std::uint32_t cells = kCells;  // block 0's
+  cell_base_[0] = 0;
+  for (std::size_t b = 1; b < blocks_.size(); ++b) {
+    cell_base_[b] = blocks_[b].empty ? 0 : cells;
+    cells += blocks_[b].empty ? 0 : kCells;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    point_cell_[i] = cell_base_[point_cell_[i] / kCells] + point_cell_[i] % kCells;
   // Counting sort of the points by cell (stable: index order inside a cell).
-  const std::size_t ncell = blocks_.size() * kCells;
+  const std::size_t ncell = cells;
   cell_start_.assign(ncell + 1, 0);
   for (std::size_t i = 0; i < n; ++i) ++cell_start_[point_cell_[i] + 1];
-  for (std::size_t c = 0; c < ncell; ++c) cell_start_[c + 1] += cell_start_[c];
+  std::uint32_t sum = 0;
+  for (std::size_t c = 1; c <= ncell; ++c) cell_start_[c] = sum += cell_start_[c];
   entry_index_.resize(n + kPad, 0);
   entry_x_.resize(n + kPad, 0.0);
   entry_y_.resize(n + kPad, 0.0);
@@ -103,7 +114,7 @@ void SpatialGrid::reorder(std::vector<unsigned>& new2old) const {
       int j = 0;
       for (int s = 0; s < kLog2; ++s)
         for (int c = 0; c < 3; ++c) j += ((i >> (3 * s + c)) & 1) << (kLog2 * c + s);
-      const std::uint32_t cell = b * kCells + static_cast<std::uint32_t>(j);
+      const std::uint32_t cell = cell_base_[b] + static_cast<std::uint32_t>(j);
       for (std::uint32_t q = cell_start_[cell]; q < cell_start_[cell + 1]; ++q) new2old.push_back(entry_index_[q]);
     }
   }

@@ -91,10 +91,14 @@ struct PoolAllocator {
 
 // Output of SpatialGrid::find_pairs. The vectors are scratch storage, longer
 // than `size` (the kernels write a few lanes past the last pair).
+// Pairs in the order found. They come in runs that share `first` (one run per
+// searching point, possibly empty): run k is [run_end[k-1], run_end[k]).
 struct PairBuffer {
   std::vector<std::uint32_t> first, second;
   std::vector<double> r2;
   std::size_t size = 0;
+  std::vector<std::uint32_t> run_end;
+  std::size_t runs = 0;
 };
 
 class SpatialGrid {
@@ -114,6 +118,11 @@ class SpatialGrid {
   };
 
   // Precondition: cell_width > 0 (length).
+  // std::array's == calls memcmp; three int compares inline.
+  struct KeyEqual {
+    bool operator()(const Key& a, const Key& b) const { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
+  };
+
   explicit SpatialGrid(double cell_width);
   SpatialGrid(const SpatialGrid&) = delete;
   SpatialGrid& operator=(const SpatialGrid&) = delete;
@@ -153,7 +162,7 @@ class SpatialGrid {
     bool empty = true;
     std::uint32_t nb[6] = {0, 0, 0, 0, 0, 0};  // -x +x -y +y -z +z; 0 = the empty block
   };
-  using Map = std::unordered_map<Key, std::uint32_t, KeyHash, std::equal_to<Key>,
+  using Map = std::unordered_map<Key, std::uint32_t, KeyHash, KeyEqual,
                                  PoolAllocator<std::pair<const Key, std::uint32_t>>>;
 
   std::uint32_t get_block(const Key& k);
@@ -169,13 +178,16 @@ class SpatialGrid {
     else if (y >= kDim) { b = blocks_[b].nb[3]; y -= kDim; }
     if (z < 0) { b = blocks_[b].nb[4]; z += kDim; }
     else if (z >= kDim) { b = blocks_[b].nb[5]; z -= kDim; }
-    return b * kCells + static_cast<std::uint32_t>(x + kDim * y + kDim * kDim * z);
+    return cell_base_[b] + static_cast<std::uint32_t>(x + kDim * y + kDim * kDim * z);
   }
 
   double cell_width_, inv_cell_width_;
   NodePool pool_;  // before map_: outlives it
   Map map_;
   std::vector<Block> blocks_;               // [0] = the empty block
+  // Only non-empty blocks own cells: an empty block (SOFA creates the six face
+  // neighbours of every occupied one) shares block 0's empty cells.
+  std::vector<std::uint32_t> cell_base_;    // per block: its first global cell
   std::vector<std::uint32_t> cell_start_;   // per global cell, +1 sentinel (block 0's cells are empty)
   std::vector<std::uint32_t> point_cell_;   // per point: its global cell
   // Points sorted by cell (stable), and their coordinates (one array per axis).
@@ -200,7 +212,7 @@ void SpatialGrid::for_each_cell(F&& f) const {
     for (int z = 0; z < kDim; ++z)
       for (int y = 0; y < kDim; ++y)
         for (int x = 0; x < kDim; ++x) {
-          const std::uint32_t c0 = b * kCells + static_cast<std::uint32_t>(x + kDim * y + kDim * kDim * z);
+          const std::uint32_t c0 = cell_base_[b] + static_cast<std::uint32_t>(x + kDim * y + kDim * kDim * z);
           if (start[c0] == start[c0 + 1]) continue;
           std::uint32_t cells[14];
           for (int s = 0; s < 14; ++s)

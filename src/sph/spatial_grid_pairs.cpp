@@ -58,6 +58,7 @@ std::size_t pairs_scalar(const PairCellJob& job, const PairArrays& a, double dis
         }
       }
     }
+    out.run_end[out.runs++] = static_cast<std::uint32_t>(n);
   }
   return n;
 }
@@ -117,6 +118,7 @@ __attribute__((target("avx2,popcnt"))) std::size_t pairs_avx2(const PairCellJob&
         n += static_cast<std::size_t>(_mm_popcnt_u32(static_cast<unsigned>(m)));
       }
     }
+    out.run_end[out.runs++] = static_cast<std::uint32_t>(n);
   }
   return n;
 }
@@ -134,6 +136,10 @@ void SpatialGrid::find_pairs(double dist, PairBuffer& out, bool simd) const {
   const PairArrays arrays{entry_x_.data(), entry_y_.data(), entry_z_.data(), entry_index_.data()};
   const std::uint32_t* start = cell_start_.data();
   std::size_t n = 0;
+  // One run per point: every point searches once, from its own cell.
+  const std::size_t points = entry_index_.size() >= kPad ? entry_index_.size() - kPad : 0;
+  if (out.run_end.size() < points) out.run_end.resize(points);
+  out.runs = 0;
   for_each_cell([&](const std::uint32_t* cells) {
     PairCellJob job;
     job.own_end = start[cells[0] + 1];

@@ -60,6 +60,8 @@ void SPHFluidForceField::find_neighbours(const std::vector<double>& x) {
     grid_->grid().find_pairs(h, found_, sph::sph_simd_enabled());
   } else {
     found_.size = 0;
+    found_.runs = 0;
+    if (found_.run_end.size() < n) found_.run_end.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       const double* xi = &x[3 * i];
       for (std::size_t j = i + 1; j < n; ++j) {
@@ -79,24 +81,63 @@ void SPHFluidForceField::find_neighbours(const std::vector<double>& x) {
           ++found_.size;
         }
       }
+      found_.run_end[found_.runs++] = static_cast<std::uint32_t>(found_.size);
     }
   }
   // SOFA's addNeighbor puts each pair in the row of its lower index, in the
   // order found; a counting sort by row keeps that order within each row.
+  //
+  // The pairs come in runs that share their first point f, and within a run
+  // every other point appears once. So a run's pairs of row f are counted in a
+  // register and placed at consecutive slots, and its other pairs each touch a
+  // different row: no counter is incremented twice in a row, which would chain
+  // each pair's read-modify-write to the previous one through memory.
   const std::size_t np = found_.size;
+  const std::size_t runs = found_.runs;
   const std::uint32_t* first = found_.first.data();
   const std::uint32_t* second = found_.second.data();
+  const std::uint32_t* run_end = found_.run_end.data();
+  const double* r2 = found_.r2.data();
   row_start_.assign(n + 1, 0);
-  for (std::size_t k = 0; k < np; ++k) ++row_start_[std::min(first[k], second[k]) + 1];
+  std::uint32_t* count = row_start_.data() + 1;
+  for (std::size_t r = 0, k = 0; r < runs; ++r) {
+    const std::size_t end = run_end[r];
+    if (k == end) continue;
+    const std::uint32_t f = first[k];
+    std::uint32_t own = 0;
+    for (; k < end; ++k) {
+      const std::uint32_t s = second[k];
+      const std::uint32_t lower = s < f ? 1u : 0u;
+      own += 1u - lower;
+      count[s] += lower;
+    }
+    count[f] += own;
+  }
   for (std::size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
   nb_j_.resize(np);
   nb_q_.resize(np);
-  // Fill with a cursor per row (row_start_ shifted back afterwards); q = √(r²/h²).
-  for (std::size_t k = 0; k < np; ++k) {
-    const std::uint32_t lo = std::min(first[k], second[k]);
-    const std::uint32_t slot = row_start_[lo]++;
-    nb_j_[slot] = std::max(first[k], second[k]);
-    nb_q_[slot] = std::sqrt(found_.r2[k] / h2);
+  // Fill with a cursor per row (row_start_ shifted back afterwards). nb_q_
+  // holds r² until the kernel pass turns it into q = √(r²/h²).
+  std::uint32_t* cursor = row_start_.data();
+  std::uint32_t* nj = nb_j_.data();
+  double* nr2 = nb_q_.data();
+  for (std::size_t r = 0, k = 0; r < runs; ++r) {
+    const std::size_t end = run_end[r];
+    if (k == end) continue;
+    const std::uint32_t f = first[k];
+    const std::uint32_t base = cursor[f];
+    std::uint32_t own = 0;
+    for (; k < end; ++k) {
+      const std::uint32_t s = second[k];
+      const bool lower = s < f;
+      const std::uint32_t other = cursor[s];
+      const std::uint32_t slot = lower ? other : base + own;
+      cursor[s] = other + (lower ? 1u : 0u);
+      nj[slot] = lower ? f : s;
+      nr2[slot] = r2[k];
+      own += lower ? 0u : 1u;
+    }
+    cursor[f] = base + own;
   }
   for (std::size_t i = n; i > 0; --i) row_start_[i] = row_start_[i - 1];
   row_start_[0] = 0;
@@ -119,6 +160,37 @@ void SPHFluidForceField::find_neighbours(const std::vector<double>& x) {
   }
 }
 
+namespace {
+
+// q, m·W(q) and the pressure gradient's scalar of every pair, from r² (stored
+// in q). Inlined into both entry points below; the AVX2 one lets the compiler
+// use 4-wide vectors (no FMA: the same roundings as the scalar code). The
+// kernels come by value: through a reference their constants might alias the
+// outputs, and GCC then gives up vectorizing.
+template <class Kd, class Kp>
+[[gnu::always_inline]] inline void kernel_pass_body(double* __restrict q, double* __restrict w, double* __restrict g,
+                                                    std::size_t np, double h2, double m, const Kd kd, const Kp kp) {
+  for (std::size_t e = 0; e < np; ++e) {
+    const double qe = std::sqrt(q[e] / h2);
+    q[e] = qe;
+    w[e] = m * kd.W(qe);
+    g[e] = kp.grad(qe);
+  }
+}
+
+template <class Kd, class Kp>
+void kernel_pass(double* q, double* w, double* g, std::size_t np, double h2, double m, const Kd kd, const Kp kp) {
+  kernel_pass_body(q, w, g, np, h2, m, kd, kp);
+}
+
+template <class Kd, class Kp>
+__attribute__((target("avx2"))) void kernel_pass_avx2(double* q, double* w, double* g, std::size_t np, double h2,
+                                                      double m, const Kd kd, const Kp kp) {
+  kernel_pass_body(q, w, g, np, h2, m, kd, kp);
+}
+
+}  // namespace
+
 template <class Kd, class Kp, class Kv, class Kc>
 void SPHFluidForceField::compute_force(const std::vector<double>& x, const std::vector<double>& v,
                                        std::vector<double>& f) {
@@ -139,19 +211,18 @@ void SPHFluidForceField::compute_force(const std::vector<double>& x, const std::
   const Kc kc(h);
   const std::uint32_t* rs = row_start_.data();
   const std::uint32_t* nj = nb_j_.data();
-  const double* nq = nb_q_.data();
-
   const std::size_t np = nb_j_.size();
 
-  // Per-pair kernel terms first, in a loop without branches or indirection
-  // (the compiler vectorizes it): m·W(q) for the density, ∇W's scalar for the
+  // Per-pair kernel terms first, in a loop without branches (the compiler
+  // vectorizes it): q = √(r²/h²) in place, m·W(q) for the density, ∇W's scalar for the
   // pressure. The same expressions as inline, so the same bits.
   pair_w_.resize(np);
   pair_g_.resize(np);
-  for (std::size_t e = 0; e < np; ++e) {
-    pair_w_[e] = m * kd.W(nq[e]);
-    pair_g_[e] = kp.grad(nq[e]);
-  }
+  if (sph::pair_forces_simd_available())
+    kernel_pass_avx2(nb_q_.data(), pair_w_.data(), pair_g_.data(), np, h2, m, kd, kp);
+  else
+    kernel_pass(nb_q_.data(), pair_w_.data(), pair_g_.data(), np, h2, m, kd, kp);
+  const double* nq = nb_q_.data();
   const double* w = pair_w_.data();
   const double* grad = pair_g_.data();
 

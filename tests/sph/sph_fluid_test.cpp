@@ -14,6 +14,7 @@
 #include "core/roles.h"
 #include "core/simulation.h"
 #include "sph/sph_fluid_force_field.h"
+#include "sph/spatial_grid_container.h"
 #include "sph/sph_kernels.h"
 #include "sph/sph_pair_forces.h"
 #include "test_scene.h"
@@ -237,6 +238,42 @@ TEST(SPHFluidForceField, GridAndBruteForceGiveTheSameRows) {
     std::sort(rb.begin(), rb.end());
     ASSERT_EQ(ra, rb) << "row " << i;
   }
+}
+
+// The rows in their exact order: each pair the grid finds goes to the row of its
+// lower index, rows keep the order found (SOFA's addNeighbor), and q = √(r²/h²)
+// to the bit. The reference is a plain stable sort of for_each_pair's pairs.
+TEST(SPHFluidForceField, RowsKeepTheGridsOrderOfDiscovery) {
+  const std::string pos = lattice(9, 12, 6, 0.26, -0.9, -1.3, 0.2);
+  const char* params = "radius='0.745' density='15' kernelType='1' viscosityType='2' viscosity='10' pressure='1000'";
+  auto scene = test::load(fluid_scene(pos, params, "<PlaneForceField normal='0 1 0' d='-1'/>", "0 -10 0", true));
+  ASSERT_TRUE(scene.root);
+  Node& fluid = *scene.root->find_child_named("fluid");
+  auto* sph = test::get<SPHFluidForceField>(fluid, "sph");
+  for (int k = 0; k < 30; ++k) animate(*scene.root);  // let particles change cells
+  MechanicalState& s = *fluid.mechanical_state;
+  force_of(*sph, s);
+  const std::vector<double>& x = s.read(kPosition);
+  const std::size_t n = x.size() / 3;
+  // The container's own grid: its block order depends on its hash map's history.
+  auto* container = fluid.find_local<SpatialGridContainer>();
+  ASSERT_NE(container, nullptr);
+  std::vector<std::vector<std::pair<std::uint32_t, double>>> rows(n);
+  container->grid().for_each_pair(0.745, [&](std::uint32_t a, std::uint32_t b, double r2) {
+    rows[std::min(a, b)].emplace_back(std::max(a, b), std::sqrt(r2 / (0.745 * 0.745)));
+  });
+  ASSERT_EQ(sph->row_start().size(), n + 1);
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t b = sph->row_start()[i], e = sph->row_start()[i + 1];
+    ASSERT_EQ(e - b, rows[i].size()) << "row " << i;
+    for (std::uint32_t k = b; k < e; ++k) {
+      ASSERT_EQ(sph->neighbours()[k], rows[i][k - b].first) << "row " << i << " slot " << k - b;
+      ASSERT_EQ(sph->neighbour_q()[k], rows[i][k - b].second) << "row " << i << " slot " << k - b;
+    }
+    pairs += rows[i].size();
+  }
+  EXPECT_GT(pairs, 1000u);
 }
 
 // The AVX2 pair search and force loop (when the processor has AVX2) against the

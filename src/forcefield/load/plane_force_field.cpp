@@ -55,12 +55,37 @@ void PlaneForceField::add_force(const MechParams& p) {
   const double limit = max_ * max_;
   const Vec3 n = normal.value();
   const double pd = d.value();
+  const bool both_sides = bilateral.value();
+  if (dim_ == 3 && cw_ == 3 && limit == 0) {
+    // Vec3d without a force limit (SPH tanks: thousands of particles, five
+    // planes): the general loop below with its component loops unrolled.
+    const double n0 = n[0], n1 = n[1], n2 = n[2], k = k_, c = c_;
+    for (unsigned i = ibegin; i < iend; i++) {
+      const double* xi = &x[3 * i];
+      double dist = 0.0;
+      dist += xi[0] * n0;
+      dist += xi[1] * n1;
+      dist += xi[2] * n2;
+      dist -= pd;
+      if (both_sides || dist < 0) {
+        const double fi = -k * dist;
+        const double di = -c * dist;
+        const double* vi = &v[3 * i];
+        double* fo = &f[3 * i];
+        fo[0] += n0 * fi - vi[0] * di;
+        fo[1] += n1 * fi - vi[1] * di;
+        fo[2] += n2 * fi - vi[2] * di;
+        contacts_.push_back(i);
+      }
+    }
+    return;
+  }
   for (unsigned i = ibegin; i < iend; i++) {
     const double* xi = &x[cw_ * i];
     double dist = 0.0;
     for (unsigned c = 0; c < dim_; ++c) dist += xi[c] * n[c];
     dist -= pd;
-    if (bilateral.value() || dist < 0) {
+    if (both_sides || dist < 0) {
       const double fi = -k_ * dist;
       const double di = -c_ * dist;
       double F[3] = {0, 0, 0};
@@ -101,6 +126,23 @@ void PlaneForceField::add_dforce(const MechParams& p, double kfactor) {
   std::vector<double>& df = s.write(p.df);
   const double fact = -k_ * kfactor;
   const Vec3 n = normal.value();
+  if (dim_ == 3) {
+    const double n0 = n[0], n1 = n[1], n2 = n[2];
+    const unsigned w = dw_;
+    for (unsigned i : contacts_) {
+      const double* dxi = &dx[w * i];
+      double dot = 0.0;
+      dot += dxi[0] * n0;
+      dot += dxi[1] * n1;
+      dot += dxi[2] * n2;
+      const double t = fact * dot;
+      double* dfi = &df[w * i];
+      dfi[0] += n0 * t;
+      dfi[1] += n1 * t;
+      dfi[2] += n2 * t;
+    }
+    return;
+  }
   for (unsigned i : contacts_) {
     const double* dxi = &dx[dw_ * i];
     double dot = 0.0;
