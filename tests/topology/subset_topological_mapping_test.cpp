@@ -110,6 +110,40 @@ TEST(SubsetTopologicalMapping, RemovedInputTrianglesLeaveTheOutput) {
   EXPECT_EQ(map->triangle_s2d.value(), (std::vector<unsigned>{0, kNone}));
 }
 
+// Triangles added to the input join the output when all their points are in it: with
+// samePoints every point is; on a subset of points, only those over its points.
+TEST(SubsetTopologicalMapping, AddedInputTrianglesJoinTheOutputWhenTheirPointsAreIn) {
+  {
+    auto s = test::load(strip_scene(R"(position="0 0 0  0 1 0  1 0 0  1 1 0  2 0 0  2 1 0" triangles="2 3 4")",
+                                    "samePoints='1' handleTriangles='1'"));
+    ASSERT_TRUE(s.root);
+    Node& part = *s.root->find_child_named("part");
+    auto* map = get<SubsetTopologicalMapping>(part, "map");
+    auto* out = get<TriangleSetTopologyContainer>(part, "out");
+    get<TriangleSetTopologyModifier>(*s.root, "mod")->add_triangles({Triangle{0, 2, 4}});
+    ASSERT_EQ(out->triangles().size(), 2u);
+    EXPECT_EQ(out->triangles()[1], (Triangle{0, 2, 4}));
+    EXPECT_EQ(map->triangle_d2s.value(), (std::vector<unsigned>{2, 4}));
+    EXPECT_EQ(map->triangle_s2d.value(), (std::vector<unsigned>{kNone, kNone, 0, kNone, 1}));
+  }
+  {
+    // Output points: input points 4, 2, 3.
+    auto s = test::load(strip_scene(R"(position="2 0 0  1 0 0  1 1 0" triangles="1 2 0")", "handleTriangles='1'"));
+    ASSERT_TRUE(s.root);
+    Node& part = *s.root->find_child_named("part");
+    auto* map = get<SubsetTopologicalMapping>(part, "map");
+    auto* out = get<TriangleSetTopologyContainer>(part, "out");
+    auto* mod = get<TriangleSetTopologyModifier>(*s.root, "mod");
+    mod->add_triangles({Triangle{0, 2, 4}});  // point 0 is not in the subset
+    EXPECT_EQ(out->triangles().size(), 1u);
+    mod->add_triangles({Triangle{4, 3, 2}});  // the subset's own points, in output numbering 0 2 1
+    ASSERT_EQ(out->triangles().size(), 2u);
+    EXPECT_EQ(out->triangles()[1], (Triangle{0, 2, 1}));
+    EXPECT_EQ(map->triangle_d2s.value(), (std::vector<unsigned>{2, 5}));
+    EXPECT_EQ(map->triangle_s2d.value(), (std::vector<unsigned>{kNone, kNone, 0, kNone, kNone, 1}));
+  }
+}
+
 // SOFA's two example scenes: a sphere whose two halves are subsets of its surface (the second
 // one with handleTriangles, FEM and bending springs on each half). Every triangle of each half
 // pairs with the sphere's triangle of the same vertices; 100 steps run with finite states.
