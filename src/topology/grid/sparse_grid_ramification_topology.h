@@ -21,7 +21,7 @@
 
 namespace sinew {
 
-class SparseGridRamificationTopology final : public SparseGridTopology {
+class SparseGridRamificationTopology : public SparseGridTopology {
  public:
   Field<bool> finest_connectivity{this, "finestConnectivity", true,
                                   "test connectivity at the finest level (surface edges crossing the faces "
@@ -68,8 +68,12 @@ class SparseGridRamificationTopology final : public SparseGridTopology {
   // faces, points renumbered in first-use order. corners: corner positions per unramified cell.
   static void build_hexahedra(RamLevel& L, const std::vector<std::array<Vec3, 8>>& corners);
 
-  // Finest level kept for the look-ups (virtual levels only).
+  // Finest level kept for the look-ups (virtual levels only). SparseGridMultipleTopology
+  // clears it when it builds without ramifications.
+ protected:
   bool climb_lookup_ = false;
+
+ private:
   Grid finest_grid_;
   std::vector<int> finest_sparse_of_regular_;
   std::vector<Vec3> finest_points_;

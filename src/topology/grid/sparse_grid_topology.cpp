@@ -288,6 +288,10 @@ bool SparseGridTopology::prepare(VecNi<3>& dims, std::vector<Vec3>& vertices,
   if (file.empty()) {
     vertices = position.get();
     if (vertices.empty()) {
+      if (surface_optional()) {
+        build_failed_ = false;
+        return true;
+      }
       msg_warning("no filename specified nor vertices given as parameters.");
       return false;
     }
@@ -380,11 +384,24 @@ bool SparseGridTopology::build_from_surface(Level& L, VecNi<3> dims, Vec3 lo_in,
   // 2. The regular grid (SOFA's setSize + setPos).
   L.min = lo_in;
   L.max = hi_in;
-  Grid& g = L.grid;
-  g.set(dims, lo_in, hi_in);
-  const Vec3 lo = lo_in, hi = hi_in;
+  L.grid.set(dims, lo_in, hi_in);
+  std::vector<CellType> type;
+  if (!voxelize(L.grid, lo_in, hi_in, vertices, facets, type)) return false;
+  build_from_types(L, type, only_inside);
+  // 7. Boundary cells weigh half when fillWeighted.
+  for (CellType t : L.types) {
+    const float coef = t == CellType::boundary && fill_weighted.value() ? 0.5f : 1.0f;
+    L.stiffness.push_back(coef);
+    L.mass.push_back(coef);
+  }
+  return true;
+}
+
+bool SparseGridTopology::voxelize(const Grid& g, const Vec3& lo, const Vec3& hi, const std::vector<Vec3>& vertices,
+                                  const std::vector<std::vector<unsigned>>& facets,
+                                  std::vector<CellType>& type) const {
   const int nc = g.nb_cells();
-  std::vector<CellType> type(static_cast<std::size_t>(nc), CellType::inside);
+  type.assign(static_cast<std::size_t>(nc), CellType::inside);
   auto cell_coord = [&](int c, int& x, int& y, int& z) {
     x = c % (g.n[0] - 1);
     c /= (g.n[0] - 1);
@@ -480,8 +497,15 @@ bool SparseGridTopology::build_from_surface(Level& L, VecNi<3> dims, Vec3 lo_in,
   for (int x = 0; x <= mx; ++x)
     for (int y = 0; y <= my; ++y) flood(x, y, 0), flood(x, y, mz);
 
+  return true;
+}
+
+void SparseGridTopology::build_from_types(Level& L, const std::vector<CellType>& type, bool only_inside) {
+  const Grid& g = L.grid;
+  const int nc = g.nb_cells();
   // 6. Sparse cells: boundary cells first, then inside cells, in regular-cell order; points
   // are the distinct corners numbered in lexicographic order of their coordinates.
+  L.types.clear();
   L.sparse_of_regular.assign(static_cast<std::size_t>(nc), -1);
   std::vector<int> cells;
   for (int c = 0; c < nc; ++c)
@@ -497,15 +521,14 @@ bool SparseGridTopology::build_from_surface(Level& L, VecNi<3> dims, Vec3 lo_in,
       L.types.push_back(CellType::inside);
     }
   std::vector<std::array<int, 3>> coords(cells.size());
-  for (std::size_t h = 0; h < cells.size(); ++h) cell_coord(cells[h], coords[h][0], coords[h][1], coords[h][2]);
-  number_points(L, coords);
-  // 7. Boundary cells weigh half when fillWeighted.
-  for (CellType t : L.types) {
-    const float coef = t == CellType::boundary && fill_weighted.value() ? 0.5f : 1.0f;
-    L.stiffness.push_back(coef);
-    L.mass.push_back(coef);
+  for (std::size_t h = 0; h < cells.size(); ++h) {
+    int c = cells[h];
+    coords[h][0] = c % (g.n[0] - 1);
+    c /= (g.n[0] - 1);
+    coords[h][1] = c % (g.n[1] - 1);
+    coords[h][2] = c / (g.n[1] - 1);
   }
-  return true;
+  number_points(L, coords);
 }
 
 void SparseGridTopology::number_points(Level& L, const std::vector<std::array<int, 3>>& cells) {

@@ -67,8 +67,18 @@ class SparseGridTopology : public MeshTopology {
     std::vector<Hexa> hexas;
   };
   // Finest level from a surface mesh (SOFA's buildFromTriangleMesh); false after an error.
-  bool build_from_surface(Level& out, VecNi<3> dims, Vec3 min, Vec3 max, double cell_width, bool only_inside,
-                          const std::vector<Vec3>& vertices, const std::vector<std::vector<unsigned>>& facets) const;
+  // Virtual: SparseGridMultipleTopology builds it from several meshes.
+  virtual bool build_from_surface(Level& out, VecNi<3> dims, Vec3 min, Vec3 max, double cell_width, bool only_inside,
+                                  const std::vector<Vec3>& vertices,
+                                  const std::vector<std::vector<unsigned>>& facets) const;
+  // The type of every cell of grid `g` (box lo..hi) for a closed surface: cells holding a vertex
+  // or crossed by a facet are boundary, those reached from the border without crossing one are
+  // outside, the rest inside (SOFA's voxelizeTriangleMesh); false after an error.
+  bool voxelize(const Grid& g, const Vec3& lo, const Vec3& hi, const std::vector<Vec3>& vertices,
+                const std::vector<std::vector<unsigned>>& facets, std::vector<CellType>& types) const;
+  // Hexahedra, points and types of `level` (its grid set) from the type of each regular cell
+  // (SOFA's buildFromRegularGridTypes): boundary cells first, then inside ones. No coefficients.
+  static void build_from_types(Level& level, const std::vector<CellType>& types, bool only_inside);
   // Next coarser level (SOFA's buildFromFiner).
   static void coarsen(const Level& fine, Level& coarse);
   // Points = distinct corners of `cells` (grid coordinates) in lexicographic order; hexahedra.
@@ -77,6 +87,9 @@ class SparseGridTopology : public MeshTopology {
   // Resets the results, clamps n (returned in dims), checks nbVirtualFinerLevels and reads the
   // surface (file or position + triangles/quads); false after an error (build_failed_ set).
   bool prepare(VecNi<3>& dims, std::vector<Vec3>& vertices, std::vector<std::vector<unsigned>>& facets);
+  // Whether the grid can be built without fileTopology or position (SparseGridMultipleTopology
+  // reads its own files; the surface then only serves the ramifications' connectivity).
+  virtual bool surface_optional() const { return false; }
   // Grid size of the finest level when nbVirtualFinerLevels > 0: (n-1)·2^levels + 1 per axis.
   static VecNi<3> finest_dims(VecNi<3> dims, int levels);
   // Makes `level` the component's grid: fields (n, min, max, position, hexahedra) and look-up data.
