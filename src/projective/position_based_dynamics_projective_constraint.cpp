@@ -4,6 +4,8 @@
 // went since the last projection over dt (SOFA's Constraint/Projective; the
 // velocity it keeps replaces the solver's). The solver's increments are not
 // projected.
+#include <cmath>
+
 #include "core/node.h"
 #include "core/registry.h"
 #include "core/roles.h"
@@ -27,6 +29,11 @@ class PositionBasedDynamicsProjectiveConstraint final : public ProjectiveConstra
   void init() override {
     ProjectiveConstraint::init();
     if (state() != ComponentState::valid) return;
+    if (!std::isfinite(stiffness.value())) {
+      msg_error("stiffness must be finite (got " + stiffness.text() + ")");
+      set_state(ComponentState::invalid);
+      return;
+    }
     if (position.get().data.size() != mstate->read(kPosition).size())
       msg_error("Invalid target position vector size: " + std::to_string(position.get().data.size() / 3) +
                 " targets for " + std::to_string(mstate->size()) + " points");

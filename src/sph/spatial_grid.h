@@ -117,12 +117,12 @@ class SpatialGrid {
     }
   };
 
-  // Precondition: cell_width > 0 (length).
   // std::array's == calls memcmp; three int compares inline.
   struct KeyEqual {
     bool operator()(const Key& a, const Key& b) const { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
   };
 
+  // Precondition: cell_width > 0 (length).
   explicit SpatialGrid(double cell_width);
   SpatialGrid(const SpatialGrid&) = delete;
   SpatialGrid& operator=(const SpatialGrid&) = delete;

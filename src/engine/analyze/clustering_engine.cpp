@@ -39,6 +39,12 @@ ClusteringEngine::ClusteringEngine(StateType type)
 
 void ClusteringEngine::init() {
   topo_ = node()->find_up<MeshTopologyBase>();
+  for (const Field<double>* f : {&radius, &fixed_radius})
+    if (!(std::isfinite(f->value()) && f->value() >= 0)) {
+      msg_error(f->name() + " must be a finite distance >= 0 (got " + f->text() + ")");
+      set_state(ComponentState::invalid);
+      return;
+    }
   set_dirty();
 }
 
@@ -53,6 +59,7 @@ std::vector<ClusteringEngine::Index> ClusteringEngine::neighbours(Index v) const
 }
 
 void ClusteringEngine::do_update() {
+  if (state() == ComponentState::invalid) return;
   if (load()) return;
   const std::vector<double>& x = position.get().data;
   const std::vector<double>& fixed = fixed_position.get().data;

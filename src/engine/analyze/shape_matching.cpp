@@ -90,6 +90,18 @@ void ShapeMatching::init() {
     set_state(ComponentState::invalid);
     return;
   }
+  // Each iteration visits every cluster entry: a count no scene needs would stall the step.
+  if (iterations.value() > 100000) {
+    msg_error("iterations = " + std::to_string(iterations.value()) + " is more than 100000");
+    set_state(ComponentState::invalid);
+    return;
+  }
+  for (const Field<double>* f : {&affine_ratio, &fixed_weight})
+    if (!std::isfinite(f->value())) {
+      msg_error(f->name() + " must be finite (got " + f->text() + ")");
+      set_state(ComponentState::invalid);
+      return;
+    }
   set_dirty();
   update();
 }
