@@ -1,58 +1,17 @@
 #include "engine/analyze/shape_matching.h"
 
 #include <cmath>
-#include <limits>
 
 #include "core/node.h"
 #include "core/registry.h"
 #include "core/state_creator.h"
 #include "engine/empty_coords.h"
 #include "math/decompose.h"
+#include "math/sofa_vec.h"
 
 namespace sinew {
 
 namespace {
-
-// SOFA's Mat products and inverse, written out in its summation order.
-Mat3 mul(const Mat3& a, const Mat3& b) {
-  Mat3 r;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      double s = a(i, 0) * b(0, j);
-      s += a(i, 1) * b(1, j);
-      s += a(i, 2) * b(2, j);
-      r(i, j) = s;
-    }
-  return r;
-}
-
-Vec3 mul(const Mat3& a, const Vec3& v) {
-  Vec3 r;
-  for (int i = 0; i < 3; ++i) {
-    double s = a(i, 0) * v[0];
-    s += a(i, 1) * v[1];
-    s += a(i, 2) * v[2];
-    r[i] = s;
-  }
-  return r;
-}
-
-// Cofactors over the determinant; false when the determinant is zero (SOFA asserts).
-bool invert(const Mat3& f, Mat3& d) {
-  const double det = f(0, 0) * f(1, 1) * f(2, 2) + f(1, 0) * f(2, 1) * f(0, 2) + f(2, 0) * f(0, 1) * f(1, 2) -
-                     f(0, 0) * f(2, 1) * f(1, 2) - f(1, 0) * f(0, 1) * f(2, 2) - f(2, 0) * f(1, 1) * f(0, 2);
-  if (!(std::abs(det) > std::numeric_limits<double>::epsilon()) || !std::isfinite(det)) return false;
-  d(0, 0) = (f(1, 1) * f(2, 2) - f(2, 1) * f(1, 2)) / det;
-  d(1, 0) = (f(1, 2) * f(2, 0) - f(2, 2) * f(1, 0)) / det;
-  d(2, 0) = (f(1, 0) * f(2, 1) - f(2, 0) * f(1, 1)) / det;
-  d(0, 1) = (f(2, 1) * f(0, 2) - f(0, 1) * f(2, 2)) / det;
-  d(1, 1) = (f(2, 2) * f(0, 0) - f(0, 2) * f(2, 0)) / det;
-  d(2, 1) = (f(2, 0) * f(0, 1) - f(0, 0) * f(2, 1)) / det;
-  d(0, 2) = (f(0, 1) * f(1, 2) - f(1, 1) * f(0, 2)) / det;
-  d(1, 2) = (f(0, 2) * f(1, 0) - f(1, 2) * f(0, 0)) / det;
-  d(2, 2) = (f(0, 0) * f(1, 1) - f(1, 0) * f(0, 1)) / det;
-  return true;
-}
 
 // m += a·bᵀ·w, element by element as SOFA's dyad(a, b)*w.
 void add_dyad(Mat3& m, const Vec3& a, const Vec3& b, double w) {
@@ -150,7 +109,7 @@ void ShapeMatching::do_update() {
       }
       xcm0_[i] /= weight_[i];
       add_dyad(qx, xcm0_[i], xcm0_[i], -weight_[i]);
-      if (!invert(qx, qx_inv_[i]) && affine_ratio.value() != 0.0)
+      if (!sofa_invert(qx, qx_inv_[i]) && affine_ratio.value() != 0.0)
         msg_warning("cluster " + std::to_string(i) + " is flat or a single point: its affine fit is undefined");
     }
     old_size_ = nbp + nbf;
@@ -177,7 +136,7 @@ void ShapeMatching::do_update() {
       Mat3 r = Mat3::Zero();
       if (ratio != 1.0) r = polar_rotation(t);
       if (ratio != 0.0) {
-        const Mat3 affine = mul(t, qx_inv_[i]);
+        const Mat3 affine = sofa_mul(t, qx_inv_[i]);
         for (int a = 0; a < 3; ++a)
           for (int b = 0; b < 3; ++b) t(a, b) = affine(a, b) * ratio + r(a, b) * (1.0 - ratio);
       } else {
@@ -191,7 +150,7 @@ void ShapeMatching::do_update() {
       for (unsigned k : clusters[i])
         if (k < nbp) {
           const Vec3 d = at(rest, k) - xcm0_[i];
-          const Vec3 g = xcm_[i] + mul(t_[i], d);
+          const Vec3 g = xcm_[i] + sofa_mul(t_[i], d);
           for (int c = 0; c < 3; ++c) target[3 * k + c] += g[c];
         }
     for (std::size_t k = 0; k < nbp; ++k)

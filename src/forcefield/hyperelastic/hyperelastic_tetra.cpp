@@ -2,33 +2,14 @@
 
 #include <cmath>
 
+#include "math/sofa_vec.h"
+
 namespace sinew::hyper {
 
 namespace {
 
 // Local edges of a tetrahedron, SOFA's order.
 constexpr unsigned kLocalEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-
-Vec3 cross3(const Vec3& a, const Vec3& b) {
-  return Vec3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
-}
-double dot3(const Vec3& a, const Vec3& b) {
-  double r = a[0] * b[0];
-  r += a[1] * b[1];
-  r += a[2] * b[2];
-  return r;
-}
-// M·w, rows summed left to right.
-Vec3 mat_vec(const Mat3& m, const Vec3& w) {
-  Vec3 r;
-  for (int i = 0; i < 3; ++i) {
-    double s = m(i, 0) * w[0];
-    s += m(i, 1) * w[1];
-    s += m(i, 2) * w[2];
-    r[i] = s;
-  }
-  return r;
-}
 
 // StVK and the stable neo-Hookean are defined for J <= 0 (the latter is made for it).
 bool needs_log_j(Material m) { return m != Material::stvenant_kirchhoff && m != Material::stable_neo_hookean; }
@@ -103,7 +84,7 @@ std::vector<TetraHyperelasticity::Issue> TetraHyperelasticity::init(
     if (!ok) continue;
     Vec3 p[4];
     for (int j = 0; j < 4; ++j) p[j] = rest[t[j]];
-    const double vol6 = dot3(cross3(p[2] - p[0], p[3] - p[0]), p[1] - p[0]);
+    const double vol6 = sofa_dot(sofa_cross(p[2] - p[0], p[3] - p[0]), p[1] - p[0]);
     if (vol6 == 0 || !std::isfinite(vol6)) {
       issues.push_back({static_cast<int>(i), "degenerate tetrahedron (" + std::to_string(t[0]) + ", " +
                                                  std::to_string(t[1]) + ", " + std::to_string(t[2]) + ", " +
@@ -115,7 +96,7 @@ std::vector<TetraHyperelasticity::Issue> TetraHyperelasticity::init(
     r.volume = std::fabs(vol6 / 6);
     for (int j = 0; j < 4; ++j) {
       const double sign = j % 2 ? 1 : -1;
-      const Vec3 c = cross3(p[(j + 2) % 4] - p[(j + 1) % 4], p[(j + 3) % 4] - p[(j + 1) % 4]);
+      const Vec3 c = sofa_cross(p[(j + 2) % 4] - p[(j + 1) % 4], p[(j + 3) % 4] - p[(j + 1) % 4]);
       const Vec3 sc(sign * c[0], sign * c[1], sign * c[2]);
       r.sv[j] = Vec3(sc[0] / vol6, sc[1] / vol6, sc[2] / vol6);
     }
@@ -140,7 +121,7 @@ void TetraHyperelasticity::deformation(std::size_t i, std::span<const Vec3> x, C
   Sym3& C = c.strain.C;
   for (int k = 0; k < 3; ++k)
     for (int l = k; l < 3; ++l) C(k, l) = F(0, k) * F(0, l) + F(1, k) * F(1, l) + F(2, k) * F(2, l);
-  c.strain.J = dot3(cross3(dp[1], dp[2]), dp[0]) * r.vol_scale;
+  c.strain.J = sofa_dot(sofa_cross(dp[1], dp[2]), dp[0]) * r.vol_scale;
   c.strain.I1 = C(0, 0) + C(1, 1) + C(2, 2);
 }
 
@@ -164,7 +145,7 @@ void TetraHyperelasticity::add_force(std::span<const Vec3> x, std::span<Vec3> f)
     const Rest& r = rest_[i];
     const auto& t = tets_[i];
     for (int l = 0; l < 4; ++l) {
-      const Vec3 fl = mat_vec(c.F, mul(c.S, r.sv[l]));
+      const Vec3 fl = sofa_mul(c.F, mul(c.S, r.sv[l]));
       f[t[l]] -= Vec3(fl[0] * r.volume, fl[1] * r.volume, fl[2] * r.volume);
     }
   }
@@ -204,12 +185,12 @@ void TetraHyperelasticity::update_tangent() {
           case Material::ogden: ogden_dstress(c.strain, p_, cache, H[m], out); break;
           case Material::stable_neo_hookean: stable_neo_hookean_dstress(c.strain, p_, cache, H[m], out); break;
         }
-        const Vec3 v = mat_vec(F, mul(out, svk));
+        const Vec3 v = sofa_mul(F, mul(out, svk));
         N(m, 0) = v[0];
         N(m, 1) = v[1];
         N(m, 2) = v[2];
       }
-      const double sd = dot3(mul(c.S, svk), svl);  // geometric part s_k·S·s_l
+      const double sd = sofa_dot(mul(c.S, svk), svl);  // geometric part s_k·S·s_l
       Mat3& B = dfdx_[e];
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b) B(a, b) += ((a == b ? sd : 0.0) + N(a, b)) * r.volume;
@@ -224,7 +205,7 @@ void TetraHyperelasticity::add_dforce(std::span<const Vec3> dx, std::span<Vec3> 
     const Mat3& B = dfdx_[e];
     const unsigned v0 = edges_[e][0], v1 = edges_[e][1];
     const Vec3 d = dx[v0] - dx[v1];
-    const Vec3 dv0 = mat_vec(B, d);
+    const Vec3 dv0 = sofa_mul(B, d);
     Vec3 dv1;
     for (int i = 0; i < 3; ++i) dv1[i] = d[0] * B(0, i) + d[1] * B(1, i) + d[2] * B(2, i);
     df[v0] += Vec3(dv1[0] * k, dv1[1] * k, dv1[2] * k);

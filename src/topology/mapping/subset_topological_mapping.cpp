@@ -297,98 +297,92 @@ void SubsetTopologicalMapping::on_points_added(const TopologyChange& c) {
   if (added > 0) points->add_points(added, std::move(ancestors), std::move(coefficients), true);
 }
 
+namespace {
+
+// One kind's maps following a removal from the input: the input side first, then (when some
+// removed elements had partners) `remove` takes those partners out of the output and the output
+// side follows. Refused, with an error, when the maps do not cover the removed indices.
+template <class Remove>
+void follow_removal(const TopologyChange& c, Field<std::vector<unsigned>>& s2d_f, Field<std::vector<unsigned>>& d2s_f,
+                    const char* what, const Component& owner, Remove&& remove) {
+  std::vector<unsigned> s2d = s2d_f.value(), d2s = d2s_f.value();
+  if (!removal_fits(c.indices, s2d.size())) {
+    owner.msg_error(std::string(what) + "s removed from the input are not in this mapping's maps (the input changed "
+                                        "before init?): not followed");
+    return;
+  }
+  const std::vector<unsigned> gone = partners_of(c.indices, s2d);
+  remove_from_source(c.indices, s2d, d2s);
+  s2d_f.set(s2d);
+  d2s_f.set(d2s);
+  if (gone.empty()) return;
+  remove(gone);
+  remove_from_destination(gone, s2d, d2s, what, owner);
+  s2d_f.set(std::move(s2d));
+  d2s_f.set(std::move(d2s));
+}
+
+// One kind's maps following an addition to the input: `add` receives the elements that join
+// the output (vertices in output numbering) with their translated ancestors.
+template <std::size_t N, class Add>
+void follow_addition(const TopologyChange& c, const std::vector<std::array<unsigned, N>>& elements,
+                     const std::vector<unsigned>& point_s2d, Field<std::vector<unsigned>>& s2d_f,
+                     Field<std::vector<unsigned>>& d2s_f, Add&& add) {
+  std::vector<unsigned> s2d = s2d_f.value(), d2s = d2s_f.value();
+  std::vector<std::array<unsigned, N>> out;
+  std::vector<std::vector<unsigned>> ancestors;
+  std::vector<std::vector<double>> coefficients;
+  add_from_source(c, elements, point_s2d, s2d, d2s, out, ancestors, coefficients);
+  s2d_f.set(std::move(s2d));
+  d2s_f.set(std::move(d2s));
+  if (!out.empty()) add(out, std::move(ancestors), std::move(coefficients));
+}
+
+}  // namespace
+
 void SubsetTopologicalMapping::on_points_removed(const TopologyChange& c) {
   auto* points = find_from_output<PointSetTopologyModifier>();
   if (same_points.value()) {
     points->remove_points(c.indices, true);
     return;
   }
-  std::vector<unsigned> s2d = point_s2d.value(), d2s = point_d2s.value();
-  if (!removal_fits(c.indices, s2d.size())) {
-    msg_error("points removed from the input are not in this mapping's maps (the input changed before init?): "
-              "not followed");
-    return;
-  }
-  const std::vector<unsigned> gone = partners_of(c.indices, s2d);
-  remove_from_source(c.indices, s2d, d2s);
-  point_s2d.set(s2d);
-  point_d2s.set(d2s);
-  if (gone.empty()) return;
-  points->remove_points(gone, true);
-  remove_from_destination(gone, s2d, d2s, "Point", *this);
-  point_s2d.set(std::move(s2d));
-  point_d2s.set(std::move(d2s));
+  follow_removal(c, point_s2d, point_d2s, "Point", *this,
+                 [&](const std::vector<unsigned>& gone) { points->remove_points(gone, true); });
 }
 
 void SubsetTopologicalMapping::on_edges_added(const TopologyChange& c) {
   if (!handle_edges.value()) return;
   auto* edges = find_from_output<EdgeSetTopologyModifier>();
   if (!edges) return;
-  std::vector<unsigned> s2d = edge_s2d.value(), d2s = edge_d2s.value();
-  std::vector<Edge> out;
-  std::vector<std::vector<unsigned>> ancestors;
-  std::vector<std::vector<double>> coefficients;
-  add_from_source(c, input->edges(), point_s2d.value(), s2d, d2s, out, ancestors, coefficients);
-  edge_s2d.set(std::move(s2d));
-  edge_d2s.set(std::move(d2s));
-  if (!out.empty()) edges->add_edges(out, std::move(ancestors), std::move(coefficients));
+  follow_addition(c, input->edges(), point_s2d.value(), edge_s2d, edge_d2s, [&](auto& out, auto anc, auto coef) {
+    edges->add_edges(out, std::move(anc), std::move(coef));
+  });
 }
 
 void SubsetTopologicalMapping::on_edges_removed(const TopologyChange& c) {
   if (!handle_edges.value()) return;
   auto* edges = find_from_output<EdgeSetTopologyModifier>();
   if (!edges) return;
-  std::vector<unsigned> s2d = edge_s2d.value(), d2s = edge_d2s.value();
-  if (!removal_fits(c.indices, s2d.size())) {
-    msg_error("edges removed from the input are not in this mapping's maps (the input changed before init?): "
-              "not followed");
-    return;
-  }
-  const std::vector<unsigned> gone = partners_of(c.indices, s2d);
-  remove_from_source(c.indices, s2d, d2s);
-  edge_s2d.set(s2d);
-  edge_d2s.set(d2s);
-  if (gone.empty()) return;
-  edges->remove_edges(gone, false);
-  remove_from_destination(gone, s2d, d2s, "Edge", *this);
-  edge_s2d.set(std::move(s2d));
-  edge_d2s.set(std::move(d2s));
+  follow_removal(c, edge_s2d, edge_d2s, "Edge", *this,
+                 [&](const std::vector<unsigned>& gone) { edges->remove_edges(gone, false); });
 }
 
 void SubsetTopologicalMapping::on_triangles_added(const TopologyChange& c) {
   if (!handle_triangles.value()) return;
   auto* triangles = find_from_output<TriangleSetTopologyModifier>();
   if (!triangles) return;
-  std::vector<unsigned> s2d = triangle_s2d.value(), d2s = triangle_d2s.value();
-  std::vector<Triangle> out;
-  std::vector<std::vector<unsigned>> ancestors;
-  std::vector<std::vector<double>> coefficients;
-  add_from_source(c, input->triangles(), point_s2d.value(), s2d, d2s, out, ancestors, coefficients);
-  triangle_s2d.set(std::move(s2d));
-  triangle_d2s.set(std::move(d2s));
-  if (!out.empty()) triangles->add_triangles(out, std::move(ancestors), std::move(coefficients));
+  follow_addition(c, input->triangles(), point_s2d.value(), triangle_s2d, triangle_d2s,
+                  [&](auto& out, auto anc, auto coef) { triangles->add_triangles(out, std::move(anc), std::move(coef)); });
 }
 
 void SubsetTopologicalMapping::on_triangles_removed(const TopologyChange& c) {
   if (!handle_triangles.value()) return;
   auto* triangles = find_from_output<TriangleSetTopologyModifier>();
   if (!triangles) return;
-  std::vector<unsigned> s2d = triangle_s2d.value(), d2s = triangle_d2s.value();
-  if (!removal_fits(c.indices, s2d.size())) {
-    msg_error("triangles removed from the input are not in this mapping's maps (the input changed before init?): "
-              "not followed");
-    return;
-  }
-  const std::vector<unsigned> gone = partners_of(c.indices, s2d);
-  remove_from_source(c.indices, s2d, d2s);
-  triangle_s2d.set(s2d);
-  triangle_d2s.set(d2s);
-  if (gone.empty()) return;
   // Edges left without a triangle go too unless edges are followed on their own.
-  triangles->remove_triangles(gone, !handle_edges.value(), false);
-  remove_from_destination(gone, s2d, d2s, "Triangle", *this);
-  triangle_s2d.set(std::move(s2d));
-  triangle_d2s.set(std::move(d2s));
+  follow_removal(c, triangle_s2d, triangle_d2s, "Triangle", *this, [&](const std::vector<unsigned>& gone) {
+    triangles->remove_triangles(gone, !handle_edges.value(), false);
+  });
 }
 
 void register_subset_topological_mapping(Registry& r) {
