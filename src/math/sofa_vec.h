@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 #include "math/types.h"
 
@@ -29,21 +30,26 @@ inline Mat3 sofa_mul(const Mat3& a, const Mat3& b) {
   return r;
 }
 
-// SOFA's 3×3 inverse: cofactors over the determinant (its term order). False, `out`
-// unchanged, when |det| ≤ DBL_EPSILON or det is not finite.
-inline bool sofa_invert(const Mat3& f, Mat3& out) {
-  const double det = f(0, 0) * f(1, 1) * f(2, 2) + f(1, 0) * f(2, 1) * f(0, 2) + f(2, 0) * f(0, 1) * f(1, 2) -
-                     f(0, 0) * f(2, 1) * f(1, 2) - f(1, 0) * f(0, 1) * f(2, 2) - f(2, 0) * f(1, 1) * f(0, 2);
-  if (!(std::abs(det) > 2.220446049250313e-16) || !std::isfinite(det)) return false;
-  out(0, 0) = (f(1, 1) * f(2, 2) - f(2, 1) * f(1, 2)) / det;
-  out(1, 0) = (f(1, 2) * f(2, 0) - f(2, 2) * f(1, 0)) / det;
-  out(2, 0) = (f(1, 0) * f(2, 1) - f(2, 0) * f(1, 1)) / det;
-  out(0, 1) = (f(2, 1) * f(0, 2) - f(0, 1) * f(2, 2)) / det;
-  out(1, 1) = (f(2, 2) * f(0, 0) - f(0, 2) * f(2, 0)) / det;
-  out(2, 1) = (f(2, 0) * f(0, 1) - f(0, 0) * f(2, 1)) / det;
-  out(0, 2) = (f(0, 1) * f(1, 2) - f(1, 1) * f(0, 2)) / det;
-  out(1, 2) = (f(0, 2) * f(1, 0) - f(1, 2) * f(0, 0)) / det;
-  out(2, 2) = (f(0, 0) * f(1, 1) - f(1, 0) * f(0, 1)) / det;
+// Sum of the six triple products, in SOFA's order.
+inline double sofa_det(const Mat3& m) {
+  return m(0, 0) * m(1, 1) * m(2, 2) + m(1, 0) * m(2, 1) * m(0, 2) + m(2, 0) * m(0, 1) * m(1, 2) -
+         m(0, 0) * m(2, 1) * m(1, 2) - m(1, 0) * m(0, 1) * m(2, 2) - m(2, 0) * m(1, 1) * m(0, 2);
+}
+
+// Inverse by cofactors divided by `det` (the caller's sofa_det(a), which it often needs too).
+// Like SOFA, refuses (and leaves `inv` untouched) when |det| ≤ DBL_EPSILON, an absolute
+// threshold.
+inline bool sofa_invert(const Mat3& a, double det, Mat3& inv) {
+  if (std::fabs(det) <= std::numeric_limits<double>::epsilon()) return false;
+  inv(0, 0) = (a(1, 1) * a(2, 2) - a(2, 1) * a(1, 2)) / det;
+  inv(1, 0) = (a(1, 2) * a(2, 0) - a(2, 2) * a(1, 0)) / det;
+  inv(2, 0) = (a(1, 0) * a(2, 1) - a(2, 0) * a(1, 1)) / det;
+  inv(0, 1) = (a(2, 1) * a(0, 2) - a(0, 1) * a(2, 2)) / det;
+  inv(1, 1) = (a(2, 2) * a(0, 0) - a(0, 2) * a(2, 0)) / det;
+  inv(2, 1) = (a(2, 0) * a(0, 1) - a(0, 0) * a(2, 1)) / det;
+  inv(0, 2) = (a(0, 1) * a(1, 2) - a(1, 1) * a(0, 2)) / det;
+  inv(1, 2) = (a(0, 2) * a(1, 0) - a(1, 2) * a(0, 0)) / det;
+  inv(2, 2) = (a(0, 0) * a(1, 1) - a(1, 0) * a(0, 1)) / det;
   return true;
 }
 

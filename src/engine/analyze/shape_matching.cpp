@@ -109,7 +109,8 @@ void ShapeMatching::do_update() {
       }
       xcm0_[i] /= weight_[i];
       add_dyad(qx, xcm0_[i], xcm0_[i], -weight_[i]);
-      if (!sofa_invert(qx, qx_inv_[i]) && affine_ratio.value() != 0.0)
+      const double det = sofa_det(qx);
+      if ((!std::isfinite(det) || !sofa_invert(qx, det, qx_inv_[i])) && affine_ratio.value() != 0.0)
         msg_warning("cluster " + std::to_string(i) + " is flat or a single point: its affine fit is undefined");
     }
     old_size_ = nbp + nbf;
