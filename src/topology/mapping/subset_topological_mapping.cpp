@@ -101,6 +101,30 @@ std::vector<unsigned> partners_of(const std::vector<unsigned>& removed, const st
   return out;
 }
 
+// Whether every ancestor of new element i that weighs (non-zero coefficient) has a partner.
+bool ancestors_inside(const TopologyChange& c, std::size_t i, const std::vector<unsigned>& s2d) {
+  if (i >= c.ancestors.size()) return true;
+  for (std::size_t a = 0; a < c.ancestors[i].size(); ++a) {
+    if (c.coefficients[i][a] == 0.0) continue;
+    const unsigned anc = c.ancestors[i][a];
+    if (anc >= s2d.size() || s2d[anc] == kNone) return false;
+  }
+  return true;
+}
+
+// New element i's weighing ancestors through the map, appended as one row (with their weights).
+void translate_ancestors(const TopologyChange& c, std::size_t i, const std::vector<unsigned>& s2d,
+                         std::vector<std::vector<unsigned>>& ancestors, std::vector<std::vector<double>>& coefficients) {
+  ancestors.emplace_back();
+  coefficients.emplace_back();
+  if (i >= c.ancestors.size()) return;
+  for (std::size_t a = 0; a < c.ancestors[i].size(); ++a) {
+    if (c.coefficients[i][a] == 0.0) continue;
+    ancestors.back().push_back(s2d[c.ancestors[i][a]]);
+    coefficients.back().push_back(c.coefficients[i][a]);
+  }
+}
+
 // New source elements `added` (their vertices `elements[i]`): those whose vertices and weighted
 // ancestors all have partners join the destination, appended in order; their ancestors are
 // translated. Fills `out`, `out_ancestors`, `out_coefficients` for the destination's modifier.
@@ -118,28 +142,14 @@ void add_from_source(const TopologyChange& c, const std::vector<std::array<unsig
     s2d[s] = kNone;
     if (s >= elements.size()) continue;
     const std::array<unsigned, N> data = through(elements[s], point_s2d);
-    bool inside = std::find(data.begin(), data.end(), kNone) == data.end();
-    if (with_ancestors && i < c.ancestors.size())
-      for (std::size_t a = 0; a < c.ancestors[i].size() && inside; ++a) {
-        if (c.coefficients[i][a] == 0.0) continue;
-        const unsigned anc = c.ancestors[i][a];
-        if (anc >= s2d.size() || s2d[anc] == kNone) inside = false;
-      }
+    const bool inside = std::find(data.begin(), data.end(), kNone) == data.end() &&
+                        (!with_ancestors || ancestors_inside(c, i, s2d));
     if (!inside) continue;
     const auto d = static_cast<unsigned>(d2s.size());
     out.push_back(data);
     d2s.push_back(s);
     s2d[s] = d;
-    if (with_ancestors) {
-      out_ancestors.emplace_back();
-      out_coefficients.emplace_back();
-      if (i < c.ancestors.size())
-        for (std::size_t a = 0; a < c.ancestors[i].size(); ++a) {
-          if (c.coefficients[i][a] == 0.0) continue;
-          out_ancestors.back().push_back(s2d[c.ancestors[i][a]]);
-          out_coefficients.back().push_back(c.coefficients[i][a]);
-        }
-    }
+    if (with_ancestors) translate_ancestors(c, i, s2d, out_ancestors, out_coefficients);
   }
 }
 
@@ -270,26 +280,10 @@ void SubsetTopologicalMapping::on_points_added(const TopologyChange& c) {
   unsigned added = 0;
   for (unsigned i = 0; i < n; ++i) {
     const std::size_t s = first + i;
-    bool inside = true;
-    if (with_ancestors && i < c.ancestors.size())
-      for (std::size_t a = 0; a < c.ancestors[i].size() && inside; ++a) {
-        if (c.coefficients[i][a] == 0.0) continue;
-        const unsigned anc = c.ancestors[i][a];
-        if (anc >= s2d.size() || s2d[anc] == kNone) inside = false;
-      }
-    if (!inside) continue;
+    if (with_ancestors && !ancestors_inside(c, i, s2d)) continue;
     s2d[s] = static_cast<unsigned>(d2s.size());
     d2s.push_back(static_cast<unsigned>(s));
-    if (with_ancestors) {
-      ancestors.emplace_back();
-      coefficients.emplace_back();
-      if (i < c.ancestors.size())
-        for (std::size_t a = 0; a < c.ancestors[i].size(); ++a) {
-          if (c.coefficients[i][a] == 0.0) continue;
-          ancestors.back().push_back(s2d[c.ancestors[i][a]]);
-          coefficients.back().push_back(c.coefficients[i][a]);
-        }
-    }
+    if (with_ancestors) translate_ancestors(c, i, s2d, ancestors, coefficients);
     ++added;
   }
   point_s2d.set(std::move(s2d));
