@@ -5,6 +5,7 @@
 #include "core/registry.h"
 #include "core/state_creator.h"
 #include "io/sofa_quat.h"
+#include "math/sofa_vec.h"
 
 namespace sinew {
 
@@ -36,14 +37,6 @@ void BoxROI::roi_init() {
     msg_warning("oriented boxes are not supported in " + std::to_string(spatial_dim()) + "D");
 }
 
-namespace {
-double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-void normalize3(Vec3& v) {
-  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  if (n > std::numeric_limits<double>::epsilon()) v /= n;
-}
-}  // namespace
-
 bool BoxROI::roi_do_update() {
   normalize_boxes();
   oriented_.clear();
@@ -53,17 +46,17 @@ bool BoxROI::roi_do_update() {
       const Vec3 p0(b[0], b[1], b[2]), p1(b[3], b[4], b[5]), p2(b[6], b[7], b[8]);
       const double depth = b[9];
       Vec3 normal = io::cross3((p1 - p0), p2 - p0);
-      normalize3(normal);
+      sofa_normalize(normal);
       const Vec3 p3 = p0 + (p2 - p1);
       const Vec3 p6 = p2 + normal * depth;
       Vec3 plane0 = io::cross3((p1 - p0), normal);
-      normalize3(plane0);
+      sofa_normalize(plane0);
       Vec3 plane1 = io::cross3((p2 - p3), p6 - p3);
-      normalize3(plane1);
+      sofa_normalize(plane1);
       Vec3 plane2 = io::cross3((p3 - p0), normal);
-      normalize3(plane2);
+      sofa_normalize(plane2);
       Vec3 plane3 = io::cross3((p2 - p1), p6 - p2);
-      normalize3(plane3);
+      sofa_normalize(plane3);
       o.p0 = p0;
       o.p2 = p2;
       o.normal = normal;
@@ -71,8 +64,8 @@ bool BoxROI::roi_do_update() {
       o.plane1 = plane1;
       o.plane2 = plane2;
       o.plane3 = plane3;
-      o.width = std::fabs(dot3(p2 - p0, plane0));
-      o.length = std::fabs(dot3(p2 - p0, plane2));
+      o.width = std::fabs(sofa_dot(p2 - p0, plane0));
+      o.length = std::fabs(sofa_dot(p2 - p0, plane2));
       o.depth = depth;
       oriented_.push_back(o);
     }
@@ -94,9 +87,9 @@ bool BoxROI::point_in_roi(const double* p) const {
     for (const OrientedBox& o : oriented_) {
       const Vec3 pv0(p[0] - o.p0[0], p[1] - o.p0[1], p[2] - o.p0[2]);
       const Vec3 pv1(p[0] - o.p2[0], p[1] - o.p2[1], p[2] - o.p2[2]);
-      if (std::fabs(dot3(pv0, o.plane0)) <= o.width && std::fabs(dot3(pv1, o.plane1)) <= o.width &&
-          std::fabs(dot3(pv0, o.plane2)) <= o.length && std::fabs(dot3(pv1, o.plane3)) <= o.length &&
-          std::fabs(dot3(pv0, o.normal)) <= std::fabs(o.depth / 2))
+      if (std::fabs(sofa_dot(pv0, o.plane0)) <= o.width && std::fabs(sofa_dot(pv1, o.plane1)) <= o.width &&
+          std::fabs(sofa_dot(pv0, o.plane2)) <= o.length && std::fabs(sofa_dot(pv1, o.plane3)) <= o.length &&
+          std::fabs(sofa_dot(pv0, o.normal)) <= std::fabs(o.depth / 2))
         return true;
     }
   return false;

@@ -5,6 +5,7 @@
 #include "core/registry.h"
 #include "core/state_creator.h"
 #include "io/sofa_quat.h"
+#include "math/sofa_vec.h"
 
 namespace sinew {
 
@@ -17,13 +18,6 @@ SphereROI::SphereROI(StateType type) : BaseROI(type) {
   indices.add_alias("pointIndices");
   position.add_alias("rest_position");
 }
-
-namespace {
-void normalize3(Vec3& v) {
-  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  if (n > std::numeric_limits<double>::epsilon()) v /= n;
-}
-}  // namespace
 
 bool SphereROI::roi_do_update() {
   c_ = centers.get();
@@ -41,12 +35,12 @@ bool SphereROI::roi_do_update() {
   }
   if (edge_angle.get() > 0) {
     Vec3 d = direction.get();
-    normalize3(d);
+    sofa_normalize(d);
     direction.edit() = d;
   }
   if (tri_angle.get() > 0) {
     Vec3 n = normal.get();
-    normalize3(n);
+    sofa_normalize(n);
     normal.edit() = n;
   }
   dir_ = direction.get();
@@ -68,7 +62,7 @@ bool SphereROI::edge_extra(const Edge& e) const {
   const double* x0 = point(e[0]);
   const double* x1 = point(e[1]);
   Vec3 n(x1[0] - x0[0], x1[1] - x0[1], x1[2] - x0[2]);
-  normalize3(n);
+  sofa_normalize(n);
   return std::fabs(n[0] * dir_[0] + n[1] * dir_[1] + n[2] * dir_[2]) < std::fabs(std::cos(a * M_PI / 180.0));
 }
 
@@ -81,7 +75,7 @@ bool SphereROI::triangle_extra(const Triangle& t) const {
   const Vec3 u(x2[0] - x0[0], x2[1] - x0[1], x2[2] - x0[2]);
   const Vec3 v(x1[0] - x0[0], x1[1] - x0[1], x1[2] - x0[2]);
   Vec3 n = io::cross3(u, v);
-  normalize3(n);
+  sofa_normalize(n);
   return n[0] * normal_[0] + n[1] * normal_[1] + n[2] * normal_[2] < std::cos(a * M_PI / 180.0);
 }
 

@@ -15,6 +15,12 @@ inline Vec3 sofa_cross(const Vec3& a, const Vec3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 inline double sofa_norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+// SOFA's Vec::normalize: divided by its norm unless that is ≤ DBL_EPSILON (then unchanged).
+inline void sofa_normalize(Vec3& v) {
+  const double n = sofa_norm(v);
+  if (n > std::numeric_limits<double>::epsilon())
+    for (int i = 0; i < 3; ++i) v[i] /= n;
+}
 
 // M·v, each row summed left to right (SOFA's Mat * Vec).
 inline Vec3 sofa_mul(const Mat3& m, const Vec3& v) {

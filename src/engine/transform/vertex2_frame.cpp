@@ -6,6 +6,7 @@
 
 #include "core/registry.h"
 #include "math/quat.h"
+#include "math/sofa_vec.h"
 
 namespace sinew {
 
@@ -14,16 +15,6 @@ FlatVec rigid_list() {
   FlatVec v;
   v.width = 7;
   return v;
-}
-// SOFA's Vec arithmetic, component by component.
-double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross3(const Vec3& a, const Vec3& b) {
-  return Vec3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
-}
-void normalize3(Vec3& v) {
-  const double n = std::sqrt(dot3(v, v));
-  if (n > std::numeric_limits<double>::epsilon())
-    for (int i = 0; i < 3; ++i) v[i] /= n;
 }
 }  // namespace
 
@@ -53,7 +44,7 @@ void Vertex2Frame::do_update() {
     else if (axis_id == 2) a = za;
     // axisToQuat: identity for a null axis.
     Quat q2;
-    const double an = std::sqrt(dot3(a, a));
+    const double an = std::sqrt(sofa_dot(a, a));
     if (an >= eps) {
       a /= an;
       const double sp = std::sin(angle / 2.0), cp = std::cos(angle / 2.0);
@@ -86,13 +77,13 @@ void Vertex2Frame::do_update() {
     }
     for (std::size_t i = 0; i < n; ++i) {
       Vec3 z = invert_normals.get() ? Vec3(-nrm[i]) : nrm[i];
-      normalize3(z);
+      sofa_normalize(z);
       Vec3 y(0.0, 1.0, 0.0);
-      if (1.0 - std::fabs(dot3(y, z)) <= eps) y = Vec3(0.0, 0.0, 1.0);
-      Vec3 xa = cross3(y, z);
-      normalize3(xa);
-      y = cross3(z, xa);
-      normalize3(y);
+      if (1.0 - std::fabs(sofa_dot(y, z)) <= eps) y = Vec3(0.0, 0.0, 1.0);
+      Vec3 xa = sofa_cross(y, z);
+      sofa_normalize(xa);
+      y = sofa_cross(z, xa);
+      sofa_normalize(y);
       put(i, x[i], orientation(xa, y, z));
     }
   } else {
@@ -103,13 +94,13 @@ void Vertex2Frame::do_update() {
     Quat last;
     for (std::size_t i = 0; i + 1 < n; ++i) {
       Vec3 xa = x[i + 1] - x[i];
-      normalize3(xa);
+      sofa_normalize(xa);
       Vec3 z(1.0, 0.0, 0.0);
-      if (1.0 - std::fabs(dot3(z, xa)) <= eps) z = Vec3(0.0, 0.0, 1.0);
-      Vec3 y = cross3(z, xa);
-      normalize3(y);
-      z = cross3(xa, y);
-      normalize3(z);
+      if (1.0 - std::fabs(sofa_dot(z, xa)) <= eps) z = Vec3(0.0, 0.0, 1.0);
+      Vec3 y = sofa_cross(z, xa);
+      sofa_normalize(y);
+      z = sofa_cross(xa, y);
+      sofa_normalize(z);
       last = orientation(xa, y, z);
       put(i, x[i], last);
     }
