@@ -1,5 +1,5 @@
 // Helpers shared by the collision models: element boxes that are skipped
-// (non-finite or degenerate input), SOFA's normalisation, neighbourhoods.
+// (non-finite or degenerate input), neighbourhoods.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "collision/collision_model.h"
+#include "math/sofa_vec.h"  // sofa_normalize
 
 namespace sinew {
 
@@ -17,12 +18,6 @@ inline bool finite_box(const Aabb& b) { return b.min.allFinite() && b.max.allFin
 // overlaps anything and leaves the unions of its ancestors unchanged. The
 // first such element of a model is reported once, naming model and element.
 Aabb skipped_box(const CollisionModelBase& m, const char* what, unsigned index, const char* why);
-
-// SOFA's Vec::normalize: divides only when the norm exceeds machine epsilon.
-inline void sofa_normalize(Vec3& n) {
-  const double len = n.norm();
-  if (len > std::numeric_limits<double>::epsilon()) n /= len;
-}
 
 // Points joined to point `v` by an edge of the topology (SOFA's getVerticesAroundVertex).
 std::vector<unsigned> vertices_around_vertex(const MeshTopologyBase& t, unsigned v);
