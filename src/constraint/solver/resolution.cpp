@@ -1,33 +1,10 @@
 #include "constraint/solver/resolution.h"
 
 #include <cmath>
-#include <limits>
+
+#include "math/sofa_vec.h"
 
 namespace sinew {
-
-namespace {
-
-// Inverse of a 3×3 matrix (row-major), with SOFA's determinant, zero test and
-// cofactor order (type::invertMatrix), so that warm-started blocks match.
-bool invert3(const double m[9], double out[9]) {
-  auto a = [m](int r, int c) { return m[r * 3 + c]; };
-  const double det = a(0, 0) * a(1, 1) * a(2, 2) + a(1, 0) * a(2, 1) * a(0, 2) + a(2, 0) * a(0, 1) * a(1, 2) -
-                     a(0, 0) * a(2, 1) * a(1, 2) - a(1, 0) * a(0, 1) * a(2, 2) - a(2, 0) * a(1, 1) * a(0, 2);
-  if (std::abs(det) <= std::numeric_limits<double>::epsilon() || !std::isfinite(det)) return false;
-  auto o = [out](int r, int c) -> double& { return out[r * 3 + c]; };
-  o(0, 0) = (a(1, 1) * a(2, 2) - a(2, 1) * a(1, 2)) / det;
-  o(1, 0) = (a(1, 2) * a(2, 0) - a(2, 2) * a(1, 0)) / det;
-  o(2, 0) = (a(1, 0) * a(2, 1) - a(2, 0) * a(1, 1)) / det;
-  o(0, 1) = (a(2, 1) * a(0, 2) - a(0, 1) * a(2, 2)) / det;
-  o(1, 1) = (a(2, 2) * a(0, 0) - a(0, 2) * a(2, 0)) / det;
-  o(2, 1) = (a(2, 0) * a(0, 1) - a(0, 0) * a(2, 1)) / det;
-  o(0, 2) = (a(0, 1) * a(1, 2) - a(1, 1) * a(0, 2)) / det;
-  o(1, 2) = (a(0, 2) * a(1, 0) - a(1, 2) * a(0, 0)) / det;
-  o(2, 2) = (a(0, 0) * a(1, 1) - a(1, 0) * a(0, 1)) / det;
-  return true;
-}
-
-}  // namespace
 
 bool resolution_init(ConstraintBlock& b, const ConstraintProblem& p, double* f) {
   const int j = b.first;
@@ -40,12 +17,15 @@ bool resolution_init(ConstraintBlock& b, const ConstraintProblem& p, double* f) 
       if (b.warm) f[j] = b.warm[0];
       return true;
     case ConstraintBlock::Kind::bilateral3: {
-      double m[9];
+      // SOFA's determinant, zero test and cofactor order (type::invertMatrix), so that
+      // warm-started blocks match.
+      Mat3 m, inv;
       for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) m[r * 3 + c] = p.w(j + r, j + c);
-      const bool ok = invert3(m, b.inv);
-      if (!ok)
-        for (double& v : b.inv) v = 0.0;
+        for (int c = 0; c < 3; ++c) m(r, c) = p.w(j + r, j + c);
+      const double det = sofa_det(m);
+      const bool ok = std::isfinite(det) && sofa_invert(m, det, inv);
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) b.inv[r * 3 + c] = ok ? inv(r, c) : 0.0;
       if (b.warm)
         for (int r = 0; r < 3; ++r) f[j + r] = b.warm[r];
       return ok;
