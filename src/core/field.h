@@ -125,6 +125,9 @@ class BaseField {
   virtual void copy_from(const BaseField& other) = 0;
   void changed() {
     ++version_;
+    // A write stands until the parent changes again, read or not (SOFA's setValue cleans the
+    // Data): without this, a field written before its first read got the parent's value back.
+    if (parent_) parent_version_seen_ = parent_->version_;
     if (change_hook_) change_hook_(*this);
   }
   void copy_generic(const BaseField& other);

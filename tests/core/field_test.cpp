@@ -150,6 +150,25 @@ TEST(FieldLink, LocalEditIsOverwrittenWhenParentChanges) {
   EXPECT_EQ(child.get(), 7);
 }
 
+// A write before the first read stands too (the sparse grid writes its src-linked cells at
+// init, before anyone reads them); the next change of the parent still wins.
+TEST(FieldLink, WriteBeforeTheFirstReadStandsUntilTheParentChanges) {
+  Owner o;
+  Field<int> parent{&o, "a", 1, ""};
+  Field<int> child{&o, "b", 0, ""};
+  child.set_parent(&parent);
+  child.set(42);
+  EXPECT_EQ(child.get(), 42);
+  EXPECT_EQ(child.get(), 42);
+  parent.set(7);
+  EXPECT_EQ(child.get(), 7);
+
+  Field<int> read_child{&o, "c", 0, ""};
+  read_child.set_parent(&parent);
+  EXPECT_TRUE(read_child.read("5"));
+  EXPECT_EQ(read_child.get(), 5);
+}
+
 TEST(FieldLink, ChainsOfLinksPropagate) {
   Owner o;
   Field<int> a{&o, "a", 1, ""};
