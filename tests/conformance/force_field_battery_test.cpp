@@ -91,6 +91,13 @@ std::string hexas(const std::string& body, const char* gravity = "0 0 0") {
   return node("<RegularGridTopology name='grid' n='3 2 2' min='0 0 0' max='2 1 1'/>"
               "<MechanicalObject name='dofs'/>" + body, gravity);
 }
+// Two hexahedra of a sparse grid over a closed 2×1×1 box, condensed from one virtual finer level.
+std::string sparse_hexas(const std::string& body) {
+  return node("<SparseGridTopology name='grid' n='3 2 2' nbVirtualFinerLevels='1'"
+              " position='0 0 0  2 0 0  2 1 0  0 1 0  0 0 1  2 0 1  2 1 1  0 1 1'"
+              " triangles='0 2 1  0 3 2  4 5 6  4 6 7  0 1 5  0 5 4  1 2 6  1 6 5  2 3 7  2 7 6  3 0 4  3 4 7'/>"
+              "<MechanicalObject name='dofs'/>" + body);
+}
 // Two prisms sharing the quad (1, 2, 5, 4), and two pyramids on either side of the square base.
 std::string prisms(const std::string& body) {
   return node("<MeshTopology name='topo' position='0 0 0  1 0 0  0 1 0  0 0 1  1 0 1.1  0 1 1  1.2 1.1 0  1.1 1 1'"
@@ -353,6 +360,9 @@ const std::vector<ForceFieldCase> kCases = {
     {"ParallelHexahedronFEMForceField", hexas(ff("ParallelHexahedronFEMForceField", kElastic + "method='large'")),
      kEnergy | kCorotational, 0.2},
     {"HexahedronFEMForceFieldAndMass", hexas(ff("HexahedronFEMForceFieldAndMass", kElastic + "density='2'")),
+     kCorotational, 0.2},
+    {"NonUniformHexahedronFEMForceFieldAndMass",
+     sparse_hexas(ff("NonUniformHexahedronFEMForceFieldAndMass", kElastic + "density='2' nbVirtualFinerLevels='1'")),
      kCorotational, 0.2},
     // SOFA assembles R·K·Rᵀ with frames other than add_dforce's once they turn (hexahedral_fem_test.cpp).
     {"HexahedralFEMForceField_large", hexas(ff("HexahedralFEMForceField", kElastic + "method='large'")),

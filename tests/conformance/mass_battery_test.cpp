@@ -53,6 +53,13 @@ std::string hexas(const std::string& body) {
   return node("<RegularGridTopology name='grid' n='3 2 2' min='0 0 0' max='2 1 1'/><MechanicalObject name='dofs'/>" +
               body);
 }
+// Two hexahedra of a sparse grid over a closed 2×1×1 box, with one virtual finer level.
+std::string sparse_hexas(const std::string& body) {
+  return node("<SparseGridTopology name='grid' n='3 2 2' nbVirtualFinerLevels='1'"
+              " position='0 0 0  2 0 0  2 1 0  0 1 0  0 0 1  2 0 1  2 1 1  0 1 1'"
+              " triangles='0 2 1  0 3 2  4 5 6  4 6 7  0 1 5  0 5 4  1 2 6  1 6 5  2 3 7  2 7 6  3 0 4  3 4 7'/>"
+              "<MechanicalObject name='dofs'/>" + body);
+}
 // Two triangles in the plane, as Vec2d points.
 std::string triangles2d(const std::string& body) {
   return node("<MeshTopology name='topo' position='0 0 0  1 0 0  0 1 0  1.1 0.9 0' triangles='0 1 2  1 3 2'/>"
@@ -97,6 +104,11 @@ const std::vector<MassCase> kCases = {
     // SOFA's element mass couples every node pair by ρ·V·8/27 (hexa_fem_and_mass_test.cpp): Σ M ≠ ρ·V = total().
     {"HexahedronFEMForceFieldAndMass",
      hexas(mass("HexahedronFEMForceFieldAndMass", "youngModulus='1000' poissonRatio='0.3' density='2'")), 0},
+    // The same mass condensed from the grid's finer level (SOFA's rule for gravity: ρ·V per cell).
+    {"NonUniformHexahedronFEMForceFieldAndMass",
+     sparse_hexas(mass("NonUniformHexahedronFEMForceFieldAndMass",
+                       "youngModulus='1000' poissonRatio='0.3' density='2' nbVirtualFinerLevels='1'")),
+     0},
 };
 
 // Registered masses without a case, and why.

@@ -31,6 +31,13 @@ void hexa_element_materials(const Component& c, const std::vector<double>& young
   }
 }
 
+double hexa_mass_integral(double density) {
+  const double t1 = 1, t2 = 1, t3 = 1, t9 = t1 * t2;
+  return (t1 * t3 / 72.0 + t2 * t3 / 72.0 + t9 * t3 / 216.0 + t3 / 24.0 + 1.0 / 8.0 + t9 / 72.0 + t1 / 24.0 +
+          t2 / 24.0) *
+         density;
+}
+
 template <class Role>
 void HexahedronFEMBase<Role>::init() {
   Role::init();
@@ -151,12 +158,7 @@ void HexahedronFEMForceFieldAndMass::init() {
   if (state() != ComponentState::valid) return;
   const std::size_t ne = fem_.size(), np = rest_.size();
   const double rho = density.value();
-  // SOFA's closed-form integral of the trilinear shape products with all corner
-  // signs squared (= 8/27), evaluated in its literal order.
-  const double t1 = 1, t2 = 1, t3 = 1, t9 = t1 * t2;
-  const double integral =
-      (t1 * t3 / 72.0 + t2 * t3 / 72.0 + t9 * t3 / 216.0 + t3 / 24.0 + 1.0 / 8.0 + t9 / 72.0 + t1 / 24.0 + t2 / 24.0) *
-      rho;
+  const double integral = hexa_mass_integral(rho);
   element_mass_.assign(ne, 0.0);
   particle_mass_.assign(np, 0.0);
   // On a sparse grid both masses are scaled by the grid's filling coefficient.

@@ -19,6 +19,10 @@ void hexa_element_materials(const Component& c, const std::vector<double>& young
                             const std::vector<double>& poisson, std::size_t ne, std::vector<double>& E,
                             std::vector<double>& nu);
 
+// SOFA's integrateMass: the entry every node pair of a hexahedron gets per unit volume (its
+// closed form with all corner signs squared, 8/27 of the density), evaluated in its order.
+double hexa_mass_integral(double density);
+
 // The force field on top of either role: ForceField, or Mass for the "AndMass" variant.
 template <class Role>
 class HexahedronFEMBase : public Role, public RotationFinder {

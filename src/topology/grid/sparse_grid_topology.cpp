@@ -224,18 +224,30 @@ void SparseGridTopology::generate() {
   } else {
     // Virtual finer levels: the finest grid has (n-1)·2^levels + 1 points per axis (same box),
     // then it is coarsened `levels` times.
-    Level finest;
-    if (!build_from_surface(finest, finest_dims(dims, levels), min.get(), max.get(), 0.0, false, vertices, facets)) {
+    // The virtual levels are kept (finest first) for the components that integrate over them.
+    std::vector<Level> finer(static_cast<std::size_t>(levels));
+    if (!build_from_surface(finer[0], finest_dims(dims, levels), min.get(), max.get(), 0.0, false, vertices,
+                            facets)) {
       build_failed_ = true;
       return;
     }
-    for (int i = 0; i < levels; ++i) {
-      Level coarser;
-      coarsen(i == 0 ? finest : level, coarser);
-      level = std::move(coarser);
-    }
+    for (std::size_t i = 1; i < finer.size(); ++i) coarsen(finer[i - 1], finer[i]);
+    coarsen(finer.back(), level);
+    virtual_levels_ = std::move(finer);
   }
   adopt(std::move(level));
+}
+
+int SparseGridTopology::kept_levels() const {
+  nb_points();  // builds the grid first
+  return children_.empty() ? 0 : static_cast<int>(virtual_levels_.size());
+}
+
+SparseGridTopology::LevelView SparseGridTopology::level(int k) const {
+  const std::vector<Hexa>& hexas = hexahedra();  // builds the grid first
+  if (k <= 0) return {position.get(), hexas, stiffness_coefs_, children_};
+  const Level& L = virtual_levels_[virtual_levels_.size() - static_cast<std::size_t>(k)];
+  return {L.points, L.hexas, L.stiffness, L.children};
 }
 
 VecNi<3> SparseGridTopology::finest_dims(VecNi<3> dims, int levels) {
@@ -250,6 +262,8 @@ bool SparseGridTopology::prepare(VecNi<3>& dims, std::vector<Vec3>& vertices,
   types_.clear();
   stiffness_coefs_.clear();
   mass_coefs_.clear();
+  children_.clear();
+  virtual_levels_.clear();
   dims = n.get();
   for (int a = 0; a < 3; ++a)
     if (dims[a] < 2) dims[a] = 2;
@@ -339,14 +353,6 @@ bool SparseGridTopology::prepare(VecNi<3>& dims, std::vector<Vec3>& vertices,
 }
 
 void SparseGridTopology::adopt(Level&& level) {
-  // The grid's own lists may be linked to a loader's through src="@loader" (position,
-  // hexahedra, ...). Pull them first, as SOFA's beginEdit does, so that the values written
-  // here stand until the loader changes: an unread link would otherwise replace the cells
-  // with the loader's (empty) hexahedra at the first read.
-  for (const BaseField* f : {static_cast<const BaseField*>(&min), static_cast<const BaseField*>(&max),
-                             static_cast<const BaseField*>(&n), static_cast<const BaseField*>(&position),
-                             static_cast<const BaseField*>(&hexahedra_f)})
-    f->update();
   min.set(level.min);
   max.set(level.max);
   n.set(level.grid.n);
@@ -355,6 +361,7 @@ void SparseGridTopology::adopt(Level&& level) {
   stiffness_coefs_ = std::move(level.stiffness);
   mass_coefs_ = std::move(level.mass);
   sparse_of_regular_ = std::move(level.sparse_of_regular);
+  children_ = std::move(level.children);
   position.set(std::move(level.points));
   hexahedra_f.set(std::move(level.hexas));
   set_nb_points(position.value().size());
@@ -571,6 +578,7 @@ void SparseGridTopology::coarsen(const Level& fine, Level& coarse) {
   coarse.grid.set(cn, coarse.min, coarse.max);
   coarse.sparse_of_regular.assign(static_cast<std::size_t>(coarse.grid.nb_cells()), -1);
   coarse.types.clear();
+  coarse.children.clear();
   coarse.stiffness.clear();
   coarse.mass.clear();
   std::vector<std::array<int, 3>> cells;
@@ -596,6 +604,8 @@ void SparseGridTopology::coarsen(const Level& fine, Level& coarse) {
         }
         if (outside) continue;
         coarse.types.push_back(inside ? CellType::inside : CellType::boundary);
+        coarse.children.push_back({children[0], children[1], children[2], children[3], children[4], children[5],
+                                   children[6], children[7]});
         coarse.sparse_of_regular[static_cast<std::size_t>(coarse.grid.cube(i, j, k))] = static_cast<int>(cells.size());
         cells.push_back({i, j, k});
         float stiffness = 0, mass = 0;

@@ -6,6 +6,9 @@
 // supported (an error says so).
 #pragma once
 
+#include <array>
+#include <span>
+
 #include "topology/mesh_topology.h"
 
 namespace sinew {
@@ -41,6 +44,22 @@ class SparseGridTopology : public MeshTopology {
   virtual unsigned find_cube(const Vec3& p, double& fx, double& fy, double& fz) const;
   virtual unsigned find_nearest_cube(const Vec3& p, double& fx, double& fy, double& fz) const;
 
+  // One level of the grid hierarchy as components that integrate over it read it
+  // (NonUniformHexahedronFEMForceFieldAndMass). children[h][c] is the hexahedron of the next
+  // finer level filling octant c of hexahedron h (c = x + 2y + 4z, SOFA's _hierarchicalCubeMap),
+  // −1 where that cell is empty; empty for the finest level.
+  struct LevelView {
+    std::span<const Vec3> points;
+    std::span<const Hexa> hexas;
+    std::span<const float> stiffness;
+    std::span<const std::array<int, 8>> children;
+  };
+  // Virtual finer levels kept with their cell hierarchy: nbVirtualFinerLevels once the grid is
+  // built from a surface, 0 without virtual levels (and for ramified grids, which keep none).
+  int kept_levels() const;
+  // Level k: 0 is this grid, k = 1..kept_levels() the virtual level k times finer.
+  LevelView level(int k) const;
+
  protected:
   void generate() override;
 
@@ -65,6 +84,7 @@ class SparseGridTopology : public MeshTopology {
     std::vector<int> sparse_of_regular;
     std::vector<Vec3> points;
     std::vector<Hexa> hexas;
+    std::vector<std::array<int, 8>> children;  // per hexahedron, into the next finer level (coarsen)
   };
   // Finest level from a surface mesh (SOFA's buildFromTriangleMesh); false after an error.
   // Virtual: SparseGridMultipleTopology builds it from several meshes.
@@ -105,6 +125,8 @@ class SparseGridTopology : public MeshTopology {
   std::vector<CellType> types_;
   std::vector<float> stiffness_coefs_, mass_coefs_;
   std::vector<int> sparse_of_regular_;  // regular cell → hexahedron index (-1 when absent)
+  std::vector<std::array<int, 8>> children_;  // per hexahedron, into virtual_levels_.back()
+  std::vector<Level> virtual_levels_;         // finest first, as SOFA's _virtualFinerLevels
   bool build_failed_ = false;
 };
 
