@@ -14,6 +14,12 @@ inline double sofa_dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1]
 inline Vec3 sofa_cross(const Vec3& a, const Vec3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
+// The same on raw arrays (out must not alias a or b).
+inline void sofa_cross(const double* a, const double* b, double* out) {
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
 inline double sofa_norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 // SOFA's Vec::normalize: divided by its norm unless that is ≤ DBL_EPSILON (then unchanged).
 inline void sofa_normalize(Vec3& v) {

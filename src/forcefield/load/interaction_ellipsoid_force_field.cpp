@@ -4,24 +4,20 @@
 
 #include "core/node.h"
 #include "core/registry.h"
+#include "math/sofa_vec.h"
 #include "forcefield/load/ellipsoid_penalty.h"
 
 namespace sinew {
 
 namespace {
-inline void cross(const double* a, const double* b, double* r) {
-  r[0] = a[1] * b[2] - a[2] * b[1];
-  r[1] = a[2] * b[0] - a[0] * b[2];
-  r[2] = a[0] * b[1] - a[1] * b[0];
-}
 // SOFA's Quat::rotate (sign = +1) and inverseRotate (sign = −1):
 // t = 2·(q×v), v + w·t + q×t.
 inline void rotate(const double* q, const double* v, double* out, double sign) {
   const double qv[3] = {sign * q[0], sign * q[1], sign * q[2]};
   double t[3], u[3];
-  cross(qv, v, t);
+  sofa_cross(qv, v, t);
   for (double& c : t) c *= 2;
-  cross(qv, t, u);
+  sofa_cross(qv, t, u);
   for (int c = 0; c < 3; ++c) out[c] = v[c] + q[3] * t[c] + u[c];
 }
 }  // namespace

@@ -6,17 +6,13 @@
 #include "core/init_checks.h"
 #include "core/node.h"
 #include "core/registry.h"
+#include "math/sofa_vec.h"
 
 namespace sinew {
 
 namespace {
 inline void sub(const double* a, const double* b, double* out) {
   for (int i = 0; i < 3; ++i) out[i] = a[i] - b[i];
-}
-inline void cross(const double* a, const double* b, double* out) {
-  out[0] = a[1] * b[2] - a[2] * b[1];
-  out[1] = a[2] * b[0] - a[0] * b[2];
-  out[2] = a[0] * b[1] - a[1] * b[0];
 }
 // s·[v]×, the matrix of w ↦ s·(v × w).
 inline void skew(const double* v, double s, double m[3][3]) {
@@ -108,15 +104,15 @@ double SurfacePressureForceField::mesh_volume(const std::vector<double>& x) cons
   const std::size_t nt = ti.empty() ? tris.size() : ti.size();
   for (std::size_t i = 0; i < nt; ++i) {
     const Triangle& t = tris[ti.empty() ? i : ti[i]];
-    cross(&x[3 * t[0]], &x[3 * t[1]], c);
+    sofa_cross(&x[3 * t[0]], &x[3 * t[1]], c);
     volume += c[0] * x[3 * t[2]] + c[1] * x[3 * t[2] + 1] + c[2] * x[3 * t[2] + 2];
   }
   const std::size_t nq = qi.empty() ? quads.size() : qi.size();
   for (std::size_t i = 0; i < nq; ++i) {
     const Quad& q = quads[qi.empty() ? i : qi[i]];
-    cross(&x[3 * q[0]], &x[3 * q[1]], c);
+    sofa_cross(&x[3 * q[0]], &x[3 * q[1]], c);
     volume += c[0] * x[3 * q[2]] + c[1] * x[3 * q[2] + 1] + c[2] * x[3 * q[2] + 2];
-    cross(&x[3 * q[0]], &x[3 * q[2]], c);
+    sofa_cross(&x[3 * q[0]], &x[3 * q[2]], c);
     volume += c[0] * x[3 * q[3]] + c[1] * x[3 * q[3] + 1] + c[2] * x[3 * q[3] + 2];
   }
   return volume / 6.0;
@@ -145,7 +141,7 @@ void SurfacePressureForceField::add_force(const MechParams& mp) {
     sub(&x[3 * t[1]], &x[3 * t[0]], ab);
     sub(&x[3 * t[2]], &x[3 * t[0]], ac);
     sub(&x[3 * t[2]], &x[3 * t[1]], bc);
-    cross(ab, ac, n);
+    sofa_cross(ab, ac, n);
     double force[3] = {n[0] * p6, n[1] * p6, n[2] * p6};
     if (tangent) {
       Block da{0, t[0], {}}, db{0, t[1], {}}, dc{0, t[2], {}};
@@ -179,8 +175,8 @@ void SurfacePressureForceField::add_force(const MechParams& mp) {
     sub(&x[3 * q[1]], &x[3 * q[0]], ab);
     sub(&x[3 * q[2]], &x[3 * q[0]], ac);
     sub(&x[3 * q[3]], &x[3 * q[0]], ad);
-    cross(ab, ac, n1);
-    cross(ac, ad, n2);
+    sofa_cross(ab, ac, n1);
+    sofa_cross(ac, ad, n2);
     for (int c = 0; c < 3; ++c) {
       const double p1 = n1[c] * p6, p2 = n2[c] * p6, both = p1 + p2;
       f[3 * q[0] + static_cast<unsigned>(c)] += both;
