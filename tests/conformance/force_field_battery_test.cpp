@@ -153,6 +153,10 @@ std::string hyper(const std::string& material, const std::string& parameters) {
   return tetras(ff("TetrahedronHyperelasticityFEMForceField",
                    "materialName='" + material + "' ParameterSet='" + parameters + "'"));
 }
+std::string standard(const std::string& material, const std::string& parameters) {
+  return tetras(ff("StandardTetrahedralFEMForceField",
+                   "materialName='" + material + "' ParameterSet='" + parameters + "'"));
+}
 
 // ---------------------------------------------------------------- cases: one line per component (variant)
 const std::vector<ForceFieldCase> kCases = {
@@ -396,6 +400,13 @@ const std::vector<ForceFieldCase> kCases = {
     {"TetrahedronHyperelasticityFEMForceField_Costa", hyper("Costa", "1000 1 10 5 8 4 3 6"), kEnergy | kInternal},
     {"TetrahedronHyperelasticityFEMForceField_StableNeoHookean", hyper("StableNeoHookean", "3448 31034"),
      kEnergy | kInternal},
+    // The same elements through the strain-displacement matrices and the 6×6 elasticity tensor.
+    {"StandardTetrahedralFEMForceField_ArrudaBoyce", standard("ArrudaBoyce", "3448 31034"), kEnergy | kInternal},
+    {"StandardTetrahedralFEMForceField_StVenantKirchhoff", standard("StVenantKirchhoff", "3448 31034"),
+     kEnergy | kInternal},
+    {"StandardTetrahedralFEMForceField_NeoHookean", standard("NeoHookean", "3448 31034"), kEnergy | kInternal},
+    {"StandardTetrahedralFEMForceField_MooneyRivlin", standard("MooneyRivlin", "5000 7000 10"), kEnergy | kInternal},
+    {"StandardTetrahedralFEMForceField_Ogden", standard("Ogden", "1500 5 5000"), kEnergy | kInternal},
     // Masses: gravity as a force, E = −Σ m g·x where SOFA defines it.
     {"UniformMass", tetras(ff("UniformMass", "totalMass='2.5'"), kGravity), kEnergy | kStiffness},
     {"UniformMass_Rigid3d",

@@ -51,6 +51,29 @@ TEST_F(HyperelasticComponent, GoodMeshRunsWithoutMessagesForEveryMaterial) {
   }
 }
 
+// StandardTetrahedralFEMForceField runs SOFA's example scene's four materials and has no
+// StableNeoHookean (SOFA's list of materials for it).
+TEST_F(HyperelasticComponent, StandardTetrahedralRunsItsMaterialsAndRefusesStableNeoHookean) {
+  auto standard = [](std::string xml) {
+    const std::string from = "TetrahedronHyperelasticityFEMForceField";
+    xml.replace(xml.find(from), from.size(), "StandardTetrahedralFEMForceField");
+    return xml;
+  };
+  for (const char* m : {R"(ParameterSet="3448 31034")", R"(materialName="StVenantKirchhoff" ParameterSet="3448 31034")",
+                        R"(materialName="NeoHookean" ParameterSet="3448 31034")",
+                        R"(materialName="MooneyRivlin" ParameterSet="5000 7000 10")"}) {
+    const Outcome o = run_xml(dir, standard(scene("0 1 2 3  1 2 4 5", m)), 5);
+    EXPECT_TRUE(o.init_ok) << m << "\n" << o.all();
+    EXPECT_EQ(o.steps, 5) << m;
+    EXPECT_TRUE(o.finite) << m;
+    EXPECT_TRUE(o.errors.empty()) << m << "\n" << o.all();
+  }
+  const Outcome o =
+      run_xml(dir, standard(scene("0 1 2 3", R"(materialName="StableNeoHookean" ParameterSet="3448 31034")")), 5);
+  EXPECT_TRUE(any_contains_all(o.errors, {"StableNeoHookean", "unknown"})) << o.all();
+  EXPECT_FALSE(o.init_ok);
+}
+
 TEST_F(HyperelasticComponent, UnknownMaterialIsAnError) {
   const Outcome o = run_xml(dir, scene("0 1 2 3", R"(materialName="Rubber" ParameterSet="1 2")"), 5);
   EXPECT_TRUE(any_contains_all(o.errors, {kWho, "Rubber", "unknown"})) << o.all();

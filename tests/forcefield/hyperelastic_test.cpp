@@ -171,6 +171,36 @@ TEST_P(Hyperelastic, DForceMatchesFiniteDifferenceOfForces) {
   EXPECT_LT(worst, 1e-5 * scale) << "scale " << scale;
 }
 
+// StandardTetrahedralFEMForceField's arithmetic (B matrices, SOFA's 6×6 elasticity tensors)
+// gives the forces and the tangent of TetrahedronHyperelasticityFEMForceField's to round-off.
+TEST_P(Hyperelastic, StandardFormulationMatchesHyperelasticity) {
+  if (GetParam().material == Material::stable_neo_hookean) GTEST_SKIP() << "not a material of SOFA's standard FEM";
+  TetraHyperelasticity standard;
+  ASSERT_TRUE(standard
+                  .init(mesh.X, mesh.tets, mesh.edges, mesh.edges_in_tet, GetParam().material, GetParam().params,
+                        Formulation::standard)
+                  .empty());
+  const auto f = forces(x);
+  std::vector<Vec3> fs(x.size(), Vec3::Zero());
+  standard.add_force(x, fs);
+  const double fscale = max_norm(f);
+  ASSERT_GT(fscale, 0.0);
+  for (std::size_t i = 0; i < x.size(); ++i) EXPECT_LT((fs[i] - f[i]).cwiseAbs().maxCoeff(), 1e-12 * fscale) << i;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Vec3> v(x.size());
+  for (auto& p : v) p = Vec3(u(rng), u(rng), u(rng));
+  std::vector<Vec3> df(x.size(), Vec3::Zero()), dfs(x.size(), Vec3::Zero());
+  fem.add_dforce(v, df, 1.0);
+  standard.add_dforce(v, dfs, 1.0);
+  const double dscale = max_norm(df);
+  ASSERT_GT(dscale, 0.0);
+  double worst = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) worst = std::max(worst, (dfs[i] - df[i]).cwiseAbs().maxCoeff());
+  RecordProperty("rel_difference", sci(worst / dscale));
+  EXPECT_LT(worst, 1e-10 * dscale);
+}
+
 TEST_P(Hyperelastic, AssembledStiffnessEqualsMatrixFreeProduct) {
   forces(x);
   const std::size_t n = x.size();

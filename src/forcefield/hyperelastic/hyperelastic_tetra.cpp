@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "forcefield/hyperelastic/elasticity_tensor.h"
 #include "math/sofa_vec.h"
 
 namespace sinew::hyper {
@@ -27,6 +28,32 @@ void stress(Material m, const Strain& s, const double* p, Sym3& S) {
   }
 }
 
+void dstress(Material m, const Strain& s, const double* p, const TangentCache& c, const Sym3& H, Sym3& out) {
+  switch (m) {
+    case Material::arruda_boyce: arruda_boyce_dstress(s, p, c, H, out); break;
+    case Material::stvenant_kirchhoff: stvk_dstress(s, p, c, H, out); break;
+    case Material::neo_hookean: neo_hookean_dstress(s, p, c, H, out); break;
+    case Material::mooney_rivlin: mooney_rivlin_dstress(s, p, c, H, out); break;
+    case Material::veronda_westman: veronda_westman_dstress(s, p, c, H, out); break;
+    case Material::costa: costa_dstress(s, p, c, H, out); break;
+    case Material::ogden: ogden_dstress(s, p, c, H, out); break;
+    case Material::stable_neo_hookean: stable_neo_hookean_dstress(s, p, c, H, out); break;
+  }
+}
+
+// SOFA's strain-displacement matrix of a vertex with shape vector s (6×3, rows in the storage
+// order of C: 00, 01, 11, 02, 12, 22): δC = Σ_a B_a·δx_a, shear rows counting both terms.
+void strain_displacement(const Mat3& F, const Vec3& s, double B[6][3]) {
+  for (int c = 0; c < 3; ++c) {
+    B[0][c] = F(c, 0) * s[0];
+    B[2][c] = F(c, 1) * s[1];
+    B[5][c] = F(c, 2) * s[2];
+    B[1][c] = F(c, 0) * s[1] + F(c, 1) * s[0];
+    B[3][c] = F(c, 2) * s[0] + F(c, 0) * s[2];
+    B[4][c] = F(c, 1) * s[2] + F(c, 2) * s[1];
+  }
+}
+
 double energy_density(Material m, const Strain& s, const double* p) {
   switch (m) {
     case Material::arruda_boyce: return arruda_boyce_energy(s, p);
@@ -46,9 +73,10 @@ double energy_density(Material m, const Strain& s, const double* p) {
 std::vector<TetraHyperelasticity::Issue> TetraHyperelasticity::init(
     std::span<const Vec3> rest, const std::vector<std::array<unsigned, 4>>& tets,
     const std::vector<std::array<unsigned, 2>>& edges, const std::vector<std::array<unsigned, 6>>& edges_in_tet,
-    Material material, const std::vector<double>& params) {
+    Material material, const std::vector<double>& params, Formulation form) {
   std::vector<Issue> issues;
   material_ = material;
+  form_ = form;
   for (int k = 0; k < kMaxParams; ++k) p_[k] = k < static_cast<int>(params.size()) ? params[k] : 0.0;
   tets_ = tets;
   edges_ = edges;
@@ -144,6 +172,20 @@ void TetraHyperelasticity::add_force(std::span<const Vec3> x, std::span<Vec3> f)
     stress(material_, c.strain, p_, c.S);
     const Rest& r = rest_[i];
     const auto& t = tets_[i];
+    if (form_ == Formulation::standard) {
+      for (int l = 0; l < 4; ++l) {
+        double B[6][3];
+        strain_displacement(c.F, r.sv[l], B);
+        Vec3 fl;
+        for (int a = 0; a < 3; ++a) {
+          double v = B[0][a] * c.S[0];
+          for (int q = 1; q < 6; ++q) v += B[q][a] * c.S[q];
+          fl[a] = v;
+        }
+        f[t[l]] -= Vec3(fl[0] * r.volume, fl[1] * r.volume, fl[2] * r.volume);
+      }
+      continue;
+    }
     for (int l = 0; l < 4; ++l) {
       const Vec3 fl = sofa_mul(c.F, mul(c.S, r.sv[l]));
       f[t[l]] -= Vec3(fl[0] * r.volume, fl[1] * r.volume, fl[2] * r.volume);
@@ -153,6 +195,10 @@ void TetraHyperelasticity::add_force(std::span<const Vec3> x, std::span<Vec3> f)
 }
 
 void TetraHyperelasticity::update_tangent() {
+  if (form_ == Formulation::standard) {
+    update_tangent_standard();
+    return;
+  }
   for (auto& b : dfdx_) b.setZero();
   TangentCache cache;
   Sym3 H[3], out;
@@ -175,16 +221,7 @@ void TetraHyperelasticity::update_tangent() {
           for (int m = 0; m < 3; ++m) H[m](a, b) = svl[a] * F(m, b) + F(m, a) * svl[b];
       Mat3 N;
       for (int m = 0; m < 3; ++m) {
-        switch (material_) {
-          case Material::arruda_boyce: arruda_boyce_dstress(c.strain, p_, cache, H[m], out); break;
-          case Material::stvenant_kirchhoff: stvk_dstress(c.strain, p_, cache, H[m], out); break;
-          case Material::neo_hookean: neo_hookean_dstress(c.strain, p_, cache, H[m], out); break;
-          case Material::mooney_rivlin: mooney_rivlin_dstress(c.strain, p_, cache, H[m], out); break;
-          case Material::veronda_westman: veronda_westman_dstress(c.strain, p_, cache, H[m], out); break;
-          case Material::costa: costa_dstress(c.strain, p_, cache, H[m], out); break;
-          case Material::ogden: ogden_dstress(c.strain, p_, cache, H[m], out); break;
-          case Material::stable_neo_hookean: stable_neo_hookean_dstress(c.strain, p_, cache, H[m], out); break;
-        }
+        dstress(material_, c.strain, p_, cache, H[m], out);
         const Vec3 v = sofa_mul(F, mul(out, svk));
         N(m, 0) = v[0];
         N(m, 1) = v[1];
@@ -194,6 +231,51 @@ void TetraHyperelasticity::update_tangent() {
       Mat3& B = dfdx_[e];
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b) B(a, b) += ((a == b ? sd : 0.0) + N(a, b)) * r.volume;
+    }
+  }
+  dirty_ = false;
+}
+
+// SOFA's StandardTetrahedralFEMForceField: per edge (k its first point, l the other)
+// DfDx += V·(s_k·S·s_l·I + Nᵀ), N = (B_kᵀ·T)·B̃_l with T the 6×6 elasticity tensor and B̃_l the
+// strain-displacement matrix with its shear rows halved.
+void TetraHyperelasticity::update_tangent_standard() {
+  for (auto& b : dfdx_) b.setZero();
+  TangentCache cache;
+  for (std::size_t i = 0; i < tets_.size(); ++i) {
+    const Current& c = cur_[i];
+    if (c.skip) continue;
+    const Rest& r = rest_[i];
+    const auto& t = tets_[i];
+    double T[6][6];
+    if (!elasticity_tensor(material_, c.strain, p_, cache, T)) continue;
+    double B[4][6][3];
+    for (int a = 0; a < 4; ++a) strain_displacement(c.F, r.sv[a], B[a]);
+    for (int j = 0; j < 6; ++j) {
+      const unsigned e = edges_in_tet_[i][j];
+      int k = kLocalEdges[j][0], l = kLocalEdges[j][1];
+      if (edges_[e][0] != t[k]) std::swap(k, l);  // k: the edge's first point
+      double Bl[6][3];
+      for (int q = 0; q < 6; ++q)
+        for (int b = 0; b < 3; ++b) Bl[q][b] = (q == 1 || q == 3 || q == 4) ? B[l][q][b] / 2 : B[l][q][b];
+      double P[3][6];  // B_kᵀ·T
+      for (int a = 0; a < 3; ++a)
+        for (int q = 0; q < 6; ++q) {
+          double v = B[k][0][a] * T[0][q];
+          for (int m = 1; m < 6; ++m) v += B[k][m][a] * T[m][q];
+          P[a][q] = v;
+        }
+      Mat3 N;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) {
+          double v = P[a][0] * Bl[0][b];
+          for (int q = 1; q < 6; ++q) v += P[a][q] * Bl[q][b];
+          N(a, b) = v;
+        }
+      const double sd = sofa_dot(mul(c.S, r.sv[k]), r.sv[l]);
+      Mat3& D = dfdx_[e];
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) D(a, b) += ((a == b ? sd : 0.0) + N(b, a)) * r.volume;
     }
   }
   dirty_ = false;

@@ -20,6 +20,13 @@
 
 namespace sinew::hyper {
 
+// SOFA computes these elements in two force fields that differ in their arithmetic only:
+// TetrahedronHyperelasticityFEMForceField takes f_l = −V·F·S·s_l and the tangent through the
+// material's applyElasticityTensor; StandardTetrahedralFEMForceField takes f_l = −V·B_lᵀ·S with
+// the 6×3 strain-displacement matrices B_l and the tangent through the 6×6 elasticity tensor
+// (forcefield/hyperelastic/elasticity_tensor.h).
+enum class Formulation { hyperelasticity, standard };
+
 class TetraHyperelasticity {
  public:
   struct Issue {
@@ -33,7 +40,7 @@ class TetraHyperelasticity {
   std::vector<Issue> init(std::span<const Vec3> rest, const std::vector<std::array<unsigned, 4>>& tets,
                           const std::vector<std::array<unsigned, 2>>& edges,
                           const std::vector<std::array<unsigned, 6>>& edges_in_tet, Material material,
-                          const std::vector<double>& params);
+                          const std::vector<double>& params, Formulation form = Formulation::hyperelasticity);
 
   // f += forces at x. Elements with J <= 0 (inverted or flat) are skipped for
   // materials that need ln J (all but StVenantKirchhoff and StableNeoHookean);
@@ -77,8 +84,10 @@ class TetraHyperelasticity {
   };
   void deformation(std::size_t i, std::span<const Vec3> x, Current& c, Vec3 dp[3]) const;
   void update_tangent();
+  void update_tangent_standard();
 
   Material material_ = Material::arruda_boyce;
+  Formulation form_ = Formulation::hyperelasticity;
   double p_[kMaxParams] = {};
   std::vector<std::array<unsigned, 4>> tets_;
   std::vector<std::array<unsigned, 2>> edges_;

@@ -6,7 +6,7 @@
 
 namespace sinew {
 
-void TetrahedronHyperelasticityFEMForceField::init() {
+void HyperelasticTetraForceField::init() {
   ForceField::init();
   if (state() != ComponentState::valid) return;
   reported_inversion_ = false;
@@ -26,10 +26,13 @@ void TetrahedronHyperelasticityFEMForceField::init() {
 
   const std::string& name = material_name.get();
   const hyper::MaterialName* m = hyper::find_material(name);
+  // SOFA's StandardTetrahedralFEMForceField has no StableNeoHookean.
+  if (m && form_ == hyper::Formulation::standard && m->material == hyper::Material::stable_neo_hookean) m = nullptr;
   if (!m || !m->supported) {
     std::string known;
     for (const auto& n : hyper::material_names())
-      if (n.supported) known += (known.empty() ? "" : ", ") + std::string(n.name);
+      if (n.supported && !(form_ == hyper::Formulation::standard && n.material == hyper::Material::stable_neo_hookean))
+        known += (known.empty() ? "" : ", ") + std::string(n.name);
     msg_error("materialName '" + name + "' is " + (m ? "not supported" : "unknown") + " (supported: " + known + ")");
     set_state(ComponentState::invalid);
     return;
@@ -55,18 +58,19 @@ void TetrahedronHyperelasticityFEMForceField::init() {
     return;
   }
   const std::vector<double>& x0 = s->read(kRestPosition);
-  const auto issues = fem_.init(as_vec3(x0), tets, topo->edges(), topo->edges_in_tetrahedron(), m->material, params);
+  const auto issues =
+      fem_.init(as_vec3(x0), tets, topo->edges(), topo->edges_in_tetrahedron(), m->material, params, form_);
   for (const auto& is : issues)
     msg_error((is.element >= 0 ? "tetrahedron " + std::to_string(is.element) + ": " : std::string()) + is.message);
   if (!issues.empty()) set_state(ComponentState::invalid);
 }
 
-std::optional<double> TetrahedronHyperelasticityFEMForceField::potential_energy() const {
+std::optional<double> HyperelasticTetraForceField::potential_energy() const {
   if (state() != ComponentState::valid) return std::nullopt;
   return fem_.energy(as_vec3(mstate->read(kPosition)));
 }
 
-void TetrahedronHyperelasticityFEMForceField::add_force(const MechParams& p) {
+void HyperelasticTetraForceField::add_force(const MechParams& p) {
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
   fem_.add_force(as_vec3(s.read(p.x)), as_vec3(s.write(p.f)));
@@ -78,13 +82,13 @@ void TetrahedronHyperelasticityFEMForceField::add_force(const MechParams& p) {
   }
 }
 
-void TetrahedronHyperelasticityFEMForceField::add_dforce(const MechParams& p, double kfactor) {
+void HyperelasticTetraForceField::add_dforce(const MechParams& p, double kfactor) {
   if (state() != ComponentState::valid) return;
   MechanicalState& s = *mstate;
   fem_.add_dforce(as_vec3(s.read(p.dx)), as_vec3(s.write(p.df)), kfactor);
 }
 
-bool TetrahedronHyperelasticityFEMForceField::build_stiffness(MatrixSink& K) {
+bool HyperelasticTetraForceField::build_stiffness(MatrixSink& K) {
   if (state() != ComponentState::valid) return true;
   const MechanicalState* s = mstate.get();
   fem_.stiffness_blocks([&](unsigned i, unsigned j, const Mat3& b) { K.add_block(s, 3 * i, s, 3 * j, b); });
