@@ -195,6 +195,28 @@ void HexahedronFEMForceFieldAndMass::add_force(const MechParams& p) {
   for (std::size_t i = 0; i < particle_mass_.size(); ++i) f[i] += g * particle_mass_[i];
 }
 
+namespace {
+// f += factor·M·d over the elements, M_e = N_e ⊗ I3 with N_e(w, j) = mass(e, w, j). Row (w, c):
+// SOFA's 24 products in column order, of which only the 8 on component c are nonzero (the
+// others add exact zeros, dropped here).
+template <class NodalMass>
+void add_element_mdx(const fem::HexaFEM& fem, std::span<const Vec3> d, std::span<Vec3> f, double factor,
+                     NodalMass mass) {
+  for (std::size_t e = 0; e < fem.size(); ++e) {
+    const auto& h = fem.hexa[e];
+    for (int w = 0; w < 8; ++w) {
+      Vec3 F = Vec3::Zero();
+      for (int c = 0; c < 3; ++c) {
+        double s = 0.0;
+        for (int j = 0; j < 8; ++j) s += mass(e, w, j) * d[h[j]][c];
+        F[c] = s;
+      }
+      f[h[w]] += F * factor;
+    }
+  }
+}
+}  // namespace
+
 void HexahedronFEMForceFieldAndMass::add_mdx(const MechParams&, int res, int dx, double factor) {
   auto f = as_vec3(mstate->write(res));
   const auto d = as_vec3(mstate->read(dx));
@@ -203,21 +225,10 @@ void HexahedronFEMForceFieldAndMass::add_mdx(const MechParams&, int res, int dx,
       for (int c = 0; c < 3; ++c) f[i][c] += lumped_[i][c] * d[i][c] * factor;
     return;
   }
-  for (std::size_t e = 0; e < fem_.size(); ++e) {
-    const auto& h = fem_.hexa[e];
-    const double m = element_mass_[e];
-    // Row (w, c) of M_e·dx: the 24 products in column order, only the 8 on
-    // component c are non-zero (the others add exact zeros, dropped here).
-    for (int w = 0; w < 8; ++w) {
-      Vec3 F = Vec3::Zero();
-      for (int c = 0; c < 3; ++c) {
-        double s = 0.0;
-        for (int j = 0; j < 8; ++j) s += m * d[h[j]][c];
-        F[c] = s;
-      }
-      f[h[w]] += F * factor;
-    }
-  }
+  if (!nodal_mass_.empty())
+    add_element_mdx(fem_, d, f, factor, [&](std::size_t e, int w, int j) { return nodal_mass_[e][8 * w + j]; });
+  else
+    add_element_mdx(fem_, d, f, factor, [&](std::size_t e, int, int) { return element_mass_[e]; });
 }
 
 void HexahedronFEMForceFieldAndMass::acc_from_f(const MechParams&, int, int) {
@@ -234,9 +245,11 @@ bool HexahedronFEMForceFieldAndMass::build_mass(MatrixSink& M) {
   const MechanicalState* s = mstate.get();
   for (std::size_t e = 0; e < fem_.size(); ++e) {
     const auto& h = fem_.hexa[e];
-    const Mat3 block = Mat3::Identity() * element_mass_[e];
     for (int i = 0; i < 8; ++i)
-      for (int j = 0; j < 8; ++j) M.add_block(s, 3 * h[i], s, 3 * h[j], block);
+      for (int j = 0; j < 8; ++j) {
+        const double m = nodal_mass_.empty() ? element_mass_[e] : nodal_mass_[e][8 * i + j];
+        M.add_block(s, 3 * h[i], s, 3 * h[j], Mat3::Identity() * m);
+      }
   }
   return true;
 }

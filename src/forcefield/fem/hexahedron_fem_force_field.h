@@ -74,7 +74,8 @@ class HexahedronFEMForceField : public HexahedronFEMBase<ForceField> {
 // Element mass matrices (SOFA's closed form: every node pair gets
 // (8/27)·ρ·vol on its 3×3 identity block, vol from the rotated rest element)
 // and gravity on the physical lumped masses ρ·vol/8 per element corner.
-class HexahedronFEMForceFieldAndMass final : public HexahedronFEMBase<Mass> {
+// NonUniformHexahedronFEMForceFieldAndMass derives from it with full nodal matrices.
+class HexahedronFEMForceFieldAndMass : public HexahedronFEMBase<Mass> {
  public:
   Field<double> density{this, "density", 1.0, "volumetric mass (kg/m³)", "Mass"};
   Field<bool> lumped_mass{this, "lumpedMass", false, "use row-summed (lumped) element masses", "Mass"};
@@ -88,8 +89,12 @@ class HexahedronFEMForceFieldAndMass final : public HexahedronFEMBase<Mass> {
   double total() const override;
   bool is_diagonal() const override { return false; }
 
- private:
-  std::vector<double> element_mass_;   // the single value of every block entry, per element
+ protected:
+  // An element's 24×24 mass is N ⊗ I3 for an 8×8 nodal matrix N. SOFA's closed form makes every
+  // entry of N the same: one value per element. A derived component may set full nodal matrices
+  // (row-major), which are then used instead.
+  std::vector<double> element_mass_;                 // per element
+  std::vector<std::array<double, 64>> nodal_mass_;   // per element, or empty
   std::vector<double> particle_mass_;  // lumped physical mass per point (gravity)
   std::vector<Vec3> lumped_;           // row sums per point and component (lumpedMass)
 };

@@ -129,7 +129,9 @@ struct Condenser {
 }  // namespace
 
 void NonUniformHexahedronFEMForceFieldAndMass::init() {
-  HexahedronFEMBase<Mass>::init();
+  // The uniform masses, gravity's particle masses (SOFA's rule is the same here) and the
+  // stiffnesses of the grid's cells come first; the condensation replaces the matrices.
+  HexahedronFEMForceFieldAndMass::init();
   if (state() != ComponentState::valid) return;
   const auto* grid = dynamic_cast<const SparseGridTopology*>(topology.get());
   if (!grid) {
@@ -178,10 +180,10 @@ void NonUniformHexahedronFEMForceFieldAndMass::init() {
     set_state(ComponentState::invalid);
     return;
   }
-  mass_.assign(ne, Mass8{});
+  nodal_mass_.assign(ne, Mass8{});
   for (std::size_t e = 0; e < ne; ++e) {
     fem::Mat24 K = fem::Mat24::Zero();
-    cond.condense(0, e, K, mass_[e]);
+    cond.condense(0, e, K, nodal_mass_[e]);
     // The kernel reads its stiffness column by column (row c of the storage as column c: exact
     // for the classical K, symmetric to the bit). The condensed K is symmetric only to
     // round-off, so its transpose is stored: the products are then SOFA's K·x, each row
@@ -191,95 +193,28 @@ void NonUniformHexahedronFEMForceFieldAndMass::init() {
   fem_.touch_stiffness();
   for (const std::string& p : problems) msg_warning(p);
 
-  particle_mass_.assign(np, 0.0);
-  lumped_.clear();
-  if (use_mass.value()) {
-    // Gravity acts on the physical mass of the mechanical cells, an eighth per corner.
-    const double rho = density.value();
-    for (std::size_t e = 0; e < ne; ++e) {
-      const auto& h = fem_.hexa[e];
-      double v = (rest_[h[1]] - rest_[h[0]]).norm() * (rest_[h[3]] - rest_[h[0]]).norm() *
-                 (rest_[h[4]] - rest_[h[0]]).norm();
-      v *= static_cast<double>(grid->mass_coef(e));
-      const double m = (v * rho) / 8.0;
-      for (int w = 0; w < 8; ++w) particle_mass_[h[w]] += m;
-    }
-    if (lumped_mass.value()) {
-      lumped_.assign(np, Vec3::Zero());
-      for (std::size_t e = 0; e < ne; ++e)
-        for (int w = 0; w < 8; ++w)
-          for (int j = 0; j < 8; ++j)
-            for (int c = 0; c < 3; ++c) lumped_[fem_.hexa[e][w]][c] += mass_[e][8 * w + j];
-      for (Vec3& l : lumped_) l = l.cwiseAbs();  // SOFA flips negative row sums
-    }
-  } else {
+  if (!use_mass.value()) {
     // SOFA's rule, kept: every point weighs totalMass divided by the number of elements.
-    const double m = total_mass.value() / static_cast<double>(ne);
-    particle_mass_.assign(np, m);
+    particle_mass_.assign(np, total_mass.value() / static_cast<double>(ne));
+    lumped_.clear();
+  } else if (lumped_mass.value()) {
+    lumped_.assign(np, Vec3::Zero());
+    for (std::size_t e = 0; e < ne; ++e)
+      for (int w = 0; w < 8; ++w)
+        for (int j = 0; j < 8; ++j)
+          for (int c = 0; c < 3; ++c) lumped_[fem_.hexa[e][w]][c] += nodal_mass_[e][8 * w + j];
+    for (Vec3& l : lumped_) l = l.cwiseAbs();  // SOFA flips negative row sums
   }
 }
 
-void NonUniformHexahedronFEMForceFieldAndMass::add_force(const MechParams& p) {
-  HexahedronFEMBase<Mass>::add_force(p);
-  auto f = as_vec3(mstate->write(p.f));
-  const Vec3 g = node()->gravity.value();
-  for (std::size_t i = 0; i < particle_mass_.size(); ++i) f[i] += g * particle_mass_[i];
-}
-
-void NonUniformHexahedronFEMForceFieldAndMass::add_mdx(const MechParams&, int res, int dx, double factor) {
+void NonUniformHexahedronFEMForceFieldAndMass::add_mdx(const MechParams& p, int res, int dx, double factor) {
+  if (use_mass.value()) {
+    HexahedronFEMForceFieldAndMass::add_mdx(p, res, dx, factor);
+    return;
+  }
   auto f = as_vec3(mstate->write(res));
   const auto d = as_vec3(mstate->read(dx));
-  if (!use_mass.value()) {
-    for (std::size_t i = 0; i < particle_mass_.size(); ++i) f[i] += d[i] * particle_mass_[i] * factor;
-    return;
-  }
-  if (lumped_mass.value()) {
-    for (std::size_t i = 0; i < lumped_.size(); ++i)
-      for (int c = 0; c < 3; ++c) f[i][c] += lumped_[i][c] * d[i][c] * factor;
-    return;
-  }
-  for (std::size_t e = 0; e < fem_.size(); ++e) {
-    const auto& h = fem_.hexa[e];
-    const Mass8& m = mass_[e];
-    // Row (w, c) of M_e·dx: SOFA's 24 products in column order, of which only the 8 on
-    // component c are nonzero.
-    for (int w = 0; w < 8; ++w) {
-      Vec3 F;
-      for (int c = 0; c < 3; ++c) {
-        double s = 0.0;
-        for (int j = 0; j < 8; ++j) s += m[8 * w + j] * d[h[j]][c];
-        F[c] = s;
-      }
-      f[h[w]] += F * factor;
-    }
-  }
-}
-
-void NonUniformHexahedronFEMForceFieldAndMass::acc_from_f(const MechParams&, int, int) {
-  msg_warning("accFromF is not available (the element mass matrices are not diagonal); use an implicit solver");
-}
-
-void NonUniformHexahedronFEMForceFieldAndMass::add_gravity_to_v(int v, double dt) {
-  auto vv = as_vec3(mstate->write(v));
-  const Vec3 dv = node()->gravity.value() * dt;
-  for (auto& x : vv) x += dv;
-}
-
-bool NonUniformHexahedronFEMForceFieldAndMass::build_mass(MatrixSink& M) {
-  // The condensed element matrices, as SOFA assembles them (also without useMass).
-  const MechanicalState* s = mstate.get();
-  for (std::size_t e = 0; e < fem_.size(); ++e) {
-    const auto& h = fem_.hexa[e];
-    for (int i = 0; i < 8; ++i)
-      for (int j = 0; j < 8; ++j) M.add_block(s, 3 * h[i], s, 3 * h[j], Mat3::Identity() * mass_[e][8 * i + j]);
-  }
-  return true;
-}
-
-double NonUniformHexahedronFEMForceFieldAndMass::total() const {
-  double t = 0;
-  for (double m : particle_mass_) t += m;
-  return t;
+  for (std::size_t i = 0; i < particle_mass_.size(); ++i) f[i] += d[i] * particle_mass_[i] * factor;
 }
 
 void register_nonuniform_hexahedron_fem_force_field_and_mass(Registry& r) {

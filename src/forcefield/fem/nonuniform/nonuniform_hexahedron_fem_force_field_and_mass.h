@@ -19,10 +19,8 @@
 
 namespace sinew {
 
-class NonUniformHexahedronFEMForceFieldAndMass final : public HexahedronFEMBase<Mass> {
+class NonUniformHexahedronFEMForceFieldAndMass final : public HexahedronFEMForceFieldAndMass {
  public:
-  Field<double> density{this, "density", 1.0, "volumetric mass (kg/m³)", "Mass"};
-  Field<bool> lumped_mass{this, "lumpedMass", false, "use row-summed (lumped) element masses", "Mass"};
   Field<int> nb_virtual_finer_levels{this, "nbVirtualFinerLevels", 0,
                                      "virtual finer levels of the sparse grid the matrices are condensed from",
                                      "Mass"};
@@ -34,24 +32,13 @@ class NonUniformHexahedronFEMForceFieldAndMass final : public HexahedronFEMBase<
                            "mass"};
 
   void init() override;
-  void add_force(const MechParams& p) override;
   void add_mdx(const MechParams& p, int res, int dx, double factor) override;
-  void acc_from_f(const MechParams& p, int a, int f) override;
-  void add_gravity_to_v(int v, double dt) override;
-  bool build_mass(MatrixSink& M) override;
-  double total() const override;
-  bool is_diagonal() const override { return false; }
 
   // kernel().K holds each condensed stiffness transposed (symmetric to round-off): the kernel
   // reads it by columns, so its products are SOFA's K·x bit for bit; the assembled matrix
   // (build_stiffness) gets Kᵀ's blocks, equal to K's to round-off.
   // Condensed 8×8 nodal mass of element e (the 24×24 matrix is this ⊗ I3), row-major.
-  const std::array<double, 64>& element_mass(std::size_t e) const { return mass_[e]; }
-
- private:
-  std::vector<std::array<double, 64>> mass_;  // per element
-  std::vector<double> particle_mass_;         // per point: gravity (and the mass without useMass)
-  std::vector<Vec3> lumped_;                  // row sums per point and component (lumpedMass)
+  const std::array<double, 64>& element_mass(std::size_t e) const { return nodal_mass_[e]; }
 };
 
 namespace fem {
