@@ -46,6 +46,27 @@ inline Quat quat_normalized(Quat q) {
   return q;
 }
 
+// SOFA's `a + b` (Quat::operator+ and +=): rotation a, then b, i.e. the product
+// b·a with SOFA's grouping of the sums, then normalised.
+inline Quat quat_then(const Quat& a, const Quat& b) {
+  Quat r;
+  r.x = a.x * b.w + b.x * a.w + (b.y * a.z - b.z * a.y);
+  r.y = a.y * b.w + b.y * a.w + (b.z * a.x - b.x * a.z);
+  r.z = a.z * b.w + b.z * a.w + (b.x * a.y - b.y * a.x);
+  r.w = a.w * b.w - (a.x * b.x + a.y * b.y + a.z * b.z);
+  return quat_normalized(r);
+}
+
+// Rotation of `phi` radians about `axis` (SOFA's Quat::axisToQuat): the
+// identity for an axis shorter than machine epsilon.
+inline Quat quat_from_axis_angle(Vec3 axis, double phi) {
+  const double n = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+  if (n < std::numeric_limits<double>::epsilon()) return {};
+  axis /= n;
+  const double sp = std::sin(phi / 2.0), cp = std::cos(phi / 2.0);
+  return {axis[0] * sp, axis[1] * sp, axis[2] * sp, cp};
+}
+
 // Conjugate divided by the norm (zero for a zero quaternion).
 inline Quat quat_inverse(const Quat& q) {
   double n = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);

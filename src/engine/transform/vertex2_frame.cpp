@@ -42,14 +42,7 @@ void Vertex2Frame::do_update() {
     if (axis_id == 0) a = xa;
     else if (axis_id == 1) a = ya;
     else if (axis_id == 2) a = za;
-    // axisToQuat: identity for a null axis.
-    Quat q2;
-    const double an = std::sqrt(sofa_dot(a, a));
-    if (an >= eps) {
-      a /= an;
-      const double sp = std::sin(angle / 2.0), cp = std::cos(angle / 2.0);
-      q2 = {a[0] * sp, a[1] * sp, a[2] * sp, cp};
-    }
+    const Quat q2 = quat_from_axis_angle(a, angle);
     Mat3 m;
     for (int i = 0; i < 3; ++i) {
       m(i, 0) = xa[i];
