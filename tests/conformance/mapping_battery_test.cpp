@@ -195,6 +195,23 @@ const std::vector<MappingCase> kCases = {
           "<IdentityMultiMapping name='map' input='@../a @../b' output='@out'/></Node>"),
      kJacobian},
     {"DeformableOnRigidFrameMapping", kOnFrame, kJacobian},
+    // A three-frame arm hung from a turned base frame: a ball joint (two rotations, Euler order)
+    // then a slider and a hinge, joint axes not unit (normalised by the mapping). No assembled J
+    // (SOFA gives none).
+    {"ArticulatedSystemMapping",
+     node("<MechanicalObject name='q' template='Vec1d' position='0.4 -0.7 0.3 1.1'/>"
+          "<Node name='base'><MechanicalObject name='frame' template='Rigid3d' position='1 2 3 0 0 0.6 0.8'/></Node>"
+          "<Node name='body'><MechanicalObject name='out' template='Rigid3d'"
+          " position='0 0 0 0 0 0 1  0 0 0 0 0 0 1  0 0 0 0 0 0 1'/>"
+          "<ArticulatedSystemMapping name='map' input1='@../q' input2='@../base/frame' output='@out'/></Node>"
+          "<ArticulatedHierarchyContainer/><Node name='centers'>"
+          "<Node name='c1'><ArticulationCenter parentIndex='0' childIndex='1' posOnParent='0.5 0.2 0'"
+          " posOnChild='-0.6 0 0.1'/><Node name='a'><Articulation articulationIndex='0' rotation='1' axis='0 0 2'/>"
+          "<Articulation articulationIndex='1' rotation='1' axis='0 1 1'/></Node></Node>"
+          "<Node name='c2'><ArticulationCenter parentIndex='1' childIndex='2' posOnParent='0.7 0 0'"
+          " posOnChild='-0.4 0.1 0'/><Node name='a'><Articulation articulationIndex='2' translation='1' axis='1 1 0'/>"
+          "<Articulation articulationIndex='3' rotation='1' axis='1 0 0'/></Node></Node></Node>"),
+     0},
     // Two tetrahedra refined by their topological mapping: input points and edge midpoints.
     {"SimpleTesselatedTetraMechanicalMapping",
      node("<TetrahedronSetTopologyContainer name='topo' " + kTetPoints +
