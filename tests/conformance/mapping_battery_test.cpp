@@ -196,8 +196,7 @@ const std::vector<MappingCase> kCases = {
      kJacobian},
     {"DeformableOnRigidFrameMapping", kOnFrame, kJacobian},
     // A three-frame arm hung from a turned base frame: a ball joint (two rotations, Euler order)
-    // then a slider and a hinge, joint axes not unit (normalised by the mapping). No assembled J
-    // (SOFA gives none).
+    // then a slider and a hinge, joint axes not unit (normalised by the mapping).
     {"ArticulatedSystemMapping",
      node("<MechanicalObject name='q' template='Vec1d' position='0.4 -0.7 0.3 1.1'/>"
           "<Node name='base'><MechanicalObject name='frame' template='Rigid3d' position='1 2 3 0 0 0.6 0.8'/></Node>"
@@ -211,7 +210,7 @@ const std::vector<MappingCase> kCases = {
           "<Node name='c2'><ArticulationCenter parentIndex='1' childIndex='2' posOnParent='0.7 0 0'"
           " posOnChild='-0.4 0.1 0'/><Node name='a'><Articulation articulationIndex='2' translation='1' axis='1 1 0'/>"
           "<Articulation articulationIndex='3' rotation='1' axis='1 0 0'/></Node></Node></Node>"),
-     0},
+     kJacobian},
     // Two tetrahedra refined by their topological mapping: input points and edge midpoints.
     {"SimpleTesselatedTetraMechanicalMapping",
      node("<TetrahedronSetTopologyContainer name='topo' " + kTetPoints +

@@ -105,7 +105,9 @@ TEST(AngularSpringForceField, BadIndicesAreRefused) {
 // frame i acts on every joint j ≤ i (Jᵀ), so at equilibrium
 //   k·Σ_{i≥j} q_i = G_j = −g·Σ_{m≥j} (x_m − a_j),
 // up to the lever arms' second-order change (relative 1e-7 at these angles).
-TEST(AngularSpringForceField, ArticulatedChainSettlesAtItsStaticEquilibrium) {
+namespace {
+// The chain of the test below, solved by `linear_solver`; returns the joint coordinates after 2000 steps.
+std::vector<double> settled_chain(const std::string& linear_solver) {
   std::string centers;
   for (int j = 1; j <= 3; ++j)
     centers += "<Node name='c" + std::to_string(j) + "'><ArticulationCenter parentIndex='" + std::to_string(j - 1) +
@@ -114,8 +116,7 @@ TEST(AngularSpringForceField, ArticulatedChainSettlesAtItsStaticEquilibrium) {
                std::to_string(j - 1) + "' rotation='1' rotationAxis='0 0 1'/></Node></Node>";
   auto s = test::load(
       "<Node name='root' gravity='0 -0.01 0' dt='0.05'>"
-      "<EulerImplicitSolver rayleighStiffness='0.1' rayleighMass='1'/>"
-      "<CGLinearSolver iterations='100' tolerance='1e-20' threshold='1e-30'/>"
+      "<EulerImplicitSolver rayleighStiffness='0.1' rayleighMass='1'/>" + linear_solver +
       "<MechanicalObject name='q' template='Vec1d' position='0 0 0'/>"
       "<Node name='base'><MechanicalObject template='Rigid3d' position='0 0 0 0 0 0 1'/>"
       "<FixedProjectiveConstraint indices='0'/></Node>"
@@ -125,8 +126,13 @@ TEST(AngularSpringForceField, ArticulatedChainSettlesAtItsStaticEquilibrium) {
       "<AngularSpringForceField angularStiffness='100' indices='0 1 2 3'/>"
       "<ArticulatedSystemMapping input1='@../q' input2='@../base' output='@frames'/></Node>"
       "<ArticulatedHierarchyContainer/><Node name='centers'>" + centers + "</Node></Node>");
-  ASSERT_TRUE(s.root);
+  if (!s.root) return {};
   for (int step = 0; step < 2000; ++step) animate(*s.root);
+  return s.root->get_mechanical_state()->read(kPosition);
+}
+}  // namespace
+
+TEST(AngularSpringForceField, ArticulatedChainSettlesAtItsStaticEquilibrium) {
   const double g = 0.01, k = 100;
   double S[5] = {0, 0, 0, 0, 0};
   for (int j = 3; j >= 1; --j) {
@@ -134,10 +140,14 @@ TEST(AngularSpringForceField, ArticulatedChainSettlesAtItsStaticEquilibrium) {
     for (int m = j; m <= 3; ++m) G += -g * (m - (j - 0.5));
     S[j] = G / k;
   }
-  const std::vector<double>& q = s.root->get_mechanical_state()->read(kPosition);
-  ASSERT_EQ(q.size(), 3u);
-  for (int j = 1; j <= 3; ++j) {
-    const double want = S[j] - S[j + 1];  // −2.5e-4, −1.5e-4, −5e-5
-    EXPECT_NEAR(q[j - 1], want, 1e-5 * std::abs(want)) << "joint " << j;
+  // Matrix-free (CG, through J and Jᵀ) and assembled (the mapping's J, a direct solver).
+  for (const char* solver : {"<CGLinearSolver iterations='100' tolerance='1e-20' threshold='1e-30'/>",
+                             "<SparseLDLSolver/>"}) {
+    const std::vector<double> q = settled_chain(solver);
+    ASSERT_EQ(q.size(), 3u) << solver;
+    for (int j = 1; j <= 3; ++j) {
+      const double want = S[j] - S[j + 1];  // −2.5e-4, −1.5e-4, −5e-5
+      EXPECT_NEAR(q[j - 1], want, 1e-5 * std::abs(want)) << "joint " << j << " with " << solver;
+    }
   }
 }

@@ -337,6 +337,67 @@ void ArticulatedSystemMapping::apply_jt(int f, int role) {
   }
 }
 
+// J as apply_j computes it, column by column: the input columns are the joint
+// coordinates (input 0) then the base frame's six (input 1). Each frame's rows get the
+// columns of its chain (its ancestors' articulations and the base), all six rows of each,
+// zeros included, so that the pattern depends on the hierarchy only.
+bool ArticulatedSystemMapping::jacobian(std::vector<JacobianEntry>& out) {
+  const std::vector<double>& xto = out_->read(kPosition);
+  const std::size_t frames = xto.size() / 7, n = in_->size();
+  const std::size_t cols = n + (root_ ? 6 : 0);
+  const std::vector<ArticulationCenter*>* centers = checked_centers(n, frames);
+  if (frames == 0) return true;
+  if (!centers && have_centers_) return false;
+  // Row r of frame f, column c: jac_[(6 f + r)·cols + c]; used_[f·cols + c]: structurally there.
+  jac_.assign(6 * frames * cols, 0.0);
+  used_.assign(frames * cols, 0);
+  auto at = [&](std::size_t f, int r, std::size_t c) -> double& { return jac_[(6 * f + r) * cols + c]; };
+  if (root_)
+    for (int k = 0; k < 6; ++k) {
+      at(0, k, n + k) = 1.0;
+      used_[n + k] = 1;
+    }
+  if (centers && axis_.size() == 3 * n) {
+    for (const ArticulationCenter* ac : *centers) {
+      const std::size_t parent = ac->parent_index.value(), child = ac->child_index.value();
+      const Vec3 P = vec_at(&xto[7 * parent]), C = vec_at(&xto[7 * child]);
+      for (std::size_t c = 0; c < cols; ++c) {
+        if (!used_[parent * cols + c] && !used_[child * cols + c]) continue;
+        used_[child * cols + c] |= used_[parent * cols + c];
+        const Vec3 wp(at(parent, 3, c), at(parent, 4, c), at(parent, 5, c));
+        const Vec3 lin = Vec3(at(parent, 0, c), at(parent, 1, c), at(parent, 2, c)) + sofa_cross(P - C, wp);
+        for (int k = 0; k < 3; ++k) {
+          at(child, 3 + k, c) += wp[k];
+          at(child, k, c) = lin[k];
+        }
+      }
+      for (const Articulation* a : ac->articulations) {
+        const std::size_t ind = a->articulation_index.value();
+        const Vec3 axis = vec_at(axis_, ind), A = vec_at(pos_, ind);
+        used_[child * cols + ind] = 1;
+        if (a->rotation.value()) {
+          const Vec3 lin = sofa_cross(A - C, axis);
+          for (int k = 0; k < 3; ++k) {
+            at(child, k, ind) += lin[k];
+            at(child, 3 + k, ind) += axis[k];
+          }
+        }
+        if (a->translation.value())
+          for (int k = 0; k < 3; ++k) at(child, k, ind) += axis[k];
+      }
+    }
+  }
+  for (std::size_t f = 0; f < frames; ++f)
+    for (int r = 0; r < 6; ++r)
+      for (std::size_t c = 0; c < cols; ++c)
+        if (used_[f * cols + c]) {
+          const bool base = c >= n;
+          out.push_back({base ? 1u : 0u, static_cast<std::uint32_t>(6 * f + r),
+                         static_cast<std::uint32_t>(base ? c - n : c), at(f, r, c)});
+        }
+  return true;
+}
+
 bool ArticulatedSystemMapping::apply_jt_constraints() {
   ConstraintMatrix& c = out_->constraint_jacobian();
   if (c.empty()) return true;

@@ -22,7 +22,8 @@
 //   v_child = v_parent + ω_parent × (P − C) + Σ_a [axis_a·q̇_a × (A_a − C) | axis_a·q̇_a]
 // The constraint rows walk each frame's chain of centres back to frame 0 (SOFA's
 // getAcendantList) and put the rest on input2. No geometric stiffness (SOFA's
-// applyDJT is empty) and no assembled J (SOFA gives none either).
+// applyDJT is empty). The assembled J (for direct solvers) is J column by column;
+// SOFA gives none, so its direct solvers cannot run this mapping.
 //
 // Quirks kept from SOFA: init maps before the centres are known (only frame 0
 // moves), so processes 1 and 2 take the initial coordinates as their zero;
@@ -57,6 +58,7 @@ class ArticulatedSystemMapping final : public Mapping {
   void apply(int x) override;
   void apply_j(int v, int role) override;
   void apply_jt(int f, int role) override;
+  bool jacobian(std::vector<JacobianEntry>& out) override;
   bool apply_jt_constraints() override;
 
  private:
@@ -75,6 +77,8 @@ class ArticulatedSystemMapping final : public Mapping {
   std::vector<double> previous_;     // coordinates of the last apply (CoordinateBuf)
   std::vector<double> frame_force_;  // apply_jt scratch: output forces carried down the chain
   std::vector<ArticulationCenter*> chain_;  // apply_jt_constraints scratch
+  std::vector<double> jac_;          // jacobian scratch: dense rows × columns
+  std::vector<char> used_;           // jacobian scratch: columns each frame depends on
   bool warned_fit_ = false;
 };
 
