@@ -45,35 +45,13 @@ std::vector<MechanicalState*> DeformableOnRigidFrameMapping::inputs() const {
 }
 
 bool DeformableOnRigidFrameMapping::resolve_links() {
-  auto first_state = [&](StateLink& l, StateType want, const char* what) -> MechanicalState* {
-    if (l.targets().empty()) return nullptr;
-    auto* s = dynamic_cast<MechanicalState*>(l.targets().front());
-    if (!s) {
-      msg_error(std::string(what) + " is not a mechanical state");
-      return nullptr;
-    }
-    if (s->state_type() != want) {
-      msg_error(std::string(what) + " is " + s->info().name + ", expected " + state_type_info(want).name);
-      return nullptr;
-    }
-    if (l.targets().size() > 1)
-      msg_warning(std::string(what) + " names " + std::to_string(l.targets().size()) +
-                  " states: only the first is used (SOFA)");
-    return s;
-  };
-  in_ = first_state(input1, StateType::vec3, "input1");
-  if (!in_) {
-    if (input1.targets().empty()) msg_error("input1 (the deformable points) is not set or not found");
-    return false;
-  }
-  out_ = first_state(output_link, StateType::vec3, "output");
-  if (!out_) {
-    if (output_link.targets().empty()) msg_error("output (a Vec3d mechanical state) is not set or not found");
-    return false;
-  }
+  in_ = first_link_state(*this, input1, StateType::vec3, "input1");
+  if (!in_) return false;
+  out_ = first_link_state(*this, output_link, StateType::vec3, "output");
+  if (!out_) return false;
   root_ = nullptr;
   if (!input2.targets().empty()) {
-    root_ = first_state(input2, StateType::rigid3, "input2");
+    root_ = first_link_state(*this, input2, StateType::rigid3, "input2");
     if (!root_) return false;
   } else {
     warned_no_root_ = true;

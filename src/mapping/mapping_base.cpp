@@ -26,6 +26,27 @@ bool StateLink::references(const Base* b) const {
 
 void StateLink::forget(const Base* b) { std::erase(targets_, b); }
 
+MechanicalState* first_link_state(const Component& owner, const StateLink& link, StateType want,
+                                  const std::string& what) {
+  if (link.targets().empty()) {
+    owner.msg_error(what + " is not set or not found");
+    return nullptr;
+  }
+  auto* s = dynamic_cast<MechanicalState*>(link.targets().front());
+  if (!s) {
+    owner.msg_error(what + " is not a mechanical state");
+    return nullptr;
+  }
+  if (s->state_type() != want) {
+    owner.msg_error(what + " is " + s->info().name + ", expected " + state_type_info(want).name);
+    return nullptr;
+  }
+  if (link.targets().size() > 1)
+    owner.msg_warning(what + " names " + std::to_string(link.targets().size()) +
+                      " states: only the first is used (SOFA)");
+  return s;
+}
+
 int geometric_stiffness_id(const std::string& text, int fallback) {
   std::string t;
   for (char c : text)

@@ -45,6 +45,13 @@ class StateLink final : public BaseLink {
   std::vector<Base*> targets_;
 };
 
+// The first state of `link` when it is a mechanical state of type `want` (the
+// inputs and output of SOFA's Multi2Mappings); otherwise nullptr after an error of
+// `owner` naming `what` (not set or not found, not a state, another type). A link
+// naming several states gives a warning: only the first is used (SOFA).
+MechanicalState* first_link_state(const Component& owner, const StateLink& link, StateType want,
+                                  const std::string& what);
+
 // geometricStiffness option (None / Exact / Stabilized, or 0 / 1 / 2).
 int geometric_stiffness_id(const std::string& text, int fallback);
 

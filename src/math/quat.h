@@ -94,22 +94,33 @@ inline Quat quat_diff(Quat a, const Quat& b) {
   return quat_mul(quat_inverse(b), a);
 }
 
+// Rotation angle 2·acos(w) of a unit quaternion and the sine of its half, as
+// SOFA computes them: from the vector part's length through asin when w is above
+// `asin_above` (acos loses precision near 1; SOFA's thresholds differ per caller).
+struct QuatAngle {
+  double angle, sin_half;
+};
+inline QuatAngle quat_angle(const Quat& q, double asin_above) {
+  QuatAngle r;
+  if (q.w > asin_above) {
+    r.sin_half = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
+    r.angle = 2.0 * std::asin(r.sin_half);
+  } else {
+    const double half = std::acos(q.w);
+    r.sin_half = std::sin(half);
+    r.angle = 2 * half;
+  }
+  return r;
+}
+
 // Axis times angle in [0, 2π) (SOFA's quatToRotationVector; asin branch
 // below 5° for accuracy).
 inline Vec3 quat_to_rotation_vector(const Quat& in) {
   Quat q = quat_normalized(in);
   if (q.w < 0) q = {-q.x, -q.y, -q.z, -q.w};
-  double angle, sin_half;
-  if (q.w > 0.999) {
-    sin_half = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
-    angle = 2.0 * std::asin(sin_half);
-  } else {
-    const double half = std::acos(q.w);
-    sin_half = std::sin(half);
-    angle = 2 * half;
-  }
-  if (sin_half < std::numeric_limits<double>::epsilon()) return Vec3::Zero();
-  return Vec3(q.x, q.y, q.z) / sin_half * angle;
+  const QuatAngle a = quat_angle(q, 0.999);
+  if (a.sin_half < std::numeric_limits<double>::epsilon()) return Vec3::Zero();
+  return Vec3(q.x, q.y, q.z) / a.sin_half * a.angle;
 }
 
 // Rotation vector taking orientation b to a (SOFA's Quat::angularDisplacement).

@@ -61,17 +61,11 @@ void AngularSpringForceField::add_force(const MechParams& p) {
   const std::vector<unsigned>& idx = indices.get();
   for (std::size_t j = 1; j < idx.size(); ++j) {
     const unsigned i = idx[j];
-    const Quat dq = quat_normalized(quat_mul(Quat::from(&x[7 * i + 3]), quat_inverse(Quat::from(&x[7 * (i - 1) + 3]))));
-    // The angle from w, or from the vector part's length below ~0.16° where acos loses precision.
-    double angle, sin_half;
-    if (dq.w > 0.999999) {
-      sin_half = std::sqrt(dq.x * dq.x + dq.y * dq.y + dq.z * dq.z);
-      angle = 2.0 * std::asin(sin_half);
-    } else {
-      const double half = std::acos(dq.w);
-      sin_half = std::sin(half);
-      angle = 2 * half;
-    }
+    const Quat qi = Quat::from(&x[7 * i + 3]), previous = Quat::from(&x[7 * (i - 1) + 3]);
+    const Quat dq = quat_normalized(quat_mul(qi, quat_inverse(previous)));
+    // No hemisphere flip: the angle is in [0, 2π). SOFA takes asin above w = 0.999999.
+    const QuatAngle a = quat_angle(dq, 0.999999);
+    const double angle = a.angle, sin_half = a.sin_half;
     double axis[3] = {0.0, 1.0, 0.0};  // SOFA's choice for a null rotation
     if (sin_half >= std::numeric_limits<double>::epsilon()) {
       axis[0] = dq.x / sin_half;

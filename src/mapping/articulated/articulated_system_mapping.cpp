@@ -32,31 +32,12 @@ std::vector<MechanicalState*> ArticulatedSystemMapping::inputs() const {
 }
 
 bool ArticulatedSystemMapping::resolve_links() {
-  auto first_state = [&](StateLink& l, StateType want, const char* what) -> MechanicalState* {
-    if (l.targets().empty()) {
-      msg_error(std::string(what) + " is not set or not found");
-      return nullptr;
-    }
-    auto* s = dynamic_cast<MechanicalState*>(l.targets().front());
-    if (!s) {
-      msg_error(std::string(what) + " is not a mechanical state");
-      return nullptr;
-    }
-    if (s->state_type() != want) {
-      msg_error(std::string(what) + " is " + s->info().name + ", expected " + state_type_info(want).name);
-      return nullptr;
-    }
-    if (l.targets().size() > 1)
-      msg_warning(std::string(what) + " names " + std::to_string(l.targets().size()) +
-                  " states: only the first is used (SOFA)");
-    return s;
-  };
-  in_ = first_state(input1, StateType::vec1, "input1 (the joint coordinates)");
-  out_ = in_ ? first_state(output_link, StateType::rigid3, "output (the frames)") : nullptr;
+  in_ = first_link_state(*this, input1, StateType::vec1, "input1 (the joint coordinates)");
+  out_ = in_ ? first_link_state(*this, output_link, StateType::rigid3, "output (the frames)") : nullptr;
   if (!in_ || !out_) return false;
   root_ = nullptr;
   if (!input2.targets().empty()) {
-    root_ = first_state(input2, StateType::rigid3, "input2 (the base frame)");
+    root_ = first_link_state(*this, input2, StateType::rigid3, "input2 (the base frame)");
     if (!root_) return false;
   }
   if (in_ == out_ || root_ == out_) {
