@@ -86,6 +86,7 @@ TEST(AngularSpringForceField, DefaultStiffnessIsOneHundred) {
   st.write(kForce).assign(18, 0.0);
   ff->add_force(MechParams{});
   EXPECT_NEAR(st.read(kForce)[11], -100 * 0.3, 1e-13);
+  EXPECT_EQ(ff->angular_stiffness.get(), std::vector<double>{100.0});  // written back, as SOFA
 }
 
 TEST(AngularSpringForceField, BadIndicesAreRefused) {

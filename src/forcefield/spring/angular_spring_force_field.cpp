@@ -11,8 +11,9 @@
 namespace sinew {
 
 void AngularSpringForceField::reinit() {
+  // SOFA's default, written into the field as SOFA does (with an info message there).
+  if (angular_stiffness.get().empty()) angular_stiffness.set({100.0});
   k_ = angular_stiffness.get();
-  if (k_.empty()) k_.assign(1, 100.0);  // SOFA's default, said in an info message there
 }
 
 void AngularSpringForceField::init() {
