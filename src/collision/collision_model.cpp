@@ -16,6 +16,8 @@ const char* kind_name(CollisionModelBase::Kind k) {
       return "Sphere";
     case CollisionModelBase::Kind::tetrahedron:
       return "Tetrahedron";
+    case CollisionModelBase::Kind::obb:
+      return "OBB";
   }
   return "?";
 }
@@ -30,10 +32,11 @@ void CollisionModelBase::init() {
     return;
   }
   const StateType t = mstate_->state_type();
-  if (t != StateType::vec3 && !(t == StateType::rigid3 && accepts_rigid3())) {
-    msg_error(std::string(accepts_rigid3() ? "needs a Vec3d or Rigid3d MechanicalState; "
-                                           : "needs a Vec3d MechanicalState; ") +
-              mstate_->describe() + " is " + mstate_->info().name);
+  if (!(t == StateType::vec3 && accepts_vec3()) && !(t == StateType::rigid3 && accepts_rigid3())) {
+    const char* need = !accepts_vec3()    ? "needs a Rigid3d MechanicalState; "
+                       : accepts_rigid3() ? "needs a Vec3d or Rigid3d MechanicalState; "
+                                          : "needs a Vec3d MechanicalState; ";
+    msg_error(need + mstate_->describe() + " is " + mstate_->info().name);
     set_state(ComponentState::invalid);
     return;
   }

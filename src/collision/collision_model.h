@@ -21,8 +21,8 @@ namespace sinew {
 
 class CollisionModelBase : public CollisionModel {
  public:
-  enum class Kind { point, line, triangle, sphere, tetrahedron };
-  static constexpr int kKinds = 5;
+  enum class Kind { point, line, triangle, sphere, tetrahedron, obb };
+  static constexpr int kKinds = 6;
 
   explicit CollisionModelBase(Kind kind);
 
@@ -101,6 +101,8 @@ class CollisionModelBase : public CollisionModel {
   }
   // Whether the model also works on a Rigid3d state (its elements are then the frames' centres).
   virtual bool accepts_rigid3() const { return false; }
+  // Whether the model works on a Vec3d state (all but the oriented boxes).
+  virtual bool accepts_vec3() const { return true; }
   // Positions of the state's points, read at every detection: the state itself
   // for Vec3d, the frames' centres (copied) for Rigid3d.
   std::span<const Vec3> positions() const { return points_of(kPosition, kPosition); }

@@ -1,9 +1,12 @@
 // DiscreteIntersection (spec/interaction.md §2.3): exact intersection tests
 // with no alarm distance (spheres against spheres, segments crossing
-// triangles, points inside tetrahedra).
+// triangles, points inside tetrahedra, oriented boxes against boxes and spheres).
 #include "collision/intersect/discrete_tests.h"
+#include "collision/intersect/element_test.h"
+#include "collision/intersect/obb_tests.h"
 #include "collision/intersection.h"
 #include "collision/model/line_collision_model.h"
+#include "collision/model/obb_collision_model.h"
 #include "collision/model/point_collision_model.h"
 #include "collision/model/sphere_collision_model.h"
 #include "collision/model/tetrahedron_collision_model.h"
@@ -43,6 +46,9 @@ class DiscreteIntersection final : public Intersection {
     add(Kind::sphere, Kind::sphere, &sphere_sphere);
     add(Kind::triangle, Kind::line, &triangle_line);
     add(Kind::tetrahedron, Kind::point, &tetrahedron_point);
+    // SOFA's oriented-box plugin adds these to every intersection method derived from this one.
+    add(Kind::obb, Kind::obb, &distance_test<ObbCollisionModel, ObbCollisionModel, obb::obb_obb>);
+    add(Kind::sphere, Kind::obb, &distance_test<SphereCollisionModel, ObbCollisionModel, obb::sphere_obb>);
   }
 };
 

@@ -3,8 +3,11 @@
 // point's surrounding triangles and edges, an edge's two triangles, a
 // triangle's front side), so that contacts found through a thin part of a
 // surface are rejected.
+#include "collision/intersect/element_test.h"
 #include "collision/intersect/local_min_distance_tests.h"
+#include "collision/intersect/obb_tests.h"
 #include "collision/model/line_collision_model.h"
+#include "collision/model/obb_collision_model.h"
 #include "collision/model/point_collision_model.h"
 #include "collision/model/sphere_collision_model.h"
 #include "collision/model/triangle_collision_model.h"
@@ -20,6 +23,7 @@ using P = PointCollisionModel;
 using L = LineCollisionModel;
 using T = TriangleCollisionModel;
 using S = SphereCollisionModel;
+using B = ObbCollisionModel;
 
 class LocalMinDistance final : public ProximityIntersection {
  public:
@@ -47,6 +51,9 @@ class LocalMinDistance final : public ProximityIntersection {
     add(K::triangle, K::sphere, &triangle_sphere);
     ignore(K::triangle, K::line);
     ignore(K::triangle, K::triangle);
+    // Oriented boxes: the pairs SOFA's plugin gives every method derived from DiscreteIntersection.
+    add(K::obb, K::obb, &distance_test<B, B, obb::obb_obb>);
+    add(K::sphere, K::obb, &distance_test<S, B, obb::sphere_obb>);
     begin_detection();
   }
 

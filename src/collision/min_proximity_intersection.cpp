@@ -4,7 +4,9 @@
 // line and point models.
 #include "collision/intersect/element_test.h"
 #include "collision/intersect/min_proximity_tests.h"
+#include "collision/intersect/obb_tests.h"
 #include "collision/model/line_collision_model.h"
+#include "collision/model/obb_collision_model.h"
 #include "collision/model/point_collision_model.h"
 #include "collision/model/sphere_collision_model.h"
 #include "collision/model/triangle_collision_model.h"
@@ -19,6 +21,7 @@ using P = PointCollisionModel;
 using L = LineCollisionModel;
 using T = TriangleCollisionModel;
 using S = SphereCollisionModel;
+using B = ObbCollisionModel;
 
 class MinProximityIntersection final : public ProximityIntersection {
  public:
@@ -48,6 +51,9 @@ class MinProximityIntersection final : public ProximityIntersection {
     }
     ignore(K::triangle, K::line);
     ignore(K::triangle, K::triangle);
+    // Oriented boxes: the pairs SOFA's plugin gives every method derived from DiscreteIntersection.
+    add(K::obb, K::obb, &distance_test<B, B, obb::obb_obb>);
+    add(K::sphere, K::obb, &distance_test<S, B, obb::sphere_obb>);
     begin_detection();
   }
 

@@ -3,7 +3,9 @@
 // triangles, each feature owned by one triangle (the triangle flags).
 #include "collision/intersect/element_test.h"
 #include "collision/intersect/new_proximity_tests.h"
+#include "collision/intersect/obb_tests.h"
 #include "collision/model/line_collision_model.h"
+#include "collision/model/obb_collision_model.h"
 #include "collision/model/point_collision_model.h"
 #include "collision/model/sphere_collision_model.h"
 #include "collision/model/triangle_collision_model.h"
@@ -18,6 +20,7 @@ using P = PointCollisionModel;
 using L = LineCollisionModel;
 using T = TriangleCollisionModel;
 using S = SphereCollisionModel;
+using B = ObbCollisionModel;
 
 class NewProximityIntersection final : public ProximityIntersection {
  public:
@@ -39,6 +42,10 @@ class NewProximityIntersection final : public ProximityIntersection {
     add(K::sphere, K::point, &element_test<M, S, P, new_proximity::sphere_point>);
     add(K::line, K::sphere, &element_test<M, L, S, new_proximity::line_sphere>);
     add(K::triangle, K::sphere, &element_test<M, T, S, new_proximity::triangle_sphere>);
+    // Oriented boxes (SOFA's plugin): the discrete method's box pairs, and triangle–box for this method only.
+    add(K::obb, K::obb, &distance_test<B, B, obb::obb_obb>);
+    add(K::sphere, K::obb, &distance_test<S, B, obb::sphere_obb>);
+    add(K::triangle, K::obb, &distance_test<T, B, obb::triangle_obb>);
     begin_detection();
   }
 

@@ -21,6 +21,8 @@ const char* element_name(CollisionModelBase::Kind k) {
       return "spheres";
     case CollisionModelBase::Kind::tetrahedron:
       return "tetrahedra";
+    case CollisionModelBase::Kind::obb:
+      return "boxes";
   }
   return "elements";
 }

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include "collision/model/line_collision_model.h"
+#include "collision/model/obb_collision_model.h"
 #include "collision/model/sphere_collision_model.h"
 #include "collision/model/tetrahedron_collision_model.h"
 #include "collision/model/triangle_collision_model.h"
@@ -130,6 +131,33 @@ void spheres(DrawList& list, const SphereCollisionModel& m, const std::array<flo
   close_batch(list, b);
 }
 
+// Each oriented box by its six faces, two triangles each, lit by the face normals.
+void boxes(DrawList& list, const ObbCollisionModel& m, const std::array<float, 4>& color, bool wireframe) {
+  // Faces as corner numbers of obb_vertices (0–3 on +axis 0, 4–7 on −axis 0), with their normal: ±axis k.
+  static const int kFaces[6][4] = {{0, 1, 2, 3}, {4, 7, 6, 5}, {1, 5, 6, 2}, {0, 3, 7, 4}, {2, 6, 7, 3}, {0, 4, 5, 1}};
+  static const int kNormal[6][2] = {{0, 1}, {0, -1}, {1, 1}, {1, -1}, {2, 1}, {2, -1}};
+  Batch& b = fresh_batch(list, &m, Batch::Kind::triangles);
+  for (unsigned i = 0; i < m.size(); ++i) {
+    const ObbElem& e = m.elem(i);
+    const auto v = obb_vertices(e);
+    bool finite = true;
+    for (const Vec3& p : v) finite &= p.allFinite();
+    if (!finite) continue;
+    for (int f = 0; f < 6; ++f) {
+      const Vec3 n = e.axis[kNormal[f][0]] * kNormal[f][1];
+      const float nf[3] = {float(n[0]), float(n[1]), float(n[2])};
+      for (int k : {0, 1, 2, 0, 2, 3}) {
+        const Vec3& p = v[kFaces[f][k]];
+        const float pf[3] = {float(p[0]), float(p[1]), float(p[2])};
+        push(b.positions, pf), push(b.normals, nf);
+      }
+    }
+  }
+  b.shading = flat_color(color, true);
+  b.wireframe = wireframe;
+  close_batch(list, b);
+}
+
 // The cubes of every level of the bounding tree by their twelve edges, the root white and
 // the deeper levels bluer.
 void bounding_tree(DrawList& list, const CollisionModelBase& m) {
@@ -180,6 +208,9 @@ void add_collision_models(DrawList& list, Node& node, const DisplayFlags& flags)
         case CollisionModelBase::Kind::point: points_of(list, *m, color); break;
         case CollisionModelBase::Kind::sphere:
           spheres(list, static_cast<const SphereCollisionModel&>(*m), color, wire);
+          break;
+        case CollisionModelBase::Kind::obb:
+          boxes(list, static_cast<const ObbCollisionModel&>(*m), color, wire);
           break;
       }
     }

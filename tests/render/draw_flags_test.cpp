@@ -6,6 +6,8 @@
 #include <cmath>
 #include <regex>
 
+#include <Eigen/Geometry>
+
 #include "render/draw_collision.h"
 #include "render/offscreen.h"
 #include "test_scene.h"
@@ -64,6 +66,45 @@ TEST(CollisionDraw, TrianglesAndBoundingTreeInTheDrawList) {
   // The root cube bounds the square (enlarged by the contact distance at most).
   EXPECT_NEAR(list.min[0], -0.5, 0.06);
   EXPECT_NEAR(list.max[1], 0.5, 0.06);
+}
+
+// An oriented box: six faces of two triangles, each normal the outward axis of its face.
+TEST(CollisionDraw, OrientedBoxByItsSixFaces) {
+  auto s = test::load(R"(<Node name="root" gravity="0 0 0">
+      <VisualStyle displayFlags="showCollisionModels"/>
+      <Node name="box">
+        <MechanicalObject template="Rigid3d" position="1 2 3 0 0 0.3826834323650898 0.9238795325112867"/>
+        <OBBCollisionModel extents="0.5 1 1.5"/>
+      </Node>
+    </Node>)");
+  ASSERT_TRUE(s.root);
+  animate(*s.root);
+  render::DrawList list;
+  render::gather(*s.root, list);
+  ASSERT_EQ(list.used, 1u);
+  const render::Batch& b = list.batches[0];
+  ASSERT_EQ(b.vertex_count(), 36u);
+  const double h = std::sqrt(0.5);
+  const Vec3 c(1, 2, 3);
+  const Vec3 axes[3] = {{h, h, 0}, {-h, h, 0}, {0, 0, 1}};
+  const double ext[3] = {0.5, 1, 1.5};
+  for (std::size_t i = 0; i < 36; ++i) {
+    const Vec3 p(b.positions[3 * i], b.positions[3 * i + 1], b.positions[3 * i + 2]);
+    const Vec3 n(b.normals[3 * i], b.normals[3 * i + 1], b.normals[3 * i + 2]);
+    // The normal is ±axis k, and the vertex lies on that face: (p − c)·axis k = ±ext k.
+    int k = -1;
+    for (int a = 0; a < 3; ++a)
+      if (std::abs(std::abs(n.dot(axes[a])) - 1) < 1e-6) k = a;
+    ASSERT_GE(k, 0) << "vertex " << i;
+    EXPECT_NEAR((p - c).dot(n), ext[k], 1e-5) << "vertex " << i;
+  }
+  // Each triangle turns counter-clockwise seen from outside.
+  for (std::size_t t = 0; t < 12; ++t) {
+    Vec3 v[3], n(b.normals[9 * t], b.normals[9 * t + 1], b.normals[9 * t + 2]);
+    for (int j = 0; j < 3; ++j) v[j] = Vec3(b.positions[9 * t + 3 * j], b.positions[9 * t + 3 * j + 1],
+                                            b.positions[9 * t + 3 * j + 2]);
+    EXPECT_GT((v[1] - v[0]).cross(v[2] - v[0]).dot(n), 0) << "triangle " << t;
+  }
 }
 
 TEST(CollisionDraw, PictureOfTheCollisionSquare) {

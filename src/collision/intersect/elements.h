@@ -61,6 +61,16 @@ struct TetrahedronElem {
   ElemInfo info;
 };
 
+// An oriented box (OBBCollisionModel): a Rigid3d frame and three half-extents.
+// A point is inside when c + a·axis[0] + b·axis[1] + d·axis[2] with |a| ≤ ext[0], …
+struct ObbElem {
+  Vec3 c;                    // centre (the frame's translation)
+  std::array<Vec3, 3> axis;  // the frame's x, y, z axes in world coordinates (unit)
+  Vec3 ext;                  // half-extents along the axes [length]
+  Vec3 v;                    // linear velocity of the frame [length/time]
+  ElemInfo info;
+};
+
 struct SphereElem {
   Vec3 c;              // centre (translation of a rigid sphere)
   double r = 0;        // radius [length]

@@ -85,6 +85,12 @@ unsigned ContactMapper::add_point(const Vec3& P, unsigned elem, double& r) {
       const Vec3 local = quat_inverse_rotate(Quat::from(c + 3), P - Vec3(c[0], c[1], c[2]));
       return rigid_mapping_->add_point(local, elem);
     }
+    case CollisionModelBase::Kind::obb: {
+      // The point in the frame of its box (SOFA's OBB contact mapper).
+      const double* c = &model_->mstate()->read(kPosition)[elem * 7];
+      const Vec3 local = quat_inverse_rotate(Quat::from(c + 3), P - Vec3(c[0], c[1], c[2]));
+      return rigid_mapping_->add_point(local, elem);
+    }
     case CollisionModelBase::Kind::line: {
       // Parameter along the edge, not clamped (SOFA's line contact mapper).
       const auto& line = *static_cast<LineCollisionModel*>(model_);

@@ -2,9 +2,9 @@
 // (spec/interaction.md §4.3).
 // - Points and Vec3d spheres: the collision model's own state; a contact
 //   point is the element's point itself (SOFA's identity mapper).
-// - Rigid3d spheres: a child node holding a Vec3d state mapped from the
-//   frames by a RigidMapping, the point stored in its frame (SOFA's
-//   RigidContactMapper).
+// - Rigid3d spheres and oriented boxes: a child node holding a Vec3d state
+//   mapped from the frames by a RigidMapping, the point stored in its frame
+//   (SOFA's RigidContactMapper).
 // - Lines and triangles: a child node of the model's node holding a Vec3d
 //   state mapped from the model's state by a ContactMapping, created on
 //   first use and removed with the contact (SOFA's barycentric mapper).
@@ -49,7 +49,7 @@ class ContactMapper {
   MechanicalState* mapped_ = nullptr;
   Mapping* map_ = nullptr;                   // the one below that exists
   ContactMapping* mapping_ = nullptr;        // lines, triangles, tetrahedra
-  RigidMapping* rigid_mapping_ = nullptr;    // Rigid3d spheres
+  RigidMapping* rigid_mapping_ = nullptr;    // Rigid3d spheres, oriented boxes
 };
 
 }  // namespace sinew
