@@ -70,6 +70,8 @@ class BarycentricMapping final : public MappingBase {
 
   // Which mapper was chosen ("RegularGrid", "Mesh", "TetrahedronSet", ...), for tests and messages.
   const std::string& mapper_name() const { return mapper_; }
+  // The map as last built, without relocating (drawing: one frame late after a topological change).
+  const BaryTable& drawn_table() const { return table_; }
   // The current map (after any pending relocation), for tests.
   const BaryTable& table() {
     follow_topology();

@@ -34,6 +34,9 @@ inline void close_batch(DrawList& list, const Batch& b) {
 // Springs (SpringForceField and the force fields built on it) of `node`: draw_springs.cpp.
 void add_springs(DrawList& list, Node& node, const DisplayFlags& flags);
 
+// The mappings of `node` that SOFA draws with showMappings: draw_mappings.cpp.
+void add_mappings(DrawList& list, Node& node);
+
 // Every collision model of `node`, as `flags` ask.
 void add_collision_models(DrawList& list, Node& node, const DisplayFlags& flags);
 

@@ -254,6 +254,7 @@ void visit(Node& node, const DisplayFlags& inherited, const ClipPlane* inherited
     add_collision_models(list, node, flags);
   if (flags.shown(DisplayFlags::force_fields) || flags.shown(DisplayFlags::interaction_force_fields))
     add_springs(list, node, flags);
+  if (flags.shown(DisplayFlags::mappings)) add_mappings(list, node);
 
   MechanicalState* state = node.mechanical_state;
   if (state && state->state() == ComponentState::valid) {

@@ -107,6 +107,46 @@ TEST(CollisionDraw, OrientedBoxByItsSixFaces) {
   }
 }
 
+// showMappings: a barycentric mapping's output points (yellow, 7 px) and a green line to each
+// input vertex weighing at least 1e-4 (a point on a face of the tetrahedron: three lines).
+TEST(MappingDraw, BarycentricPointsAndTheirLinesToTheInputVertices) {
+  const std::string xml = R"(<Node name="root" gravity="0 0 0">
+      <VisualStyle displayFlags="showMappings"/>
+      <Node name="body">
+        <MechanicalObject position="0 0 0  1 0 0  0 1 0  0 0 1"/>
+        <TetrahedronSetTopologyContainer tetrahedra="0 1 2 3"/>
+        <Node name="mapped">
+          <MechanicalObject position="0.25 0.25 0.25  0.5 0.25 0"/>
+          <BarycentricMapping/>
+        </Node>
+      </Node>
+    </Node>)";
+  auto s = test::load(xml);
+  ASSERT_TRUE(s.root);
+  render::DrawList list;
+  render::gather(*s.root, list);
+  ASSERT_EQ(list.used, 2u);
+  const render::Batch& points = list.batches[0];
+  EXPECT_EQ(points.kind, render::Batch::Kind::points);
+  EXPECT_EQ(points.vertex_count(), 2u);
+  EXPECT_FLOAT_EQ(points.point_size, 7.f);
+  EXPECT_EQ(points.shading.diffuse, (std::array<float, 4>{1, 1, 0, 1}));
+  const render::Batch& lines = list.batches[1];
+  EXPECT_EQ(lines.kind, render::Batch::Kind::lines);
+  // Point 0 is inside (four weights 0.25), point 1 on the face z = 0 (weights 0.25, 0.5, 0.25, 0).
+  ASSERT_EQ(lines.vertex_count(), 2u * (4 + 3));
+  EXPECT_EQ(lines.shading.diffuse, (std::array<float, 4>{0, 1, 0, 1}));
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_FLOAT_EQ(lines.positions[6 * k], 0.25f);  // starts at point 0
+  for (std::size_t k = 4; k < 7; ++k) {
+    EXPECT_FLOAT_EQ(lines.positions[6 * k], 0.5f);  // starts at point 1
+    EXPECT_FLOAT_EQ(lines.positions[6 * k + 5], 0.f);  // ends on the face z = 0
+  }
+  // Without the flag, nothing.
+  auto hidden = test::load(std::regex_replace(xml, std::regex("showMappings"), "showVisualModels"));
+  render::gather(*hidden.root, list);
+  EXPECT_EQ(list.used, 0u);
+}
+
 TEST(CollisionDraw, PictureOfTheCollisionSquare) {
   std::string err;
   render::RenderOptions o;
