@@ -45,6 +45,8 @@ class SkinningMapping final : public MappingBase {
   // Per point, its frames and weights (row-major, nbRef[0] slots per point) and the count used.
   const std::vector<unsigned>& frame_index() const { return index_; }
   const std::vector<double>& weights() const { return w_; }
+  std::size_t slots() const { return slots_; }
+  const std::vector<unsigned>& counts() const { return count_; }
 
  protected:
   bool init_mapping() override;

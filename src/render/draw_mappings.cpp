@@ -4,12 +4,14 @@
 // for BarycentricMapping, also a green line from each output point to every
 // input vertex that carries it with a weight of at least 1e-4 (SOFA's mappers'
 // draw). SOFA reads showMappings (not showMechanicalMappings) for mechanical and
-// visual mappings alike.
+// visual mappings alike. SkinningMapping draws a line from each frame's centre to
+// each point it moves, coloured (w, w, 0) by the weight.
 #include <cmath>
 #include <cstring>
 
 #include "core/node.h"
 #include "mapping/barycentric_mapping.h"
+#include "mapping/skinning_mapping.h"
 #include "render/draw_collision.h"
 #include "visual/visual_style.h"
 
@@ -43,13 +45,42 @@ bool draws_points(const std::string& cls) {
          cls == "DeformableOnRigidFrameMapping";
 }
 
+// SOFA's SkinningMapping::draw: frame centre → point, (w, w, 0), for the point's frames of weight > 0.
+void skinning_lines(DrawList& list, const SkinningMapping& m, const std::vector<float>& pts) {
+  const std::vector<MechanicalState*> in = m.inputs();
+  if (in.empty() || !in[0] || in[0]->info().coord_width != 7) return;
+  const std::vector<double>& frames = in[0]->read(kPosition);
+  const std::vector<unsigned>& index = m.frame_index();
+  const std::vector<double>& w = m.weights();
+  const std::vector<unsigned>& count = m.counts();
+  const std::size_t slots = m.slots();
+  Batch& b = fresh_batch(list, &m, Batch::Kind::lines);
+  for (std::size_t i = 0; i < pts.size() / 3 && i < count.size(); ++i)
+    for (std::size_t k = 0; k < count[i] && i * slots + k < w.size(); ++k) {
+      const double wk = w[i * slots + k];
+      const std::size_t f = index[i * slots + k];
+      if (!(wk > 0.0)) break;
+      if (7 * f + 2 >= frames.size()) continue;
+      for (int c = 0; c < 3; ++c) b.positions.push_back(static_cast<float>(frames[7 * f + c]));
+      b.positions.insert(b.positions.end(), &pts[3 * i], &pts[3 * i] + 3);
+      const float rgba[4] = {static_cast<float>(wk), static_cast<float>(wk), 0.f, 1.f};
+      for (int e = 0; e < 2; ++e) b.colors.insert(b.colors.end(), rgba, rgba + 4);
+    }
+  close_batch(list, b);
+}
+
 }  // namespace
 
 void add_mappings(DrawList& list, Node& node) {
   thread_local std::vector<float> pts;
   for (const auto& o : node.objects()) {
     auto* m = dynamic_cast<Mapping*>(o.get());
-    if (!m || m->state() != ComponentState::valid || !draws_points(m->class_name())) continue;
+    if (!m || m->state() != ComponentState::valid) continue;
+    if (const auto* skin = dynamic_cast<const SkinningMapping*>(m)) {
+      if (output_points(*m, pts)) skinning_lines(list, *skin, pts);
+      continue;
+    }
+    if (!draws_points(m->class_name())) continue;
     if (!output_points(*m, pts) || pts.empty()) continue;
     Batch& b = fresh_batch(list, m, Batch::Kind::points);
     b.positions = pts;

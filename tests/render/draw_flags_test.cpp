@@ -147,6 +147,30 @@ TEST(MappingDraw, BarycentricPointsAndTheirLinesToTheInputVertices) {
   EXPECT_EQ(list.used, 0u);
 }
 
+// SkinningMapping: a line from each frame's centre to each point it moves, coloured (w, w, 0).
+// Point 0 at 0.5 from frame 0 and 1.5 from frame 1: weights 4 and 4/9, normalised (0.9, 0.1).
+TEST(MappingDraw, SkinningLinesColouredByWeight) {
+  auto s = test::load(R"(<Node name="root" gravity="0 0 0">
+      <VisualStyle displayFlags="showMappings"/>
+      <MechanicalObject template="Rigid3" position="0 0 0 0 0 0 1  2 0 0 0 0 0 1  10 0 0 0 0 0 1"/>
+      <Node name="skin"><MechanicalObject position="0.5 0 0"/><SkinningMapping nbRef="2"/></Node>
+    </Node>)");
+  ASSERT_TRUE(s.root);
+  render::DrawList list;
+  render::gather(*s.root, list);
+  ASSERT_EQ(list.used, 1u);
+  const render::Batch& b = list.batches[0];
+  EXPECT_EQ(b.kind, render::Batch::Kind::lines);
+  ASSERT_EQ(b.vertex_count(), 4u);
+  EXPECT_FLOAT_EQ(b.positions[0], 0.f);  // frame 0
+  EXPECT_FLOAT_EQ(b.positions[3], 0.5f);  // the point
+  EXPECT_FLOAT_EQ(b.positions[6], 2.f);  // frame 1
+  EXPECT_NEAR(b.colors[0], 0.9f, 1e-6);
+  EXPECT_NEAR(b.colors[1], 0.9f, 1e-6);
+  EXPECT_FLOAT_EQ(b.colors[2], 0.f);
+  EXPECT_NEAR(b.colors[8], 0.1f, 1e-6);
+}
+
 TEST(CollisionDraw, PictureOfTheCollisionSquare) {
   std::string err;
   render::RenderOptions o;
