@@ -5,12 +5,14 @@
 // input vertex that carries it with a weight of at least 1e-4 (SOFA's mappers'
 // draw). SOFA reads showMappings (not showMechanicalMappings) for mechanical and
 // visual mappings alike. SkinningMapping draws a line from each frame's centre to
-// each point it moves, coloured (w, w, 0) by the weight.
+// each point it moves, coloured (w, w, 0) by the weight; HexahedronCompositeFEMMapping
+// its fine grid points, light green, 7 px.
 #include <cmath>
 #include <cstring>
 
 #include "core/node.h"
 #include "mapping/barycentric_mapping.h"
+#include "mapping/hexahedron_composite_fem_mapping.h"
 #include "mapping/skinning_mapping.h"
 #include "render/draw_collision.h"
 #include "visual/visual_style.h"
@@ -76,6 +78,15 @@ void add_mappings(DrawList& list, Node& node) {
   for (const auto& o : node.objects()) {
     auto* m = dynamic_cast<Mapping*>(o.get());
     if (!m || m->state() != ComponentState::valid) continue;
+    if (const auto* comp = dynamic_cast<const HexahedronCompositeFEMMapping*>(m)) {
+      Batch& b = fresh_batch(list, m, Batch::Kind::points);
+      for (const Vec3& q : comp->fine_points())
+        for (int c = 0; c < 3; ++c) b.positions.push_back(static_cast<float>(q[c]));
+      b.shading.diffuse = {0.2f, 1.f, 0.f, 1.f};
+      b.point_size = 7.f;
+      close_batch(list, b);
+      continue;
+    }
     if (const auto* skin = dynamic_cast<const SkinningMapping*>(m)) {
       if (output_points(*m, pts)) skinning_lines(list, *skin, pts);
       continue;

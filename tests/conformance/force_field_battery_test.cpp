@@ -98,6 +98,13 @@ std::string sparse_hexas(const std::string& body) {
               " triangles='0 2 1  0 3 2  4 5 6  4 6 7  0 1 5  0 5 4  1 2 6  1 6 5  2 3 7  2 7 6  3 0 4  3 4 7'/>"
               "<MechanicalObject name='dofs'/>" + body);
 }
+// The same box on a ramified sparse grid (the composite homogenization follows ramifications).
+std::string ramified_hexas(const std::string& body) {
+  return node("<SparseGridRamificationTopology name='grid' n='3 2 2' nbVirtualFinerLevels='1'"
+              " position='0 0 0  2 0 0  2 1 0  0 1 0  0 0 1  2 0 1  2 1 1  0 1 1'"
+              " triangles='0 2 1  0 3 2  4 5 6  4 6 7  0 1 5  0 5 4  1 2 6  1 6 5  2 3 7  2 7 6  3 0 4  3 4 7'/>"
+              "<MechanicalObject name='dofs'/>" + body);
+}
 // Two prisms sharing the quad (1, 2, 5, 4), and two pyramids on either side of the square base.
 std::string prisms(const std::string& body) {
   return node("<MeshTopology name='topo' position='0 0 0  1 0 0  0 1 0  0 0 1  1 0 1.1  0 1 1  1.2 1.1 0  1.1 1 1'"
@@ -367,6 +374,9 @@ const std::vector<ForceFieldCase> kCases = {
      kCorotational, 0.2},
     {"NonUniformHexahedronFEMForceFieldAndMass",
      sparse_hexas(ff("NonUniformHexahedronFEMForceFieldAndMass", kElastic + "density='2' nbVirtualFinerLevels='1'")),
+     kCorotational, 0.2},
+    {"HexahedronCompositeFEMForceFieldAndMass",
+     ramified_hexas(ff("HexahedronCompositeFEMForceFieldAndMass", kElastic + "density='2' nbVirtualFinerLevels='1'")),
      kCorotational, 0.2},
     // SOFA assembles R·K·Rᵀ with frames other than add_dforce's once they turn (hexahedral_fem_test.cpp).
     {"HexahedralFEMForceField_large", hexas(ff("HexahedralFEMForceField", kElastic + "method='large'")),

@@ -60,6 +60,13 @@ std::string sparse_hexas(const std::string& body) {
               " triangles='0 2 1  0 3 2  4 5 6  4 6 7  0 1 5  0 5 4  1 2 6  1 6 5  2 3 7  2 7 6  3 0 4  3 4 7'/>"
               "<MechanicalObject name='dofs'/>" + body);
 }
+// The same box on a ramified sparse grid (the composite homogenization follows ramifications).
+std::string ramified_hexas(const std::string& body) {
+  return node("<SparseGridRamificationTopology name='grid' n='3 2 2' nbVirtualFinerLevels='1'"
+              " position='0 0 0  2 0 0  2 1 0  0 1 0  0 0 1  2 0 1  2 1 1  0 1 1'"
+              " triangles='0 2 1  0 3 2  4 5 6  4 6 7  0 1 5  0 5 4  1 2 6  1 6 5  2 3 7  2 7 6  3 0 4  3 4 7'/>"
+              "<MechanicalObject name='dofs'/>" + body);
+}
 // Two triangles in the plane, as Vec2d points.
 std::string triangles2d(const std::string& body) {
   return node("<MeshTopology name='topo' position='0 0 0  1 0 0  0 1 0  1.1 0.9 0' triangles='0 1 2  1 3 2'/>"
@@ -108,6 +115,10 @@ const std::vector<MassCase> kCases = {
     {"NonUniformHexahedronFEMForceFieldAndMass",
      sparse_hexas(mass("NonUniformHexahedronFEMForceFieldAndMass",
                        "youngModulus='1000' poissonRatio='0.3' density='2' nbVirtualFinerLevels='1'")),
+     0},
+    {"HexahedronCompositeFEMForceFieldAndMass",
+     ramified_hexas(mass("HexahedronCompositeFEMForceFieldAndMass",
+                         "youngModulus='1000' poissonRatio='0.3' density='2' nbVirtualFinerLevels='1'")),
      0},
 };
 

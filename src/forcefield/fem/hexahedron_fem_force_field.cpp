@@ -208,7 +208,7 @@ void add_element_mdx(const fem::HexaFEM& fem, std::span<const Vec3> d, std::span
       Vec3 F = Vec3::Zero();
       for (int c = 0; c < 3; ++c) {
         double s = 0.0;
-        for (int j = 0; j < 8; ++j) s += mass(e, w, j) * d[h[j]][c];
+        for (int j = 0; j < 8; ++j) s += mass(e, c, w, j) * d[h[j]][c];
         F[c] = s;
       }
       f[h[w]] += F * factor;
@@ -225,10 +225,13 @@ void HexahedronFEMForceFieldAndMass::add_mdx(const MechParams&, int res, int dx,
       for (int c = 0; c < 3; ++c) f[i][c] += lumped_[i][c] * d[i][c] * factor;
     return;
   }
-  if (!nodal_mass_.empty())
-    add_element_mdx(fem_, d, f, factor, [&](std::size_t e, int w, int j) { return nodal_mass_[e][8 * w + j]; });
+  if (!component_mass_.empty())
+    add_element_mdx(fem_, d, f, factor,
+                    [&](std::size_t e, int c, int w, int j) { return component_mass_[e][c][8 * w + j]; });
+  else if (!nodal_mass_.empty())
+    add_element_mdx(fem_, d, f, factor, [&](std::size_t e, int, int w, int j) { return nodal_mass_[e][8 * w + j]; });
   else
-    add_element_mdx(fem_, d, f, factor, [&](std::size_t e, int, int) { return element_mass_[e]; });
+    add_element_mdx(fem_, d, f, factor, [&](std::size_t e, int, int, int) { return element_mass_[e]; });
 }
 
 void HexahedronFEMForceFieldAndMass::acc_from_f(const MechParams&, int, int) {
@@ -247,6 +250,12 @@ bool HexahedronFEMForceFieldAndMass::build_mass(MatrixSink& M) {
     const auto& h = fem_.hexa[e];
     for (int i = 0; i < 8; ++i)
       for (int j = 0; j < 8; ++j) {
+        if (!component_mass_.empty()) {
+          Mat3 b = Mat3::Zero();
+          for (int c = 0; c < 3; ++c) b(c, c) = component_mass_[e][c][8 * i + j];
+          M.add_block(s, 3 * h[i], s, 3 * h[j], b);
+          continue;
+        }
         const double m = nodal_mass_.empty() ? element_mass_[e] : nodal_mass_[e][8 * i + j];
         M.add_block(s, 3 * h[i], s, 3 * h[j], Mat3::Identity() * m);
       }

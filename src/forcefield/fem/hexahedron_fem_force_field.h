@@ -95,6 +95,9 @@ class HexahedronFEMForceFieldAndMass : public HexahedronFEMBase<Mass> {
   // (row-major), which are then used instead.
   std::vector<double> element_mass_;                 // per element
   std::vector<std::array<double, 64>> nodal_mass_;   // per element, or empty
+  // Per element and component (x, y, z), an 8×8 nodal matrix each: masses homogenized with
+  // weights that differ by component (HexahedronCompositeFEMForceFieldAndMass); used first.
+  std::vector<std::array<std::array<double, 64>, 3>> component_mass_;
   std::vector<double> particle_mass_;  // lumped physical mass per point (gravity)
   std::vector<Vec3> lumped_;           // row sums per point and component (lumpedMass)
 };

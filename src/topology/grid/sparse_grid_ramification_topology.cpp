@@ -50,6 +50,9 @@ bool segment_crosses_triangle(const Vec3& s0, const Vec3& s1, const Vec3& t0, co
 void SparseGridRamificationTopology::generate() {
   climb_lookup_ = false;
   coarsest_of_finest_.clear();
+  ram_levels_.clear();
+  ram_children_.clear();
+  ram_cube_map_.clear();
   VecNi<3> dims;
   std::vector<Vec3> vertices;
   std::vector<std::vector<unsigned>> facets;
@@ -105,6 +108,21 @@ void SparseGridRamificationTopology::generate() {
   finest_points_ = fine.level.points;
   finest_hexas_ = fine.level.hexas;
   finest_types_ = fine.level.types;
+
+  // The hierarchy, for the composite FEM: each coarser hexahedron's children by octant, in the
+  // order of its connexion's children (SOFA's _hierarchicalCubeMapRamification).
+  ram_children_.resize(chain.size());
+  ram_cube_map_.resize(chain.size());
+  for (std::size_t j = 1; j < chain.size(); ++j) {
+    auto& children = ram_children_[j];
+    children.assign(chain[j].level.hexas.size(), {});
+    for (const Connexion& cx : chain[j].connexions)
+      for (const auto& [place, fc] : cx.children)
+        children[static_cast<std::size_t>(cx.hexa)][static_cast<std::size_t>(place)].push_back(
+            chain[j - 1].connexions[static_cast<std::size_t>(fc)].hexa);
+    ram_cube_map_[j] = std::move(chain[j].cube_map);
+  }
+  for (std::size_t j = 0; j + 1 < chain.size(); ++j) ram_levels_.push_back(std::move(chain[j].level));
   adopt(std::move(chain.back().level));
 }
 
@@ -361,6 +379,7 @@ void SparseGridRamificationTopology::coarsen_ramified(RamLevel& fine, RamLevel& 
       cl.types.push_back(CellType::boundary);
     }
   }
+  coarse.cube_map = hexa_children;
   auto coef = [](const std::vector<float>& list, int i) {
     return static_cast<std::size_t>(i) < list.size() ? list[static_cast<std::size_t>(i)] : 1.0f;
   };
@@ -375,6 +394,49 @@ void SparseGridRamificationTopology::coarsen_ramified(RamLevel& fine, RamLevel& 
     cl.stiffness[h] /= 8.0f;
     cl.mass[h] /= 8.0f;
   }
+}
+
+// ---------------------------------------------------------------- hierarchy
+
+int SparseGridRamificationTopology::ramified_levels() const {
+  nb_points();  // builds the grid first
+  return static_cast<int>(ram_levels_.size());
+}
+
+SparseGridRamificationTopology::RamifiedLevel SparseGridRamificationTopology::ramified_level(int k) const {
+  const int L = ramified_levels();
+  if (k <= 0 || L == 0) {
+    const std::size_t j = ram_children_.empty() ? 0 : ram_children_.size() - 1;
+    RamifiedLevel r{position.get(), hexahedra(), stiffness_coefs_, mass_coefs_, {}, {}};
+    if (!ram_children_.empty()) r.children = ram_children_[j], r.cube_map = ram_cube_map_[j];
+    return r;
+  }
+  const std::size_t j = static_cast<std::size_t>(L - std::min(k, L));
+  const Level& lv = ram_levels_[j];
+  return {lv.points, lv.hexas, lv.stiffness, lv.mass, ram_children_[j], ram_cube_map_[j]};
+}
+
+unsigned SparseGridRamificationTopology::find_cube_on_level(int k, const Vec3& p, double& fx, double& fy,
+                                                            double& fz) const {
+  const int L = ramified_levels();
+  if (k <= 0 || k > L) return kInvalidIndex;
+  const Level& lv = ram_levels_[static_cast<std::size_t>(L - k)];
+  double x, y, z;
+  const int c = lv.grid.find(p, x, y, z);
+  if (c < 0) return kInvalidIndex;
+  fx = x - std::floor(x);
+  fy = y - std::floor(y);
+  fz = z - std::floor(z);
+  const int s = lv.sparse_of_regular[static_cast<std::size_t>(c)];
+  return s < 0 ? kInvalidIndex : static_cast<unsigned>(s);
+}
+
+unsigned SparseGridRamificationTopology::find_nearest_cube_on_level(int k, const Vec3& p, double& fx, double& fy,
+                                                                    double& fz) const {
+  const int L = ramified_levels();
+  if (k <= 0 || k > L) return kInvalidIndex;
+  const Level& lv = ram_levels_[static_cast<std::size_t>(L - k)];
+  return nearest_boundary_cube(lv.points, lv.hexas, lv.types, p, fx, fy, fz);
 }
 
 // ---------------------------------------------------------------- look-ups

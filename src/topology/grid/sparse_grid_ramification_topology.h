@@ -16,6 +16,8 @@
 
 #include <array>
 #include <set>
+#include <span>
+#include <vector>
 
 #include "topology/grid/sparse_grid_topology.h"
 
@@ -32,6 +34,29 @@ class SparseGridRamificationTopology : public SparseGridTopology {
   // of the coarsest parent connexion; local coordinates are those of the component's grid.
   unsigned find_cube(const Vec3& p, double& fx, double& fy, double& fz) const override;
   unsigned find_nearest_cube(const Vec3& p, double& fx, double& fy, double& fz) const override;
+
+  // The grid hierarchy of a ramified grid with virtual finer levels, kept for
+  // HexahedronCompositeFEMForceFieldAndMass and its mapping. Level k = 0 is this grid,
+  // k = 1..ramified_levels() the level k times finer (SOFA's _virtualFinerLevels[L − k]).
+  struct RamifiedLevel {
+    std::span<const Vec3> points;
+    std::span<const Hexa> hexas;
+    // Per hexahedron. The finest level keeps its unramified lists, read with hexahedron indices (SOFA).
+    std::span<const float> stiffness, mass;
+    // Per hexahedron and octant (x + 2y + 4z), the hexahedra of level k + 1 in it (SOFA's
+    // _hierarchicalCubeMapRamification); empty for the finest level.
+    std::span<const std::array<std::vector<int>, 8>> children;
+    // SOFA's _hierarchicalCubeMap of a ramified level, quirks kept: unramified cell indices of
+    // level k + 1, and for a split cell's hexahedra only the last child; empty for the finest level.
+    std::span<const std::array<int, 8>> cube_map;
+  };
+  // 0 without virtual finer levels (or before the grid is built).
+  int ramified_levels() const;
+  RamifiedLevel ramified_level(int k) const;
+  // SOFA's SparseGridTopology::findCube and findNearestCube on virtual level k >= 1 (its own
+  // regular grid and unramified cell indices; no climbing): kInvalidIndex when not found.
+  unsigned find_cube_on_level(int k, const Vec3& p, double& fx, double& fy, double& fz) const;
+  unsigned find_nearest_cube_on_level(int k, const Vec3& p, double& fx, double& fy, double& fz) const;
 
  protected:
   void generate() override;
@@ -55,6 +80,7 @@ class SparseGridRamificationTopology : public SparseGridTopology {
     Level level;
     std::vector<std::vector<int>> cell_connexions;  // unramified cell → its connexion ids
     std::vector<Connexion> connexions;
+    std::vector<std::array<int, 8>> cube_map;  // SOFA's _hierarchicalCubeMap (coarser levels)
   };
 
   // SOFA's findConnexionsAtFinestLevel (one connexion per cell, face neighbours linked).
@@ -80,6 +106,11 @@ class SparseGridRamificationTopology : public SparseGridTopology {
   std::vector<Hexa> finest_hexas_;
   std::vector<CellType> finest_types_;
   std::vector<unsigned> coarsest_of_finest_;  // finest unramified cell → hexahedron of this grid
+  // The hierarchy (ramified_level): virtual levels finest first, and per level (finest first, this
+  // grid last) the ramified children and SOFA's cube map.
+  std::vector<Level> ram_levels_;
+  std::vector<std::vector<std::array<std::vector<int>, 8>>> ram_children_;
+  std::vector<std::vector<std::array<int, 8>>> ram_cube_map_;
 };
 
 }  // namespace sinew

@@ -1,6 +1,7 @@
 #include "forcefield/fem/nonuniform/nonuniform_hexahedron_fem_force_field_and_mass.h"
 
 #include <cmath>
+#include <functional>
 
 #include "core/node.h"
 #include "core/registry.h"
@@ -86,25 +87,18 @@ using Mass8 = std::array<double, 64>;
 // The condensation of one cell, level by level down to the finest level used.
 struct Condenser {
   const SparseGridTopology* grid;
-  int finest;                 // level whose cells get the classical matrices
-  fem::HexaMaterial material;
-  double mass_integral;       // per unit volume, density included
-  Vec3 scale;                 // the state's scale3d (SOFA scales the grid's points by it)
+  int finest;  // level whose cells get the classical matrices
+  std::function<bool(std::array<Vec3, 8>, double, fem::Mat24&, Mass8&)> classical_matrices;
   std::vector<std::string>* problems;
 
-  // Classical stiffness and mass of cell h of level k, both scaled by its stiffness coefficient
-  // (SOFA passes the stiffness coefficient for the mass too).
+  // Classical stiffness and mass of cell h of level k, both scaled by its stiffness coefficient.
   void classical(int k, std::size_t h, fem::Mat24& K, Mass8& M) const {
     const SparseGridTopology::LevelView L = grid->level(k);
     std::array<Vec3, 8> nodes;
-    for (int w = 0; w < 8; ++w) nodes[w] = L.points[L.hexas[h][w]].cwiseProduct(scale);
-    const double coef = static_cast<double>(L.stiffness[h]);
-    const fem::HexaJacobianInfo info = fem::hexa_element_stiffness(nodes, material, coef, K);
-    if (info.singular && problems->size() < 10)
+    for (int w = 0; w < 8; ++w) nodes[w] = L.points[L.hexas[h][w]];
+    if (!classical_matrices(nodes, static_cast<double>(L.stiffness[h]), K, M) && problems->size() < 10)
       problems->push_back("cell " + std::to_string(h) + " of virtual level " + std::to_string(k) +
                           " has a singular Jacobian");
-    const double vol = (nodes[1] - nodes[0]).norm() * (nodes[3] - nodes[0]).norm() * (nodes[4] - nodes[0]).norm();
-    M.fill((vol * mass_integral) * coef);
   }
 
   // K and M of cell h of level k: classical at the finest level, else the sum of its octants'
@@ -127,6 +121,48 @@ struct Condenser {
 };
 
 }  // namespace
+
+bool NonUniformHexahedronFEMForceFieldAndMass::classical_matrices(std::array<Vec3, 8> nodes, double coef,
+                                                                  fem::Mat24& K, std::array<double, 64>& M) const {
+  const auto* mo = dynamic_cast<const MechanicalObject*>(mstate.get());
+  const Vec3 scale = mo ? mo->scale3d.value() : Vec3::Ones();  // SOFA scales the grid's points by it
+  for (Vec3& p : nodes) p = p.cwiseProduct(scale);
+  // SOFA condenses with the first element's material for every cell.
+  const fem::HexaJacobianInfo info = fem::hexa_element_stiffness(nodes, fem_.material[0], coef, K);
+  const double vol = (nodes[1] - nodes[0]).norm() * (nodes[3] - nodes[0]).norm() * (nodes[4] - nodes[0]).norm();
+  M.fill((vol * hexa_mass_integral(density.value())) * coef);
+  return !info.singular;
+}
+
+bool NonUniformHexahedronFEMForceFieldAndMass::compute_element_matrices(const SparseGridTopology& grid, int levels) {
+  if (levels == 0) {
+    msg_warning("nbVirtualFinerLevels is 0: the grid's cells get the classical (uniform) matrices");
+  } else if (grid.kept_levels() < levels) {
+    msg_warning("the sparse grid " + grid.describe() + " has " + std::to_string(grid.kept_levels()) +
+                " virtual finer levels, fewer than nbVirtualFinerLevels = " + std::to_string(levels) +
+                ": the grid's cells get the classical (uniform) matrices");
+    levels = 0;
+  }
+  std::vector<std::string> problems;
+  const Condenser cond{&grid, levels,
+                       [this](std::array<Vec3, 8> n, double c, fem::Mat24& K, Mass8& M) {
+                         return classical_matrices(n, c, K, M);
+                       },
+                       &problems};
+  const std::size_t ne = fem_.size();
+  nodal_mass_.assign(ne, Mass8{});
+  for (std::size_t e = 0; e < ne; ++e) {
+    fem::Mat24 K = fem::Mat24::Zero();
+    cond.condense(0, e, K, nodal_mass_[e]);
+    // The kernel reads its stiffness column by column (row c of the storage as column c: exact
+    // for the classical K, symmetric to the bit). The condensed K is symmetric only to
+    // round-off, so its transpose is stored: the products are then SOFA's K·x, each row
+    // summed in SOFA's order.
+    fem_.K[e] = K.transpose();
+  }
+  for (const std::string& p : problems) msg_warning(p);
+  return true;
+}
 
 void NonUniformHexahedronFEMForceFieldAndMass::init() {
   // The uniform masses, gravity's particle masses (SOFA's rule is the same here) and the
@@ -154,44 +190,23 @@ void NonUniformHexahedronFEMForceFieldAndMass::init() {
     set_state(ComponentState::invalid);
     return;
   }
-  int levels = nb_virtual_finer_levels.value();
+  const int levels = nb_virtual_finer_levels.value();
   if (levels < 0) {
     msg_error("nbVirtualFinerLevels must be >= 0 (got " + std::to_string(levels) + ")");
     set_state(ComponentState::invalid);
     return;
   }
-  if (levels == 0) {
-    msg_warning("nbVirtualFinerLevels is 0: the grid's cells get the classical (uniform) matrices");
-  } else if (grid->kept_levels() < levels) {
-    msg_warning("the sparse grid " + grid->describe() + " has " + std::to_string(grid->kept_levels()) +
-                " virtual finer levels, fewer than nbVirtualFinerLevels = " + std::to_string(levels) +
-                ": the grid's cells get the classical (uniform) matrices");
-    levels = 0;
-  }
-
-  // SOFA condenses with the first element's material for every cell.
-  const auto* mo = dynamic_cast<const MechanicalObject*>(mstate.get());
-  std::vector<std::string> problems;
-  const Condenser cond{grid,   levels, fem_.material[0], hexa_mass_integral(density.value()),
-                       mo ? mo->scale3d.value() : Vec3::Ones(), &problems};
   const std::size_t ne = fem_.size(), np = rest_.size();
   if (grid->level(0).hexas.size() != ne) {
     msg_error("the sparse grid changed since its hexahedra were read");
     set_state(ComponentState::invalid);
     return;
   }
-  nodal_mass_.assign(ne, Mass8{});
-  for (std::size_t e = 0; e < ne; ++e) {
-    fem::Mat24 K = fem::Mat24::Zero();
-    cond.condense(0, e, K, nodal_mass_[e]);
-    // The kernel reads its stiffness column by column (row c of the storage as column c: exact
-    // for the classical K, symmetric to the bit). The condensed K is symmetric only to
-    // round-off, so its transpose is stored: the products are then SOFA's K·x, each row
-    // summed in SOFA's order.
-    fem_.K[e] = K.transpose();
+  if (!compute_element_matrices(*grid, levels)) {
+    set_state(ComponentState::invalid);
+    return;
   }
   fem_.touch_stiffness();
-  for (const std::string& p : problems) msg_warning(p);
 
   if (!use_mass.value()) {
     // SOFA's rule, kept: every point weighs totalMass divided by the number of elements.
@@ -202,7 +217,9 @@ void NonUniformHexahedronFEMForceFieldAndMass::init() {
     for (std::size_t e = 0; e < ne; ++e)
       for (int w = 0; w < 8; ++w)
         for (int j = 0; j < 8; ++j)
-          for (int c = 0; c < 3; ++c) lumped_[fem_.hexa[e][w]][c] += nodal_mass_[e][8 * w + j];
+          for (int c = 0; c < 3; ++c)
+            lumped_[fem_.hexa[e][w]][c] +=
+                component_mass_.empty() ? nodal_mass_[e][8 * w + j] : component_mass_[e][c][8 * w + j];
     for (Vec3& l : lumped_) l = l.cwiseAbs();  // SOFA flips negative row sums
   }
 }

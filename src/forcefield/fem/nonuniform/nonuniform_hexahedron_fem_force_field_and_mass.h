@@ -19,7 +19,9 @@
 
 namespace sinew {
 
-class NonUniformHexahedronFEMForceFieldAndMass final : public HexahedronFEMForceFieldAndMass {
+class SparseGridTopology;
+
+class NonUniformHexahedronFEMForceFieldAndMass : public HexahedronFEMForceFieldAndMass {
  public:
   Field<int> nb_virtual_finer_levels{this, "nbVirtualFinerLevels", 0,
                                      "virtual finer levels of the sparse grid the matrices are condensed from",
@@ -39,6 +41,16 @@ class NonUniformHexahedronFEMForceFieldAndMass final : public HexahedronFEMForce
   // (build_stiffness) gets Kᵀ's blocks, equal to K's to round-off.
   // Condensed 8×8 nodal mass of element e (the 24×24 matrix is this ⊗ I3), row-major.
   const std::array<double, 64>& element_mass(std::size_t e) const { return nodal_mass_[e]; }
+
+ protected:
+  // Fills fem_.K (each element's stiffness, transposed: see kernel()) and the element masses
+  // (nodal_mass_ or component_mass_) from the grid; false after an error. `levels` is
+  // nbVirtualFinerLevels, already checked to be >= 0.
+  virtual bool compute_element_matrices(const SparseGridTopology& grid, int levels);
+  // The classical stiffness and mass of hexahedron `nodes` (before the state's scale3d), both
+  // scaled by `coef` (SOFA passes the stiffness coefficient for the mass too), with the first
+  // element's material: SOFA's computeClassicalMechanicalMatrices. False when its Jacobian is singular.
+  bool classical_matrices(std::array<Vec3, 8> nodes, double coef, fem::Mat24& K, std::array<double, 64>& M) const;
 };
 
 namespace fem {
