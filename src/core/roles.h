@@ -327,6 +327,10 @@ using Triangle = std::array<unsigned, 3>;
 using Quad = std::array<unsigned, 4>;
 using Tetra = std::array<unsigned, 4>;
 using Hexa = std::array<unsigned, 8>;
+// Corner k of a hexahedron in SOFA's node order, as (x, y, z) in {0, 1}: the bottom face
+// counter-clockwise, then the top face.
+inline constexpr int kHexaCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                          {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
 
 class MeshTopologyBase : public Component {
  public:

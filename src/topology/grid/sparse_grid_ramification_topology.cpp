@@ -11,8 +11,6 @@ namespace sinew {
 
 namespace {
 
-constexpr int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-
 int opposite(int direction) { return direction % 2 == 0 ? direction + 1 : direction - 1; }
 
 // Does the segment cross triangle (t0,t1,t2)? SOFA's test (after Eberly): the line s0 + t·u
@@ -287,7 +285,7 @@ void SparseGridRamificationTopology::coarsen_ramified(RamLevel& fine, RamLevel& 
         cell_children.push_back(children);
         std::array<Vec3, 8> c;
         for (int w = 0; w < 8; ++w)
-          c[static_cast<std::size_t>(w)] = cl.grid.point(i + kCorner[w][0], j + kCorner[w][1], k + kCorner[w][2]);
+          c[static_cast<std::size_t>(w)] = cl.grid.point(i + kHexaCorner[w][0], j + kHexaCorner[w][1], k + kHexaCorner[w][2]);
         corners.push_back(c);
       }
 

@@ -540,14 +540,12 @@ void SparseGridTopology::build_from_types(Level& L, const std::vector<CellType>&
 
 void SparseGridTopology::number_points(Level& L, const std::vector<std::array<int, 3>>& cells) {
   // Points are the distinct corners, numbered in lexicographic order of their coordinates.
-  static constexpr int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                                        {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   std::map<Vec3, unsigned, Lexicographic> index_of;
   std::vector<std::array<Vec3, 8>> corners(cells.size());
   for (std::size_t h = 0; h < cells.size(); ++h) {
     const auto& c = cells[h];
     for (int k = 0; k < 8; ++k) {
-      corners[h][k] = L.grid.point(c[0] + kCorner[k][0], c[1] + kCorner[k][1], c[2] + kCorner[k][2]);
+      corners[h][k] = L.grid.point(c[0] + kHexaCorner[k][0], c[1] + kHexaCorner[k][1], c[2] + kHexaCorner[k][2]);
       index_of[corners[h][k]] = 0;
     }
   }

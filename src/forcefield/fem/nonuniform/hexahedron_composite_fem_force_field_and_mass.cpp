@@ -7,6 +7,7 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <utility>
 
 #include "core/node.h"
 #include "core/registry.h"
@@ -21,16 +22,13 @@ using Mat = Eigen::MatrixXd;
 using Weight = HexahedronCompositeFEMForceFieldAndMass::Weight;
 using Mass8 = std::array<double, 64>;
 
-// Corner j of a hexahedron in SOFA's node order.
-constexpr int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-
 // The 27 nodes of a cell split in 2×2×2 are numbered x + 3y + 9z (x, y, z in 0..2).
 // Trilinear weight of corner j at node p: 1, ½, ¼, ⅛ or 0 (exact in binary).
 double middle_weight(int p, int j) {
   const int x[3] = {p % 3, (p / 3) % 3, p / 9};
   double w = 1.0;
   for (int a = 0; a < 3; ++a) {
-    const int d = std::abs(x[a] - 2 * kCorner[j][a]);
+    const int d = std::abs(x[a] - 2 * kHexaCorner[j][a]);
     w *= d == 0 ? 1.0 : (d == 1 ? 0.5 : 0.0);
   }
   return w;
@@ -38,14 +36,14 @@ double middle_weight(int p, int j) {
 
 // Node (0..26) of corner j of octant o (x + 2y + 4z).
 int octant_node(int o, int j) {
-  return ((o & 1) + kCorner[j][0]) + 3 * (((o >> 1) & 1) + kCorner[j][1]) + 9 * (((o >> 2) & 1) + kCorner[j][2]);
+  return ((o & 1) + kHexaCorner[j][0]) + 3 * (((o >> 1) & 1) + kHexaCorner[j][1]) + 9 * (((o >> 2) & 1) + kHexaCorner[j][2]);
 }
 
 // The corner a node is (its coordinates all 0 or 2), else −1.
 int coarse_corner(int p) {
   const int x[3] = {p % 3, (p / 3) % 3, p / 9};
   for (int j = 0; j < 8; ++j)
-    if (x[0] == 2 * kCorner[j][0] && x[1] == 2 * kCorner[j][1] && x[2] == 2 * kCorner[j][2]) return j;
+    if (x[0] == 2 * kHexaCorner[j][0] && x[1] == 2 * kHexaCorner[j][1] && x[2] == 2 * kHexaCorner[j][2]) return j;
   return -1;
 }
 
@@ -54,7 +52,7 @@ int coarse_corner(int p) {
 // stored in single precision.
 fem::Mat24 rigid_stiffness() {
   std::array<Vec3, 8> cube;
-  for (int j = 0; j < 8; ++j) cube[j] = Vec3(kCorner[j][0], kCorner[j][1], kCorner[j][2]);
+  for (int j = 0; j < 8; ++j) cube[j] = Vec3(kHexaCorner[j][0], kHexaCorner[j][1], kHexaCorner[j][2]);
   fem::Mat24 K;
   fem::hexa_element_stiffness(cube, 1.02e12, 0.0, K);
   for (int i = 0; i < 24; ++i)
@@ -90,10 +88,14 @@ fem::Mat24 expand_mass(const Mass8& N) {
 // The homogenization of one coarse cell, level by level (SOFA's
 // computeMechanicalMatricesRecursivelyWithRamifications), and the weights it leaves.
 struct Homogenizer {
+  using Classical = std::function<bool(const std::array<Vec3, 8>&, double, fem::Mat24&, Mass8&)>;
+  Homogenizer(const SparseGridRamificationTopology& g, int l, bool c, Classical f)
+      : grid(g), levels(l), complete(c), classical(std::move(f)) {}
+
   const SparseGridRamificationTopology& grid;
   int levels;         // the force field's nbVirtualFinerLevels
   bool complete;      // completeInterpolation
-  std::function<bool(const std::array<Vec3, 8>&, double, fem::Mat24&, Mass8&)> classical;
+  Classical classical;
   fem::Mat24 rigid = rigid_stiffness();
   // weights[levels − k][h]: u of hexahedron h of level k (8 × 3) = W · u of its parent's corners.
   std::vector<std::vector<Weight>> weights;
@@ -363,10 +365,10 @@ bool HexahedronCompositeFEMForceFieldAndMass::compute_element_matrices(const Spa
     return false;
   }
 
-  Homogenizer hom{*ramified, levels, complete_interpolation.value(),
+  Homogenizer hom(*ramified, levels, complete_interpolation.value(),
                   [this](const std::array<Vec3, 8>& nodes, double coef, fem::Mat24& K, Mass8& M) {
                     return classical_matrices(nodes, coef, K, M);
-                  }};
+                  });
   hom.weights.resize(static_cast<std::size_t>(levels));
   for (int k = 1; k <= levels; ++k)
     hom.weights[static_cast<std::size_t>(levels - k)].assign(ramified->ramified_level(k).hexas.size(),

@@ -13,16 +13,14 @@ namespace sinew {
 namespace fem {
 
 float hexa_octant_weight(int c, int k, int j) {
-  // Corner k of a hexahedron in SOFA's node order; octants are numbered x + 2y + 4z instead.
-  static constexpr int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                                        {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  // Corners in SOFA's node order (kHexaCorner); octants are numbered x + 2y + 4z instead.
   const int oct[3] = {c & 1, (c >> 1) & 1, (c >> 2) & 1};
   float w = 1.0f;
   for (int a = 0; a < 3; ++a) {
     // Fine corner k of octant c sits at (oct + corner k) / 2 in the coarse cell; the trilinear
     // weight of coarse corner j along this axis is 1 − |that − corner j|: 1, ½ or 0.
-    const int twice = oct[a] + kCorner[k][a];  // twice the coordinate: 0, 1 or 2
-    const int d = std::abs(twice - 2 * kCorner[j][a]);
+    const int twice = oct[a] + kHexaCorner[k][a];  // twice the coordinate: 0, 1 or 2
+    const int d = std::abs(twice - 2 * kHexaCorner[j][a]);
     w *= d == 0 ? 1.0f : (d == 1 ? 0.5f : 0.0f);
   }
   return w;
