@@ -6,6 +6,8 @@
 #include <fstream>
 #include <map>
 
+#include <unistd.h>
+
 #include "badinput_helpers.h"
 #include "runner/session.h"
 #include "test_paths.h"
@@ -20,9 +22,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Writes the closed surface of the box [lo, hi] (12 outward triangles) as an OBJ file.
+// Writes the closed surface of the box [lo, hi] (12 outward triangles) as an OBJ file. The
+// name carries the process id: ctest runs these tests in parallel processes, and two of them
+// writing one file while the other reads it gave an empty mesh.
 std::string box_obj(const std::string& name, Vec3 lo, Vec3 hi) {
-  const fs::path path = fs::temp_directory_path() / ("sinew_sgm_" + name + ".obj");
+  const fs::path path =
+      fs::temp_directory_path() / ("sinew_sgm_" + std::to_string(::getpid()) + "_" + name + ".obj");
   std::ofstream out(path);
   out.precision(17);
   for (int k = 0; k < 8; ++k)
