@@ -13,6 +13,7 @@
 #include <limits>
 #include <utility>
 
+#include "collision/intersect/proximity_math.h"
 #include "math/sofa_vec.h"
 
 namespace sinew::obb {
@@ -22,8 +23,11 @@ namespace {
 constexpr double kTol = 1e-6;           // IntrUtil::ZERO_TOLERANCE
 constexpr double kSqTol = kTol * kTol;  // IntrUtil::SQ_ZERO_TOLERANCE
 
-double dot(const Vec3& a, const Vec3& b) { return sofa_dot(a, b); }
-double norm2(const Vec3& a) { return sofa_dot(a, a); }
+// SOFA's Vec arithmetic and the output helpers shared by the element tests.
+using intersect_detail::append;
+using intersect_detail::dot;
+using intersect_detail::larger_model_index;
+using intersect_detail::norm2;
 
 // Rescaled unless already within 1e-12 of unit length (IntrUtil::normalize).
 void normalize_loose(Vec3& v) {
@@ -787,14 +791,6 @@ bool find_triangle_box(const TriangleElem& tr, const ObbElem& box, double dmax, 
   return true;
 }
 
-DetectionOutput& append(std::vector<DetectionOutput>& out, const ElemInfo& i1, const ElemInfo& i2, std::int64_t id) {
-  DetectionOutput& d = out.emplace_back();
-  d.elem1 = i1.index;
-  d.elem2 = i2.index;
-  d.id = id;
-  return d;
-}
-
 }  // namespace
 
 int obb_obb(double alarm, double contact, const ObbElem& e1, const ObbElem& e2, std::vector<DetectionOutput>& out) {
@@ -804,7 +800,7 @@ int obb_obb(double alarm, double contact, const ObbElem& e1, const ObbElem& e2, 
   const double dist2 = norm2(d01);
   if (!f.colliding && dist2 > alarm * alarm) return 0;
   // SOFA's strict `>` on model sizes: on a tie the id is box 2's index.
-  DetectionOutput& d = append(out, e1.info, e2.info, e1.info.model_size > e2.info.model_size ? e1.info.index : e2.info.index);
+  DetectionOutput& d = append(out, e1.info, e2.info, larger_model_index(e1.info, e2.info));
   // The axis when the points lie along it (the separating axis is unit), else the points' direction.
   if (norm2(sofa_cross(d01, f.axis)) < kTol) {
     d.normal = f.axis;
