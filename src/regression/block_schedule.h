@@ -30,14 +30,25 @@ class BlockSchedule {
   // event whose read_limit is negative.
   std::optional<std::size_t> advance(double read_limit, double keep_limit);
 
+  // Loop mode (ReadTopology's `loop`): at the end of the file, read it again
+  // from its first block, its times shifted by the time of the header read last
+  // (SOFA's loopTime; the rewind happens within the event, so the first block
+  // of the next pass can be due at the same event as the last one). A file
+  // whose last time is <= 0 would never advance: looping stops there.
+  void set_loop(bool on) { loop_ = on; }
+  // Shift added to the printed times of the current pass (0 on the first).
+  double offset() const { return offset_; }
+
   // True once every block has been read (later events compare nothing).
-  bool at_end() const { return next_ == times_.size() && !pending_; }
+  bool at_end() const { return next_ == times_.size() && !pending_ && !loop_; }
 
  private:
   std::vector<double> times_;
   std::size_t next_ = 0;                // first block whose header is unread
   std::optional<std::size_t> pending_;  // header read, not yet due
-  double next_time_ = 0.0;              // time of the pending block (0 at start)
+  double next_time_ = 0.0;              // time of the pending block, shifted (0 at start)
+  double offset_ = 0.0;                 // shift of the current pass
+  bool loop_ = false;
 };
 
 }  // namespace sinew::regression

@@ -3,6 +3,7 @@
 #include <unordered_map>
 
 #include "regression/state_file.h"
+#include "exporter/playback/topology_view.h"
 #include "regression/topology_file.h"
 
 namespace sinew::runner {
@@ -79,21 +80,6 @@ void StateCompareProbe::handle_event(Event& e) {
   const auto& x = state_->read(kPosition);
   const auto& v = state_->read(kVelocity);
   comparer_.on_step_begin(node()->time.value(), x.data(), x.size(), v.data(), v.size(), state_->size());
-}
-
-regression::TopologyView topology_view(const MeshTopologyBase& t) {
-  regression::TopologyView view;
-  auto flat = [](const auto& list) {
-    using Elem = typename std::decay_t<decltype(list)>::value_type;
-    return std::span<const std::uint32_t>(reinterpret_cast<const std::uint32_t*>(list.data()),
-                                          list.size() * std::tuple_size_v<Elem>);
-  };
-  view.indices[0] = flat(t.edges());
-  view.indices[1] = flat(t.triangles());
-  view.indices[2] = flat(t.quads());
-  view.indices[3] = flat(t.tetrahedra());
-  view.indices[4] = flat(t.hexahedra());
-  return view;
 }
 
 void TopologyWriterProbe::handle_event(Event& e) {

@@ -89,7 +89,4 @@ class TopologyCompareProbe final : public Component {
   regression::TopologyComparer comparer_;
 };
 
-// View of a topology's element lists as flat index arrays.
-regression::TopologyView topology_view(const MeshTopologyBase& t);
-
 }  // namespace sinew::runner

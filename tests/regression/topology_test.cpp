@@ -2,6 +2,10 @@
 // (regression-protocol.md §3.5, §5, §7).
 #include <gtest/gtest.h>
 
+#include <optional>
+#include <vector>
+
+#include "regression/block_schedule.h"
 #include "regression/number_format.h"
 #include "regression/topology_compare.h"
 #include "regression/topology_file.h"
@@ -173,6 +177,38 @@ TEST(TopologyComparer, MatchingTopologyGivesZero) {
   for (int k = 0; k < 30; ++k, t += 0.01) cmp.on_step_begin(t, live.view());
   EXPECT_EQ(cmp.total_error(), 0);
   EXPECT_EQ(cmp.compared_blocks(), 25);
+}
+
+// Loop mode (ReadTopology's `loop`): at the end the file starts again, its times shifted by the
+// last time read, within the same event: at t = 0.5 the first block of the second pass (0 + 0.5)
+// replaces the last block of the first, as SOFA's reader does.
+TEST(BlockSchedule, LoopRestartsShiftedByTheLastTime) {
+  BlockSchedule s({0.0, 0.25, 0.5});
+  s.set_loop(true);
+  std::vector<std::optional<std::size_t>> due;
+  for (int k = 0; k < 6; ++k) {
+    const double t = 0.25 * k;
+    due.push_back(s.advance(t + 1e-8, t));
+  }
+  const std::vector<std::optional<std::size_t>> want{0, 1, 0, 1, 0, 1};
+  EXPECT_EQ(due, want);
+  EXPECT_DOUBLE_EQ(s.offset(), 1.0);
+  EXPECT_FALSE(s.at_end());
+}
+
+// A looping file whose last time is 0 never moves the clock on: read once, no hang.
+TEST(BlockSchedule, LoopOverAFileAtTimeZeroStops) {
+  BlockSchedule s({0.0, 0.0});
+  s.set_loop(true);
+  EXPECT_EQ(s.advance(1e-8, 0.0), std::optional<std::size_t>(1));
+  EXPECT_EQ(s.advance(1.0 + 1e-8, 1.0), std::nullopt);
+}
+
+// Tiny positive times would need 1e300 passes: each event is bounded, nothing hangs.
+TEST(BlockSchedule, LoopOverTinyTimesIsBounded) {
+  BlockSchedule s({1e-300});
+  s.set_loop(true);
+  EXPECT_EQ(s.advance(1.0 + 1e-8, 1.0), std::optional<std::size_t>(0));
 }
 
 }  // namespace

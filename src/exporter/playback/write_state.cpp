@@ -1,10 +1,7 @@
 #include "exporter/playback/write_state.h"
 
-#include <zlib.h>
-
 #include <charconv>
 #include <cmath>
-#include <filesystem>
 #include <limits>
 
 #include "core/node.h"
@@ -14,19 +11,10 @@ namespace sinew {
 
 WriteState::WriteState() { listening.set(true); }
 
-WriteState::~WriteState() { close(); }
-
-void WriteState::close() {
-  if (file_) std::fclose(file_);
-  if (gz_) gzclose(static_cast<gzFile>(gz_));
-  file_ = nullptr;
-  gz_ = nullptr;
-}
-
-void WriteState::cleanup() { close(); }
+void WriteState::cleanup() { out_.close(); }
 
 void WriteState::reinit() {
-  close();
+  out_.close();
   init();
 }
 
@@ -41,17 +29,7 @@ void WriteState::init() {
     filename.set(std::string("defaultExportFile"));
   }
   const std::string& path = filename.get();
-  close();
-  std::error_code ec;
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-  if (path.size() >= 3 && path.compare(path.size() - 3, 3, ".gz") == 0) {
-    gz_ = gzopen(path.c_str(), "wb");
-    if (!gz_) msg_error("filename: cannot create the compressed file '" + path + "'");
-  } else {
-    file_ = std::fopen(path.c_str(), "w");
-    if (!file_) msg_error("filename: cannot create the file '" + path + "'");
-  }
+  if (std::string error; !out_.open(path, &error)) msg_error("filename: " + error);
   const double dt = node() ? node()->dt.get() : 0.0;
   if (period.is_set()) {
     periodic_ = true;
@@ -107,16 +85,6 @@ void WriteState::reset() {
   last_time_ = 0;
 }
 
-void WriteState::put(const std::string& text) {
-  if (gz_) {
-    gzputs(static_cast<gzFile>(gz_), text.c_str());
-    gzflush(static_cast<gzFile>(gz_), Z_SYNC_FLUSH);
-  } else if (file_) {
-    std::fputs(text.c_str(), file_);
-    std::fflush(file_);
-  }
-}
-
 void WriteState::append_vec(std::string& out, const char* tag, int id) const {
   out += "  ";
   out += tag;
@@ -133,7 +101,7 @@ void WriteState::append_vec(std::string& out, const char* tag, int id) const {
 }
 
 void WriteState::handle_event(Event& e) {
-  if (!valid_ || e.kind != Event::Kind::animate_begin || !state_ || (!file_ && !gz_)) return;
+  if (!valid_ || e.kind != Event::Kind::animate_begin || !state_ || !out_.is_open()) return;
   const double t = node()->time.get();
   const double eps = 0.1 * node()->dt.get();
   bool now = false;
@@ -162,7 +130,7 @@ void WriteState::handle_event(Event& e) {
   if (write_v.get()) append_vec(block, "V", kVelocity);
   // SOFA's compressed branch leaves the forces out; written in both here.
   if (write_f.get()) append_vec(block, "F", kForce);
-  put(block);
+  out_.put(block);
   ++exports_;
 }
 

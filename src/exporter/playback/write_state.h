@@ -16,18 +16,17 @@
 // energy settles) are not implemented: a warning says so and the file is written on.
 #pragma once
 
-#include <cstdio>
 #include <string>
 #include <vector>
 
 #include "core/roles.h"
+#include "exporter/playback/text_sink.h"
 
 namespace sinew {
 
 class WriteState final : public Component {
  public:
   WriteState();
-  ~WriteState() override;
 
   Field<std::string> filename{this, "filename", "", "output file name (.gz: compressed)", "Export"};
   Field<bool> write_x{this, "writeX", true, "write the positions (X=)", "Export"};
@@ -52,13 +51,10 @@ class WriteState final : public Component {
   int exports() const { return exports_; }
 
  private:
-  void close();
-  void put(const std::string& text);
   void append_vec(std::string& out, const char* tag, int id) const;
 
   MechanicalState* state_ = nullptr;
-  FILE* file_ = nullptr;
-  void* gz_ = nullptr;  // gzFile
+  TextSink out_;
   bool valid_ = false, periodic_ = false, first_export_ = false;
   std::size_t next_ = 0;
   double last_time_ = 0;
