@@ -21,7 +21,8 @@ Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind) {
   if (b.source != source || b.kind != kind) {
     b.positions.clear(), b.normals.clear(), b.colors.clear(), b.indices.clear(), b.texcoords.clear();
     b.texture.clear();
-    b.material_version = 0;
+    b.shading_parsed = false;
+    b.translucent = false;
   }
   b.source = source;
   b.kind = kind;
@@ -120,11 +121,20 @@ void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const C
     --list.used;
     return;
   }
-  // The material text is parsed again only when it changed (parsing allocates).
-  if (b.material_version != m.material.version()) {
-    b.shading = shading_of(material_of(m));
-    b.material_version = m.material.version();
+  // The material is parsed again only when its text changed (parsing allocates).
+  if (!b.shading_parsed || b.material_text != m.material.get() || b.color_text != m.color()) {
+    const Material mat = material_of(m);
+    b.shading = shading_of(mat);
+    // SOFA's OglModel::drawGroup: a group is transparent when its diffuse term is used with
+    // an alpha below 1 (the alpha of the lit colour is the diffuse alpha).
+    b.translucent = mat.use_diffuse && mat.diffuse[3] < 1.f;
+    b.material_text = m.material.get();
+    b.color_text = m.color();
+    b.shading_parsed = true;
   }
+  b.blend = m.blend_translucency.get();
+  b.write_depth = m.write_z_transparent.get();
+  b.premultiplied = m.premultiplied_alpha.get();
   grow_bounds(list, b.positions);
 }
 

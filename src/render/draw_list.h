@@ -7,6 +7,8 @@
 //   corner, then normalised), its triangles and
 //   its quads split in two, the material's colour; a ClipPlane of the model's node or
 //   an ancestor (the nearest active one) removes the half-space its normal points to.
+//   Translucent models (diffuse alpha < 1) are drawn after the opaque batches, in graph
+//   order, as SOFA's transparent pass.
 // - Force fields (showForceFields): the volume elements of a node's topology under a
 //   force field, drawn as SOFA's FEM force fields do (tetrahedra shrunk towards their
 //   centre with four blues, hexahedra shrunk with six face colours), flat shaded.
@@ -49,10 +51,19 @@ struct Batch {
   float color_ambient = 0.f;  // ambient term proportional to the vertex colour (SOFA's draw tool)
   float point_size = 1.f;
   bool wireframe = false;  // showWireframe: triangles drawn as their edges
+  // A visual model whose material is translucent (diffuse used, alpha < 1): drawn after every
+  // opaque batch, blended by SOFA's two passes unless `blend` is off (blendTranslucency),
+  // writing depth only with `write_depth` (writeZTransparent); `premultiplied`: the colour
+  // already holds its alpha (premultipliedAlpha).
+  bool translucent = false, blend = true, write_depth = false, premultiplied = false;
   // ClipPlane over the model (visual models only): a vertex p is kept where
   // clip·(p, 1) >= 0 (gl_ClipDistance); (0, 0, 0, 1) keeps everything.
   std::array<float, 4> clip{0.f, 0.f, 0.f, 1.f};
-  std::uint64_t material_version = 0;  // the model's `material` version `shading` was read at (0: none)
+  // The texts `shading` was parsed from (a model's material and colour, a box's colour), so
+  // that it is parsed again only when they change. Texts rather than field versions: a
+  // component of another scene can take a freed component's address with the same version.
+  std::string material_text, color_text;
+  bool shading_parsed = false;
   std::size_t vertex_count() const { return positions.size() / 3; }
 };
 

@@ -20,10 +20,11 @@ void add_box(DrawList& list, const VisualBoundingBox& vb) {
   if (!box) return;
   Batch& b = fresh_batch(list, &vb, Batch::Kind::lines);
   // The colour text is parsed again only when it changed (parsing allocates).
-  if (b.material_version != vb.color.version()) {
+  if (!b.shading_parsed || b.material_text != vb.color.get()) {
     const Rgba c = parse_rgba(vb.color.get()).value_or(Rgba{1, 1, 0, 1});
     b.shading.diffuse = c;
-    b.material_version = vb.color.version();
+    b.material_text = vb.color.get();
+    b.shading_parsed = true;
   }
   const Vec3& lo = box->first;
   const Vec3& hi = box->second;

@@ -52,6 +52,7 @@ uniform float u_shininess;
 uniform float u_color_ambient;
 uniform bool u_lit;
 uniform bool u_textured;
+uniform bool u_translucent;
 uniform sampler2D u_texture;
 out vec4 frag_color;
 void main() {
@@ -63,8 +64,17 @@ void main() {
   float s = d > 0.0 ? pow(d, u_shininess) : 0.0;
   vec3 c = u_emissive.rgb + u_ambient.rgb + u_color_ambient * v_color.rgb + v_color.rgb * d + u_specular.rgb * s;
   // A texture modulates the lit colour (OpenGL's default GL_MODULATE, as SOFA's OglModel).
-  if (u_textured) c *= texture(u_texture, v_texcoord).rgb;
-  frag_color = vec4(min(c, vec3(1.0)), 1.0);
+  // The alpha of fixed-function lighting is the diffuse alpha (texture alpha modulating it);
+  // it matters only to translucent models, opaque ones keep the picture opaque.
+  float alpha = 1.0;
+  if (u_textured) {
+    vec4 t = texture(u_texture, v_texcoord);
+    c *= t.rgb;
+    alpha = v_color.a * t.a;
+  } else {
+    alpha = v_color.a;
+  }
+  frag_color = vec4(min(c, vec3(1.0)), u_translucent ? alpha : 1.0);
 }
 )";
 
@@ -138,6 +148,7 @@ std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int sample
   r->u_point_size_ = glGetUniformLocation(p, "u_point_size");
   r->u_clip_ = glGetUniformLocation(p, "u_clip");
   r->u_textured_ = glGetUniformLocation(p, "u_textured");
+  r->u_translucent_ = glGetUniformLocation(p, "u_translucent");
   glUseProgram(p);
   glUniform1i(glGetUniformLocation(p, "u_texture"), 0);  // texture unit 0
   return r;
@@ -234,10 +245,47 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
     glGenBuffers(1, &g.ebo);
     gpu_.push_back(g);
   }
+  // SOFA's two visual passes: opaque models in graph order, then translucent ones.
+  for (std::size_t i = 0; i < list.used; ++i)
+    if (!list.batches[i].translucent) draw_batch(list.batches[i], gpu_[i]);
+  glUniform1i(u_translucent_, 1);
+  // The picture's alpha stays that of the opaque pass (a PNG of a translucent model is not
+  // itself translucent).
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   for (std::size_t i = 0; i < list.used; ++i) {
     const Batch& b = list.batches[i];
-    GpuBatch& g = gpu_[i];
-    glBindVertexArray(g.vao);
+    if (!b.translucent) continue;
+    if (!b.blend) {  // blendTranslucency off: drawn opaque, after the opaque models
+      draw_batch(b, gpu_[i]);
+      continue;
+    }
+    // OglModel::internalDraw: the background is first darkened by (1 - alpha), then the
+    // colour is added weighted by alpha (or as is when premultiplied): the usual "over",
+    // written without depth unless writeZTransparent.
+    glEnable(GL_BLEND);
+    glDepthMask(b.write_depth ? GL_TRUE : GL_FALSE);
+    glBlendFunc(GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+    draw_batch(b, gpu_[i]);
+    glBlendFunc(b.premultiplied ? GL_ONE : GL_SRC_ALPHA, GL_ONE);
+    draw_batch(b, gpu_[i], /*upload=*/false);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+  }
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glUniform1i(u_translucent_, 0);
+  glBindVertexArray(0);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glDisable(GL_CLIP_DISTANCE0);  // the viewer draws its overlays after this
+  if (samples_ > 0) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+}
+
+void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {
+  glBindVertexArray(g.vao);
+  if (upload_data) {
     upload(GL_ARRAY_BUFFER, g.vbo[0], b.positions.data(), b.positions.size() * sizeof(float), g.capacity[0]);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
     glEnableVertexAttribArray(0);
@@ -276,31 +324,26 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
       glDisableVertexAttribArray(3);
       glUniform1i(u_textured_, 0);
     }
-    const GLsizei n = static_cast<GLsizei>(b.vertex_count());
-    if (b.kind == Batch::Kind::points) {
-      glUniform1i(u_lit_, 0);
-      glDrawArrays(GL_POINTS, 0, n);
-    } else if (b.kind == Batch::Kind::lines) {
-      glUniform1i(u_lit_, 0);
-      glDrawArrays(GL_LINES, 0, n);
-    } else {
-      glUniform1i(u_lit_, 1);
-      glPolygonMode(GL_FRONT_AND_BACK, b.wireframe ? GL_LINE : GL_FILL);
-      if (!b.indices.empty()) {
-        upload(GL_ELEMENT_ARRAY_BUFFER, g.ebo, b.indices.data(), b.indices.size() * sizeof(unsigned), g.capacity[3]);
-        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.indices.size()), GL_UNSIGNED_INT, nullptr);
-      } else {
-        glDrawArrays(GL_TRIANGLES, 0, n);
-      }
-    }
+    if (b.kind == Batch::Kind::triangles && !b.indices.empty())
+      upload(GL_ELEMENT_ARRAY_BUFFER, g.ebo, b.indices.data(), b.indices.size() * sizeof(unsigned), g.capacity[3]);
   }
-  glBindVertexArray(0);
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-  glDisable(GL_CLIP_DISTANCE0);  // the viewer draws its overlays after this
-  if (samples_ > 0) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
-    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  // Without upload, the vertex array object, the uniforms and the texture are still those
+  // set by the previous call for this batch.
+  const GLsizei n = static_cast<GLsizei>(b.vertex_count());
+  if (b.kind == Batch::Kind::points) {
+    glUniform1i(u_lit_, 0);
+    glDrawArrays(GL_POINTS, 0, n);
+  } else if (b.kind == Batch::Kind::lines) {
+    glUniform1i(u_lit_, 0);
+    glDrawArrays(GL_LINES, 0, n);
+  } else {
+    glUniform1i(u_lit_, 1);
+    glPolygonMode(GL_FRONT_AND_BACK, b.wireframe ? GL_LINE : GL_FILL);
+    if (!b.indices.empty()) {
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.indices.size()), GL_UNSIGNED_INT, nullptr);
+    } else {
+      glDrawArrays(GL_TRIANGLES, 0, n);
+    }
   }
 }
 

@@ -257,7 +257,11 @@ void OglModel::init() {
     for (auto& e : edges.edit()) std::swap(e[0], e[1]);
     for (auto& tr : triangles.edit()) std::swap(tr[1], tr[2]);
     for (auto& qd : quads.edit()) std::swap(qd[1], qd[3]);
-  }  update_bbox();
+  }
+  if (alpha_blend.get())
+    msg_warning("alphaBlend: custom blending (blendEquation, sfactor, dfactor) is not drawn; the model is drawn "
+                "opaque, or translucent by its material's alpha");
+  update_bbox();
 }
 
 void register_ogl_model(Registry& r) {

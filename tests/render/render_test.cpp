@@ -311,6 +311,52 @@ TEST_F(RenderTest, ObjMaterialGivesTheColour) {
   EXPECT_NEAR(c[2], 26, 2);
 }
 
+// A unit square facing the camera at depth z, as one OglModel (quads are split in two).
+std::string square(const std::string& name, const std::string& attrs, double z) {
+  const std::string zs = std::to_string(z);
+  return "<Node name=\"" + name + "\"><OglModel name=\"" + name + "\" " + attrs + " position=\"-0.5 -0.5 " + zs +
+         "  0.5 -0.5 " + zs + "  0.5 0.5 " + zs + "  -0.5 0.5 " + zs + "\" quads=\"0 1 2 3\"/></Node>";
+}
+
+// SOFA's transparent pass (OglModel::internalDraw): a translucent model is drawn after the
+// opaque ones whatever its place in the graph, the background darkened by (1 - a) then its
+// lit colour added times a, without writing depth. Red at a = 0.5 in front of blue: half of
+// each; behind it: hidden; blendTranslucency off: opaque red. The picture stays opaque.
+TEST_F(RenderTest, TranslucentModelBlendsOverTheOpaqueOnes) {
+  const std::string camera = "<InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>";
+  const std::string blue = square("blue", "color=\"0 0 1 1\"", 0.0);
+  auto centre = [&](const std::string& xml, int* alpha = nullptr) {
+    auto s = test::load("<Node name=\"root\">" + camera + xml + "</Node>");
+    const Image img = render(*s.root);
+    if (alpha) *alpha = img.rgba[(100 * img.width + 100) * 4 + 3];
+    return img.rgb(100, 100);
+  };
+  int alpha = 0;
+  // Lit red facing the headlight: ambient 0.2 + diffuse 1, clamped to 1.
+  const auto over = centre(square("red", "color=\"1 0 0 0.5\"", 1.0) + blue, &alpha);
+  EXPECT_NEAR(over[0], 128, 2);
+  EXPECT_EQ(over[1], 0);
+  EXPECT_NEAR(over[2], 128, 2);
+  EXPECT_EQ(alpha, 255);
+  // A quarter of red over blue.
+  const auto quarter = centre(blue + square("red", "color=\"1 0 0 0.25\"", 1.0));
+  EXPECT_NEAR(quarter[0], 64, 2);
+  EXPECT_NEAR(quarter[2], 191, 2);
+  // Behind the opaque square: the depth test hides it.
+  EXPECT_EQ(centre(square("red", "color=\"1 0 0 0.5\"", -1.0) + blue), (std::array<int, 3>{0, 0, 255}));
+  // Not blended: drawn as an opaque model (after the others). Rendered right after the scene
+  // above with the same renderer, this red model took the address of the blue one freed with
+  // that scene, and was drawn blue while the renderer keyed its material cache on the
+  // material field's version (now on the material's text).
+  EXPECT_EQ(centre(square("red", "color=\"1 0 0 0.5\" blendTranslucency=\"0\"", 1.0) + blue),
+            (std::array<int, 3>{255, 0, 0}));
+  // Two translucent squares: each blends over what was drawn before it, in graph order.
+  const auto two = centre(blue + square("red", "color=\"1 0 0 0.5\"", 1.0) + square("green", "color=\"0 1 0 0.5\"", 2.0));
+  EXPECT_NEAR(two[0], 64, 2);
+  EXPECT_NEAR(two[1], 128, 2);
+  EXPECT_NEAR(two[2], 64, 2);
+}
+
 TEST_F(RenderTest, NothingVisibleIsAnError) {
   auto s = test::load(R"(<Node name="root"><VisualStyle displayFlags="hideVisualModels"/>
       <OglModel position="0 0 0 1 0 0 1 1 0" triangles="0 1 2"/></Node>)");
