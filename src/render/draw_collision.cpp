@@ -7,6 +7,7 @@
 #include "collision/model/line_collision_model.h"
 #include "collision/model/obb_collision_model.h"
 #include "collision/model/sphere_collision_model.h"
+#include "render/draw_shapes.h"
 #include "collision/model/tetrahedron_collision_model.h"
 #include "collision/model/triangle_collision_model.h"
 #include "core/node.h"
@@ -103,28 +104,13 @@ void points_of(DrawList& list, const CollisionModelBase& m, const std::array<flo
   close_batch(list, b);
 }
 
-// Each sphere as a latitude–longitude mesh of 8 × 12 quads (SOFA's drawSpheres tessellates too).
+// Each sphere as a latitude–longitude mesh (SOFA's drawSpheres tessellates too).
 void spheres(DrawList& list, const SphereCollisionModel& m, const std::array<float, 4>& color, bool wireframe) {
-  constexpr int kLat = 8, kLon = 12;
   Batch& b = fresh_batch(list, &m, Batch::Kind::triangles);
   for (unsigned i = 0; i < m.size(); ++i) {
     const SphereElem e = m.elem(i);
     if (!(e.r > 0) || !e.c.allFinite()) continue;
-    const auto base = static_cast<unsigned>(b.positions.size() / 3);
-    for (int la = 0; la <= kLat; ++la) {
-      const double th = M_PI * la / kLat;
-      for (int lo = 0; lo <= kLon; ++lo) {
-        const double ph = 2 * M_PI * lo / kLon;
-        const Vec3 n(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
-        const Vec3 q = e.c + e.r * n;
-        for (int c = 0; c < 3; ++c) b.positions.push_back(float(q[c])), b.normals.push_back(float(n[c]));
-      }
-    }
-    for (int la = 0; la < kLat; ++la)
-      for (int lo = 0; lo < kLon; ++lo) {
-        const unsigned a = base + la * (kLon + 1) + lo, c = a + kLon + 1;
-        b.indices.insert(b.indices.end(), {a, c, a + 1, a + 1, c, c + 1});
-      }
+    append_sphere(b, e.c, e.r);
   }
   b.shading = flat_color(color, true);
   b.wireframe = wireframe;

@@ -29,6 +29,8 @@ Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind) {
   b.color_ambient = 0.f;
   b.point_size = 1.f;
   b.wireframe = false;
+  b.lit = true;
+  b.splat = Batch::Splat::none;
   b.clip = {0.f, 0.f, 0.f, 1.f};
   return b;
 }

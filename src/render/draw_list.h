@@ -51,11 +51,19 @@ struct Batch {
   float color_ambient = 0.f;  // ambient term proportional to the vertex colour (SOFA's draw tool)
   float point_size = 1.f;
   bool wireframe = false;  // showWireframe: triangles drawn as their edges
+  bool lit = true;         // triangles shaded by the headlight; false: their colour as is
   // A visual model whose material is translucent (diffuse used, alpha < 1): drawn after every
   // opaque batch, blended by SOFA's two passes unless `blend` is off (blendTranslucency),
   // writing depth only with `write_depth` (writeZTransparent); `premultiplied`: the colour
   // already holds its alpha (premultipliedAlpha).
   bool translucent = false, blend = true, write_depth = false, premultiplied = false;
+  // Points drawn as camera-facing discs of `splat_radius` (world units; 0: plain points of
+  // point_size pixels): `soft` discs fade as cos(π/2·r/R)·splat_alpha and are blended "over",
+  // back to front, in the translucent pass (PointSplatModel); otherwise they are lit sphere
+  // impostors (OglFluidModel's sprites).
+  enum class Splat { none, soft, sphere };
+  Splat splat = Splat::none;
+  float splat_radius = 0.f, splat_alpha = 1.f;
   // ClipPlane over the model (visual models only): a vertex p is kept where
   // clip·(p, 1) >= 0 (gl_ClipDistance); (0, 0, 0, 1) keeps everything.
   std::array<float, 4> clip{0.f, 0.f, 0.f, 1.f};

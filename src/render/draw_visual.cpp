@@ -1,14 +1,22 @@
 // VisualBoundingBox as SOFA draws it: the twelve edges of the box, in its
-// colour, unlit; DataDisplay's coloured mesh. Core-profile OpenGL has no wide lines everywhere, so
+// colour, unlit; DataDisplay's coloured mesh; VisualPointCloud's points, spheres or frames;
+// CylinderVisualModel's cylinders. Core-profile OpenGL has no wide lines everywhere, so
 // `thickness` is not honoured (lines are one pixel wide).
 #include "render/draw_visual.h"
 
 #include "core/node.h"
+#include "math/quat.h"
 #include "render/draw_collision.h"
 #include "render/draw_list.h"
+#include "render/draw_shapes.h"
 #include "visual/color.h"
+#include "visual/cylinder_visual_model.h"
 #include "visual/data_display.h"
+#include "visual/ogl_fluid_model.h"
+#include "visual/point_splat_model.h"
 #include "visual/visual_bounding_box.h"
+#include "visual/visual_mesh.h"
+#include "visual/visual_point_cloud.h"
 
 namespace sinew::render {
 
@@ -111,12 +119,139 @@ void add_data_display(DrawList& list, DataDisplay& dd) {
   close_batch(list, b);
 }
 
+// The batch's colour from a colour field's text, parsed again only when the text changed.
+void set_color(Batch& b, const std::string& text, bool lit) {
+  if (b.shading_parsed && b.material_text == text) return;
+  const Rgba c = parse_rgba(text).value_or(Rgba{1, 1, 1, 1});
+  b.shading = Shading{lit ? Rgba{0.2f * c[0], 0.2f * c[1], 0.2f * c[2], 1} : Rgba{0, 0, 0, 0}, c, {0, 0, 0, 0},
+                      {0, 0, 0, 0}, 1.f};
+  b.material_text = text;
+  b.shading_parsed = true;
+}
+
+// VisualPointCloud::doDrawVisual: unlit points of `pointSize` pixels; lit spheres whose radii
+// are sphereRadius, padded with its last value (1 when empty); or, for rigid frames, SOFA's
+// coordinate frame of size pointSize at each (the colour does not apply to frames, as in SOFA).
+// `showIndices` is not drawn (no text in pictures).
+void add_point_cloud(DrawList& list, const VisualPointCloud& pc) {
+  if (!pc.enable.get() || pc.state() != ComponentState::valid) return;
+  const FlatVec& x = pc.position.get();
+  const int w = x.width;
+  const std::size_t n = x.size();
+  if (n == 0 || w <= 0) return;
+  auto centre = [&](std::size_t i) {
+    const double* p = &x.data[i * w];
+    // Vec1: (x, 0, 0); Vec2 and Rigid2 (x, y, θ): (x, y, 0); Vec3 and Rigid3: the first three.
+    return Vec3(p[0], w >= 2 ? p[1] : 0.0, (w == 3 && !pc.rigid()) || w == 7 ? p[2] : 0.0);
+  };
+  const std::string& mode = pc.draw_mode.get();
+  if (mode == "Point") {
+    Batch& b = fresh_batch(list, &pc, Batch::Kind::points);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3 c = centre(i);
+      for (int k = 0; k < 3; ++k) b.positions.push_back(static_cast<float>(c[k]));
+    }
+    set_color(b, pc.color.get(), false);
+    b.point_size = static_cast<float>(pc.point_size.get());
+    close_batch(list, b);
+  } else if (mode == "Sphere") {
+    Batch& b = fresh_batch(list, &pc, Batch::Kind::triangles);
+    const std::vector<double>& radii = pc.sphere_radius.get();
+    const double pad = radii.empty() ? 1.0 : radii.back();
+    for (std::size_t i = 0; i < n; ++i) append_sphere(b, centre(i), i < radii.size() ? radii[i] : pad);
+    set_color(b, pc.color.get(), true);
+    close_batch(list, b);
+  } else if (mode == "Frame" && pc.rigid()) {
+    Batch& b = fresh_batch(list, &pc, Batch::Kind::triangles);
+    b.shading = Shading{{0, 0, 0, 0}, {1, 1, 1, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
+    b.color_ambient = 0.2f;
+    b.shading_parsed = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* p = &x.data[i * w];
+      Mat3 axes = Mat3::Identity();
+      if (w == 7) {
+        axes = quat_to_matrix(quat_normalized(Quat::from(p + 3)));
+      } else {  // Rigid2d: a rotation by θ about z
+        axes << std::cos(p[2]), -std::sin(p[2]), 0, std::sin(p[2]), std::cos(p[2]), 0, 0, 0, 1;
+      }
+      append_frame(b, centre(i), axes, pc.point_size.get());
+    }
+    close_batch(list, b);
+  }
+}
+
+// CylinderVisualModel::doDrawVisual: a lit cylinder of `radius` along each edge.
+void add_cylinders(DrawList& list, const CylinderVisualModel& cm) {
+  if (!cm.enable.get() || cm.state() != ComponentState::valid) return;
+  const std::vector<double>& x = cm.position.get().data;
+  const std::size_t n = x.size() / 3;
+  Batch& b = fresh_batch(list, &cm, Batch::Kind::triangles);
+  for (const Edge& e : cm.edges.get()) {
+    if (e[0] >= n || e[1] >= n) continue;
+    const Vec3 a(x[e[0] * 3], x[e[0] * 3 + 1], x[e[0] * 3 + 2]), c(x[e[1] * 3], x[e[1] * 3 + 1], x[e[1] * 3 + 2]);
+    append_cone(b, a, c, cm.radius.get(), cm.radius.get());
+  }
+  set_color(b, cm.color.get(), true);
+  close_batch(list, b);
+}
+
+// PointSplatModel::drawTransparent: each point of the node's state (or of its topology's node)
+// a camera-facing disc of `radius` whose opacity falls as alpha·cos(π/2·r/radius), in
+// color × (0.5 + 2·pointData/255) when pointData is given, blended back to front after the
+// opaque models. (SOFA samples a textureSize² texture of that falloff; here it is evaluated
+// per pixel.)
+void add_point_splats(DrawList& list, const PointSplatModel& ps, Node& node) {
+  if (!ps.enable.get() || ps.state() != ComponentState::valid) return;
+  const MeshTopologyBase* topo = node.get_mesh_topology_link();
+  const MechanicalState* state =
+      topo && topo->node() ? topo->node()->get_mechanical_state() : node.get_mechanical_state();
+  if (!state || state->state() != ComponentState::valid) return;
+  const int w = state->info().coord_width, dim = std::min(3, state->info().spatial_dim);
+  if (w <= 0 || dim <= 0) return;
+  const std::vector<double>& x = state->read(kPosition);
+  const std::size_t n = state->size();
+  Batch& b = fresh_batch(list, &ps, Batch::Kind::points);
+  set_color(b, ps.color.get(), false);
+  const Rgba c = b.shading.diffuse;
+  const std::vector<unsigned>& data = ps.point_data.get();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k) b.positions.push_back(k < dim ? static_cast<float>(x[i * w + k]) : 0.f);
+    const float m = data.empty() ? 1.f : 0.5f + 2.f * static_cast<float>(i < data.size() ? data[i] : 0) / 255.f;
+    b.colors.insert(b.colors.end(), {m * c[0], m * c[1], m * c[2], c[3]});
+  }
+  b.splat = Batch::Splat::soft;
+  b.splat_radius = static_cast<float>(ps.radius.get());
+  b.splat_alpha = static_cast<float>(ps.alpha.get());
+  b.translucent = true;
+  close_batch(list, b);
+}
+
+// OglFluidModel, its first pass only (see its header): each particle a lit sphere impostor of
+// spriteRadius in spriteDiffuseColor.
+void add_fluid(DrawList& list, const OglFluidModel& fm) {
+  if (fm.state() != ComponentState::valid) return;
+  const std::vector<Vec3>& x = fm.position.get();
+  if (x.empty()) return;
+  Batch& b = fresh_batch(list, &fm, Batch::Kind::points);
+  for (const Vec3& p : x)
+    for (int k = 0; k < 3; ++k) b.positions.push_back(static_cast<float>(p[k]));
+  set_color(b, fm.sprite_diffuse_color.get(), true);
+  b.splat = Batch::Splat::sphere;
+  b.splat_radius = static_cast<float>(fm.sprite_radius.get());
+  close_batch(list, b);
+}
+
 }  // namespace
 
 void add_visual_extras(DrawList& list, Node& node) {
   for (const auto& o : node.objects()) {
     if (const auto* vb = dynamic_cast<const VisualBoundingBox*>(o.get())) add_box(list, *vb);
     else if (auto* dd = dynamic_cast<DataDisplay*>(o.get())) add_data_display(list, *dd);
+    else if (const auto* pc = dynamic_cast<const VisualPointCloud*>(o.get())) add_point_cloud(list, *pc);
+    else if (const auto* cm = dynamic_cast<const CylinderVisualModel*>(o.get())) add_cylinders(list, *cm);
+    else if (const auto* vm = dynamic_cast<const VisualMesh*>(o.get())) add_visual_mesh(list, *vm);
+    else if (const auto* ps = dynamic_cast<const PointSplatModel*>(o.get())) add_point_splats(list, *ps, node);
+    else if (const auto* fm = dynamic_cast<const OglFluidModel*>(o.get())) add_fluid(list, *fm);
   }
 }
 

@@ -1,10 +1,12 @@
 // Viewer-side visual components in pictures (shown with showVisualModels):
 // VisualBoundingBox as the twelve edges of its box; DataDisplay's mesh coloured through its
-// OglColorMap. Called per node by gather().
+// OglColorMap; VisualPointCloud, CylinderVisualModel and VisualMesh as SOFA draws them.
+// Called per node by gather().
 #pragma once
 
 namespace sinew {
 class Node;
+class VisualMesh;
 }
 
 namespace sinew::render {
@@ -12,5 +14,8 @@ namespace sinew::render {
 struct DrawList;
 
 void add_visual_extras(DrawList& list, Node& node);
+
+// VisualMesh: draw_visual_mesh.cpp.
+void add_visual_mesh(DrawList& list, const VisualMesh& mesh);
 
 }  // namespace sinew::render

@@ -5,6 +5,7 @@
 #include <GL/glext.h>
 
 #include <cstdio>
+#include <algorithm>
 #include <cstring>
 
 #include "render/image_file.h"
@@ -21,6 +22,8 @@ layout(location = 3) in vec2 a_texcoord;
 uniform mat4 u_view;
 uniform mat4 u_proj;
 uniform float u_point_size;
+uniform float u_splat_radius;  // > 0: points are discs of this world radius
+uniform float u_half_height;   // half the viewport's height in pixels
 uniform vec4 u_clip;  // ClipPlane: kept where dot(u_clip, (p, 1)) >= 0
 out vec3 v_eye;
 out vec3 v_normal;
@@ -32,7 +35,13 @@ void main() {
   v_normal = mat3(u_view) * a_normal;  // the view is rigid: no inverse transpose needed
   v_color = a_color;
   gl_Position = u_proj * eye;
-  gl_PointSize = u_point_size;
+  if (u_splat_radius > 0.0) {
+    // The disc's diameter in pixels: perspective divides by the depth, orthographic does not.
+    float depth = u_proj[3][3] == 1.0 ? 1.0 : max(-eye.z, 1e-6);
+    gl_PointSize = 2.0 * u_splat_radius * u_proj[1][1] * u_half_height / depth;
+  } else {
+    gl_PointSize = u_point_size;
+  }
   v_texcoord = a_texcoord;
   gl_ClipDistance[0] = dot(u_clip, vec4(a_position, 1.0));
 }
@@ -53,9 +62,25 @@ uniform float u_color_ambient;
 uniform bool u_lit;
 uniform bool u_textured;
 uniform bool u_translucent;
+uniform int u_splat;  // 0: none, 1: soft disc (PointSplatModel), 2: lit sphere impostor
+uniform float u_splat_alpha;
 uniform sampler2D u_texture;
 out vec4 frag_color;
 void main() {
+  if (u_splat != 0) {
+    vec2 q = gl_PointCoord * 2.0 - 1.0;
+    float r2 = dot(q, q);
+    if (r2 >= 1.0) discard;
+    if (u_splat == 1) {  // SOFA's billboard texture: alpha·cos(π/2·r), the colour as is
+      frag_color = vec4(v_color.rgb, u_splat_alpha * cos(1.5707963 * sqrt(r2)));
+      return;
+    }
+    // A sphere facing the eye (gl_PointCoord's y grows downwards), lit by the headlight.
+    float nz = sqrt(1.0 - r2);
+    vec3 c = u_ambient.rgb + v_color.rgb * nz + u_specular.rgb * pow(nz, u_shininess);
+    frag_color = vec4(min(c, vec3(1.0)), 1.0);
+    return;
+  }
   if (!u_lit) { frag_color = vec4(v_color.rgb, 1.0); return; }
   vec3 n = normalize(v_normal);
   vec3 to_eye = normalize(-v_eye);
@@ -149,6 +174,10 @@ std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int sample
   r->u_clip_ = glGetUniformLocation(p, "u_clip");
   r->u_textured_ = glGetUniformLocation(p, "u_textured");
   r->u_translucent_ = glGetUniformLocation(p, "u_translucent");
+  r->u_splat_ = glGetUniformLocation(p, "u_splat");
+  r->u_splat_alpha_ = glGetUniformLocation(p, "u_splat_alpha");
+  r->u_splat_radius_ = glGetUniformLocation(p, "u_splat_radius");
+  r->u_half_height_ = glGetUniformLocation(p, "u_half_height");
   glUseProgram(p);
   glUniform1i(glGetUniformLocation(p, "u_texture"), 0);  // texture unit 0
   return r;
@@ -237,6 +266,8 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
   glUseProgram(program_);
   glUniformMatrix4fv(u_view_, 1, GL_FALSE, view.view.data());  // Eigen is column-major, as GL
   glUniformMatrix4fv(u_proj_, 1, GL_FALSE, view.projection.data());
+  glUniform1f(u_half_height_, 0.5f * static_cast<float>(height_));
+  view_ = view.view;
 
   while (gpu_.size() < list.used) {
     GpuBatch g;
@@ -255,6 +286,13 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
   for (std::size_t i = 0; i < list.used; ++i) {
     const Batch& b = list.batches[i];
     if (!b.translucent) continue;
+    if (b.splat == Batch::Splat::soft) {  // PointSplatModel::drawTransparent: "over", back to front
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+      draw_batch(b, gpu_[i]);
+      glDisable(GL_BLEND);
+      continue;
+    }
     if (!b.blend) {  // blendTranslucency off: drawn opaque, after the opaque models
       draw_batch(b, gpu_[i]);
       continue;
@@ -332,12 +370,24 @@ void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {
   const GLsizei n = static_cast<GLsizei>(b.vertex_count());
   if (b.kind == Batch::Kind::points) {
     glUniform1i(u_lit_, 0);
-    glDrawArrays(GL_POINTS, 0, n);
+    glUniform1i(u_splat_, static_cast<int>(b.splat));
+    glUniform1f(u_splat_radius_, b.splat == Batch::Splat::none ? 0.f : b.splat_radius);
+    glUniform1f(u_splat_alpha_, b.splat_alpha);
+    if (b.splat == Batch::Splat::soft) {
+      // Back to front along the view (SOFA sorts by the distance along its view direction).
+      sort_back_to_front(b);
+      upload(GL_ELEMENT_ARRAY_BUFFER, g.ebo, order_.data(), order_.size() * sizeof(unsigned), g.capacity[3]);
+      glDrawElements(GL_POINTS, n, GL_UNSIGNED_INT, nullptr);
+    } else {
+      glDrawArrays(GL_POINTS, 0, n);
+    }
+    glUniform1i(u_splat_, 0);
+    glUniform1f(u_splat_radius_, 0.f);
   } else if (b.kind == Batch::Kind::lines) {
     glUniform1i(u_lit_, 0);
     glDrawArrays(GL_LINES, 0, n);
   } else {
-    glUniform1i(u_lit_, 1);
+    glUniform1i(u_lit_, b.lit ? 1 : 0);
     glPolygonMode(GL_FRONT_AND_BACK, b.wireframe ? GL_LINE : GL_FILL);
     if (!b.indices.empty()) {
       glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.indices.size()), GL_UNSIGNED_INT, nullptr);
@@ -345,6 +395,19 @@ void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {
       glDrawArrays(GL_TRIANGLES, 0, n);
     }
   }
+}
+
+void GlRenderer::sort_back_to_front(const Batch& b) {
+  const std::size_t n = b.vertex_count();
+  depth_.resize(n);
+  order_.resize(n);
+  // Eye-space z of each point (the row of the view matrix giving z): larger is nearer.
+  for (std::size_t i = 0; i < n; ++i) {
+    const float* p = &b.positions[i * 3];
+    depth_[i] = view_(2, 0) * p[0] + view_(2, 1) * p[1] + view_(2, 2) * p[2];
+    order_[i] = static_cast<unsigned>(i);
+  }
+  std::stable_sort(order_.begin(), order_.end(), [&](unsigned a, unsigned c) { return depth_[a] < depth_[c]; });
 }
 
 unsigned GlRenderer::texture_for(const std::string& path) {

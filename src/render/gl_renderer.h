@@ -48,11 +48,16 @@ class GlRenderer {
   unsigned program_ = 0;
   int u_view_ = -1, u_proj_ = -1, u_ambient_ = -1, u_specular_ = -1, u_emissive_ = -1, u_shininess_ = -1,
       u_lit_ = -1, u_color_ambient_ = -1, u_point_size_ = -1, u_clip_ = -1, u_textured_ = -1,
-      u_translucent_ = -1;
+      u_translucent_ = -1, u_splat_ = -1, u_splat_alpha_ = -1, u_splat_radius_ = -1, u_half_height_ = -1;
   std::vector<GpuBatch> gpu_;
   // Uploads `b` into `g` and draws it (`upload` false: drawn again from what was uploaded,
   // the second pass of a translucent model).
   void draw_batch(const Batch& b, GpuBatch& g, bool upload = true);
+  // order_: the points of `b` from the farthest to the nearest under view_.
+  void sort_back_to_front(const Batch& b);
+  Eigen::Matrix4f view_ = Eigen::Matrix4f::Identity();
+  std::vector<float> depth_;
+  std::vector<unsigned> order_;
   // Textures by file, loaded at first use (id 0: the file could not be read; drawn untextured).
   unsigned texture_for(const std::string& path);
   std::vector<std::pair<std::string, unsigned>> textures_;

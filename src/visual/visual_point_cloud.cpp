@@ -1,6 +1,5 @@
-// VisualPointCloud (SOFA's Sofa.Component.Visual): draws positions as points,
-// spheres or (rigid templates) frames, optionally with their indices. A
-// viewer-side component: batch runs only check its inputs.
+#include "visual/visual_point_cloud.h"
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,49 +27,32 @@ FlatVec empty_of(int width) {
   return v;
 }
 
-class VisualPointCloud final : public VisualComponent {
- public:
-  explicit VisualPointCloud(const std::string& tmpl)
-      : rigid_(tmpl.rfind("Rigid", 0) == 0),
-        position(this, "position", empty_of(coord_width(tmpl)), "positions to draw", "Vector", "length") {}
-
- private:
-  bool rigid_;
-
- public:
-  Field<FlatVec> position;
-  Field<std::string> draw_mode{this, "drawMode", "Point", "Point, Sphere, or (rigid templates) Frame",
-                               "Visualization"};
-  Field<double> point_size{this, "pointSize", 1.0, "size of the points and frames", "Visualization"};
-  Field<std::vector<double>> sphere_radius{this, "sphereRadius", {},
-                                           "sphere radii (one for all, or one per point)", "Visualization"};
-  Field<std::string> color{this, "color", "white", "colour of the points", "Visualization"};
-  Field<bool> show_indices{this, "showIndices", false, "draw the index of each point", "Visualization"};
-  Field<double> indices_scale{this, "indicesScale", 1.0, "size of the indices", "Visualization"};
-  Field<std::string> indices_color{this, "indicesColor", "white", "colour of the indices", "Visualization"};
-  Field<bool> enable{this, "enable", true, "draw the points", "Visualization"};
-
-  void parse(AttributeMap& attrs, Diagnostics& diag) override {
-    Component::parse(attrs, diag);
-    check_color_field(*this, color, diag);
-    check_color_field(*this, indices_color, diag);
-    const std::string& m = draw_mode.value();
-    if (m != "Point" && m != "Sphere" && !(rigid_ && m == "Frame"))
-      diag.error(where, describe() + ": drawMode " + quote_value(m) + " is not " +
-                            (rigid_ ? "Point, Sphere or Frame" : "Point or Sphere"));
-    for (double r : sphere_radius.value())
-      if (!(r >= 0.0)) diag.error(where, describe() + ": sphereRadius holds a negative radius");
-  }
-
-  void init() override {
-    const std::size_t radii = sphere_radius.get().size(), n = position.get().size();
-    if (draw_mode.value() == "Sphere" && radii > 1 && radii != n)
-      msg_warning("sphereRadius has " + std::to_string(radii) + " radii for " + std::to_string(n) +
-                  " points: the first is used for all");
-  }
-};
-
 }  // namespace
+
+VisualPointCloud::VisualPointCloud(const std::string& tmpl)
+    : position(this, "position", empty_of(coord_width(tmpl)), "positions to draw", "Vector", "length"),
+      rigid_(tmpl.rfind("Rigid", 0) == 0) {}
+
+void VisualPointCloud::parse(AttributeMap& attrs, Diagnostics& diag) {
+  Component::parse(attrs, diag);
+  check_color_field(*this, color, diag);
+  check_color_field(*this, indices_color, diag);
+  const std::string& m = draw_mode.value();
+  if (m != "Point" && m != "Sphere" && !(rigid_ && m == "Frame"))
+    diag.error(where, describe() + ": drawMode " + quote_value(m) + " is not " +
+                          (rigid_ ? "Point, Sphere or Frame" : "Point or Sphere"));
+  for (double r : sphere_radius.value())
+    if (!(r >= 0.0)) diag.error(where, describe() + ": sphereRadius holds a negative radius");
+}
+
+void VisualPointCloud::init() {
+  // SOFA pads the radii with the last one given (1 when none) and ignores extra ones.
+  const std::size_t radii = sphere_radius.get().size(), n = position.get().size();
+  if (draw_mode.value() == "Sphere" && radii > 1 && radii != n)
+    msg_warning("sphereRadius has " + std::to_string(radii) + " radii for " + std::to_string(n) + " points: " +
+                (radii < n ? "the points past them take the last one" : "the extra radii are not used"));
+  if (show_indices.get()) msg_warning("showIndices: indices are not drawn (Sinew draws no text)");
+}
 
 void register_visual_point_cloud(Registry& r) {
   ComponentInfo info;

@@ -357,6 +357,134 @@ TEST_F(RenderTest, TranslucentModelBlendsOverTheOpaqueOnes) {
   EXPECT_NEAR(two[2], 64, 2);
 }
 
+// Pixels of `img` with exactly the colour `c` (±2 per channel).
+long count_color(const Image& img, const std::array<int, 3>& c) {
+  return count_if(img, [&](auto p) {
+    return std::abs(p[0] - c[0]) <= 2 && std::abs(p[1] - c[1]) <= 2 && std::abs(p[2] - c[2]) <= 2;
+  });
+}
+
+// VisualPointCloud as SOFA's doDrawVisual: Point mode draws unlit squares of pointSize pixels;
+// Sphere mode lit spheres whose radii pad with the last one; Frame mode (Rigid3d) red, green and
+// blue axes of length pointSize along the frame's rotated axes.
+TEST_F(RenderTest, VisualPointCloudPointsSpheresAndFrames) {
+  const std::string camera = "<InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>";
+  auto points = test::load("<Node name=\"root\">" + camera +
+                           "<VisualPointCloud position=\"0 0 0  1 0 0\" pointSize=\"10\" color=\"navy\"/></Node>");
+  const Image a = render(*points.root);
+  EXPECT_EQ(count_color(a, {0, 0, 128}), 200);  // two squares of 10 × 10 pixels, unlit navy
+  // Radii 0.5 then padded with 0.5: two discs of radius 0.5·48.3 px (the unit is 100 / (4.5 tan 22.5°)
+  // px at the spheres' front, a bit more than at their centre).
+  auto spheres = test::load("<Node name=\"root\">" + camera +
+                            "<VisualPointCloud position=\"-1 0 0  1 0 0\" drawMode=\"Sphere\" sphereRadius=\"0.5\" "
+                            "color=\"red\"/></Node>");
+  const Image b = render(*spheres.root);
+  const double r_px = 0.5 * 100.0 / (5 * std::tan(M_PI / 8));
+  const long lit = count_if(b, [](auto c) { return c[0] > 0; });
+  EXPECT_NEAR(lit, 2 * M_PI * r_px * r_px, 0.12 * 2 * M_PI * r_px * r_px);
+  EXPECT_EQ(b.rgb(100 + static_cast<int>(r_px * 2), 100)[0], 255);  // the centre of the right one, facing the light
+  // A frame turned 90° about z: its x axis (red) points up, its y axis (green) to the left.
+  auto frame = test::load("<Node name=\"root\">" + camera +
+                          "<VisualPointCloud template=\"Rigid3d\" position=\"0 0 0  0 0 0.7071067811865476 "
+                          "0.7071067811865476\" drawMode=\"Frame\" pointSize=\"1\"/></Node>");
+  const Image c = render(*frame.root);
+  auto reddish = [](auto p) { return p[0] > 100 && p[1] < 60 && p[2] < 60; };
+  auto greenish = [](auto p) { return p[1] > 100 && p[0] < 60 && p[2] < 60; };
+  EXPECT_GT(count_if(c, reddish), 50);
+  EXPECT_GT(count_if(c, greenish), 50);
+  // Red above the centre, none below; green left of it, none right.
+  EXPECT_TRUE(reddish(c.rgb(100, 100 - 30)));
+  EXPECT_FALSE(reddish(c.rgb(100, 100 + 30)));
+  EXPECT_TRUE(greenish(c.rgb(100 - 30, 100)));
+  EXPECT_FALSE(greenish(c.rgb(100 + 30, 100)));
+}
+
+// CylinderVisualModel: a lit cylinder per edge: from (-1, 0, 0) to (1, 0, 0), radius 0.25, seen
+// from 5 away: a 2 × 0.5 rectangle of about 96 × 24 pixels, yellow where it faces the light.
+TEST_F(RenderTest, CylinderVisualModelDrawsACylinderPerEdge) {
+  auto s = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+                      "<CylinderVisualModel position=\"-1 0 0  1 0 0\" edges=\"0 1\" radius=\"0.25\" "
+                      "color=\"yellow\"/></Node>");
+  const Image img = render(*s.root);
+  const double px = 100.0 / (5 * std::tan(M_PI / 8));
+  const long area = count_if(img, [](auto c) { return !is_background(c); });
+  EXPECT_NEAR(area, 2 * px * 0.5 * px, 0.1 * px * px);
+  const auto centre = img.rgb(100, 100);
+  EXPECT_EQ(centre[0], 255);
+  EXPECT_EQ(centre[1], 255);
+  EXPECT_LE(centre[2], 2);
+  EXPECT_TRUE(is_background(img.rgb(100, 100 - static_cast<int>(0.4 * px))));
+}
+
+// VisualMesh as SOFA's DrawMesh: one hexahedron shrunk by elementSpace 0.15, its +z face (SOFA's
+// face 1, colour (0.7, 0, 0)) towards the camera, lit: (0.84, 0, 0); unlit: (0.7, 0, 0); its
+// width 0.85 of the cube's. A surface of triangles only: green, teal, blue by index.
+TEST_F(RenderTest, VisualMeshDrawsShrunkElementsInSofasColours) {
+  const std::string cube_points =
+      "-0.5 -0.5 -0.5  0.5 -0.5 -0.5  0.5 0.5 -0.5  -0.5 0.5 -0.5  "
+      "-0.5 -0.5 0.5  0.5 -0.5 0.5  0.5 0.5 0.5  -0.5 0.5 0.5";
+  auto mesh = [&](const std::string& extra) {
+    return test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+                      "<MeshTopology name=\"t\" hexahedra=\"0 1 2 3 4 5 6 7\"/>"
+                      "<VisualMesh position=\"" + cube_points + "\" topology=\"@t\" " + extra + "/></Node>");
+  };
+  auto lit = mesh("");
+  const Image a = render(*lit.root);
+  EXPECT_EQ(a.rgb(100, 100), (std::array<int, 3>{214, 0, 0}));
+  // The front face spans 0.85 of the unit cube, at distance 4.5 − 0.075.
+  const double half = 100.0 * 0.5 * 0.85 / ((4.5 + 0.075) * std::tan(M_PI / 8));
+  const long front = count_if(a, [](auto c) { return c[0] > 150 && c[1] < 5; });
+  EXPECT_NEAR(front, 4 * half * half, 0.05 * 4 * half * half);
+  auto flat = mesh("lighting=\"0\"");
+  EXPECT_EQ(render(*flat.root).rgb(100, 100), (std::array<int, 3>{178, 0, 0}));
+  // Three triangles side by side, facing the camera: green, teal, blue, unlit.
+  auto tris = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+                         "<MeshTopology name=\"t\" triangles=\"0 1 2  3 4 5  6 7 8\"/>"
+                         "<VisualMesh position=\"-1.6 -0.4 0  -0.8 -0.4 0  -1.2 0.4 0  -0.4 -0.4 0  0.4 -0.4 0  0 0.4 0 "
+                         " 0.8 -0.4 0  1.6 -0.4 0  1.2 0.4 0\" topology=\"@t\" lighting=\"0\"/></Node>");
+  const Image t = render(*tris.root);
+  const int third = static_cast<int>(1.2 * 100.0 / (5 * std::tan(M_PI / 8)));
+  EXPECT_EQ(t.rgb(100 - third, 100), (std::array<int, 3>{0, 255, 0}));
+  EXPECT_EQ(t.rgb(100, 100), (std::array<int, 3>{0, 128, 128}));
+  EXPECT_EQ(t.rgb(100 + third, 100), (std::array<int, 3>{0, 0, 255}));
+}
+
+// PointSplatModel: each point a disc facing the camera whose opacity is alpha·cos(π/2·r/R), blended
+// "over" from the farthest point to the nearest (SOFA sorts them), after the opaque models.
+TEST_F(RenderTest, PointSplatModelBlendsSoftDiscsBackToFront) {
+  const std::string camera = "<InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>";
+  auto one = test::load("<Node name=\"root\">" + camera +
+                        "<MechanicalObject position=\"0 0 0\"/><PointSplatModel radius=\"0.5\" color=\"red\"/></Node>");
+  const Image a = render(*one.root);
+  const double r_px = 0.5 * 100.0 / (5 * std::tan(M_PI / 8));  // 24.1 px
+  EXPECT_NEAR(a.rgb(100, 100)[0], 255, 3);
+  EXPECT_NEAR(a.rgb(100 + static_cast<int>(0.5 * r_px), 100)[0], 255 * std::cos(M_PI / 4), 8);
+  EXPECT_GT(a.rgb(100 + static_cast<int>(0.8 * r_px), 100)[0], 0);
+  EXPECT_TRUE(is_background(a.rgb(100 + static_cast<int>(1.2 * r_px), 100)));
+  // Green in front of red (listed first), both at alpha 0.5: red is drawn first, then green over it.
+  auto two = test::load("<Node name=\"root\">" + camera +
+                        "<Node name=\"g\"><MechanicalObject position=\"0 0 1\"/>"
+                        "<PointSplatModel radius=\"0.5\" alpha=\"0.5\" color=\"lime\"/></Node>"
+                        "<Node name=\"r\"><MechanicalObject position=\"0 0 -1\"/>"
+                        "<PointSplatModel radius=\"0.5\" alpha=\"0.5\" color=\"red\"/></Node></Node>");
+  const auto c = render(*two.root).rgb(100, 100);
+  EXPECT_NEAR(c[0], 64, 3);   // red 0.5, then · (1 − 0.5)
+  EXPECT_NEAR(c[1], 128, 3);  // lime's green 1 · 0.5
+}
+
+// OglFluidModel's sprites: each particle a lit sphere impostor of spriteRadius.
+TEST_F(RenderTest, OglFluidModelDrawsSphereSprites) {
+  auto s = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+                      "<OglFluidModel position=\"0 0 0\" spriteRadius=\"0.5\" spriteDiffuseColor=\"0 0 1 1\"/></Node>");
+  const Image img = render(*s.root);
+  const double r_px = 0.5 * 100.0 / (5 * std::tan(M_PI / 8));
+  const long area = count_if(img, [](auto c) { return !is_background(c); });
+  EXPECT_NEAR(area, M_PI * r_px * r_px, 0.1 * M_PI * r_px * r_px);
+  EXPECT_EQ(img.rgb(100, 100), (std::array<int, 3>{0, 0, 255}));
+  // Darker towards the rim (the normal turns away from the headlight).
+  EXPECT_LT(img.rgb(100 + static_cast<int>(0.9 * r_px), 100)[2], 200);
+}
+
 TEST_F(RenderTest, NothingVisibleIsAnError) {
   auto s = test::load(R"(<Node name="root"><VisualStyle displayFlags="hideVisualModels"/>
       <OglModel position="0 0 0 1 0 0 1 1 0" triangles="0 1 2"/></Node>)");

@@ -1,17 +1,16 @@
-// OglFluidModel (SofaSphFluid): screen-space fluid rendering of a point set
-// (sprites splatted to depth and thickness buffers, blurred, shaded). A
-// viewer-side component: batch runs check its inputs; the renderer does not
-// draw it yet.
+// OglFluidModel (SofaSphFluid's screen-space fluid rendering): SOFA splats each particle as a
+// sphere sprite to depth and thickness buffers, blurs them and shades the result as a surface.
+// Sinew draws the first stage only: each particle a lit sphere impostor of spriteRadius in
+// spriteDiffuseColor (src/render); the thickness, blur and surface shading are not done. A
+// visual component, so it lives in src/visual although it comes with the SPH plugin.
+#pragma once
+
 #include <string>
 #include <vector>
 
-#include "core/registry.h"
 #include "core/roles.h"
-#include "visual/color.h"
 
 namespace sinew {
-
-namespace {
 
 class OglFluidModel final : public VisualComponent {
  public:
@@ -30,26 +29,8 @@ class OglFluidModel final : public VisualComponent {
   Field<std::string> sprite_diffuse_color{this, "spriteDiffuseColor", "0 0 1 1", "diffuse colour of the fluid",
                                           "Visualization"};
 
-  void parse(AttributeMap& attrs, Diagnostics& diag) override {
-    Component::parse(attrs, diag);
-    check_color_field(*this, sprite_diffuse_color, diag);
-    if (!(sprite_radius.value() > 0)) diag.error(where, describe() + ": spriteRadius must be positive");
-    if (sprite_thickness.value() < 0) diag.error(where, describe() + ": spriteThickness must not be negative");
-    if (sprite_blur_radius.value() < 0) diag.error(where, describe() + ": spriteBlurRadius must not be negative");
-  }
+  void parse(AttributeMap& attrs, Diagnostics& diag) override;
+
 };
-
-}  // namespace
-
-void register_ogl_fluid_model(Registry& r) {
-  ComponentInfo info;
-  info.name = "OglFluidModel";
-  info.category = "Visual";
-  info.description = "screen-space fluid rendering of particles (SofaSphFluid; viewer only)";
-  info.templates = {"Vec3d"};
-  info.default_template = "Vec3d";
-  info.create = creator<OglFluidModel>();
-  r.add(std::move(info));
-}
 
 }  // namespace sinew
