@@ -9,6 +9,7 @@
 #include "render/draw_collision.h"
 #include "render/draw_visual.h"
 #include "visual/clip_plane.h"
+#include "visual/color.h"
 #include "visual/ogl_model.h"
 #include "visual/visual_style.h"
 
@@ -345,6 +346,15 @@ void gather(Node& root, DrawList& out) {
   deferred.clear();
   seen.clear();
   visit(root, DisplayFlags::viewer_defaults(), nullptr, out, scratch, deferred, seen);
+  Lighting& l = out.lighting;
+  l.lights.clear();
+  const LightManager* lm = root.find_down<LightManager>();
+  l.from_scene = lm && lm->state() == ComponentState::valid;
+  if (l.from_scene) {
+    l.ambient = parse_rgba(lm->ambient.get()).value_or(Rgba{0, 0, 0, 0});
+    for (const Light* light : lm->lights())
+      if (light->state() == ComponentState::valid) l.lights.push_back(light->source());
+  }
   bool surfaces = false;
   for (std::size_t i = 0; i < out.used; ++i) surfaces |= out.batches[i].kind == Batch::Kind::triangles;
   if (!surfaces)

@@ -9,6 +9,8 @@
 //   an ancestor (the nearest active one) removes the half-space its normal points to.
 //   Translucent models (diffuse alpha < 1) are drawn after the opaque batches, in graph
 //   order, as SOFA's transparent pass.
+// - Lights: a scene with a LightManager is lit by its lights (fixed-function OpenGL's model),
+//   otherwise by a headlight.
 // - Force fields (showForceFields): the volume elements of a node's topology under a
 //   force field, drawn as SOFA's FEM force fields do (tetrahedra shrunk towards their
 //   centre with four blues, hexahedra shrunk with six face colours), flat shaded.
@@ -28,6 +30,7 @@
 
 #include "core/roles.h"
 #include "render/material.h"
+#include "visual/light.h"
 
 namespace sinew {
 class Node;
@@ -75,8 +78,17 @@ struct Batch {
   std::size_t vertex_count() const { return positions.size() / 3; }
 };
 
+// The scene's lights: those of its first LightManager (graph order), when it has one; else the
+// viewer's headlight is used.
+struct Lighting {
+  bool from_scene = false;
+  Rgba ambient{0, 0, 0, 0};  // LightManager's ambient (GL_LIGHT_MODEL_AMBIENT)
+  std::vector<LightSource> lights;
+};
+
 struct DrawList {
   std::vector<Batch> batches;
+  Lighting lighting;
   std::size_t used = 0;  // batches[0, used) are this frame's
   // Bounding box of what is drawn (valid when has_bounds).
   Vec3 min = Vec3::Zero(), max = Vec3::Zero();

@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "render/image_file.h"
@@ -63,6 +64,17 @@ uniform bool u_lit;
 uniform bool u_textured;
 uniform bool u_translucent;
 uniform int u_splat;  // 0: none, 1: soft disc (PointSplatModel), 2: lit sphere impostor
+// The scene's lights (LightManager), in eye space; without a LightManager, the headlight.
+const int kMaxLights = 8;
+uniform bool u_scene_lights;
+uniform int u_nlights;
+uniform vec3 u_global_ambient;
+uniform vec4 u_light_pos[kMaxLights];     // w = 0: direction towards the light
+uniform vec3 u_light_color[kMaxLights];   // ambient = diffuse = specular intensity
+uniform vec3 u_light_spot[kMaxLights];    // spot direction
+uniform float u_light_cos[kMaxLights];    // cos(cut-off); -2: no cone
+uniform float u_light_exp[kMaxLights];
+uniform float u_light_att[kMaxLights];    // linear attenuation (constant 1, quadratic 0)
 uniform float u_splat_alpha;
 uniform sampler2D u_texture;
 out vec4 frag_color;
@@ -86,8 +98,37 @@ void main() {
   vec3 to_eye = normalize(-v_eye);
   float d = dot(n, to_eye);
   if (d < 0.0) { n = -n; d = -d; }
-  float s = d > 0.0 ? pow(d, u_shininess) : 0.0;
-  vec3 c = u_emissive.rgb + u_ambient.rgb + u_color_ambient * v_color.rgb + v_color.rgb * d + u_specular.rgb * s;
+  vec3 c;
+  if (!u_scene_lights) {
+    float s = d > 0.0 ? pow(d, u_shininess) : 0.0;
+    c = u_emissive.rgb + u_ambient.rgb + u_color_ambient * v_color.rgb + v_color.rgb * d + u_specular.rgb * s;
+  } else {
+    // Fixed-function OpenGL lighting (viewer at infinity, two-sided): per light
+    // attenuation · spot · (ambient + diffuse·max(n·L, 0) + specular·max(n·h, 0)^shininess).
+    vec3 mat_ambient = u_ambient.rgb + u_color_ambient * v_color.rgb;
+    c = u_emissive.rgb + u_global_ambient * mat_ambient;
+    for (int i = 0; i < u_nlights; ++i) {
+      vec3 L;
+      float att = 1.0;
+      if (u_light_pos[i].w == 0.0) {
+        L = normalize(u_light_pos[i].xyz);
+      } else {
+        vec3 to_light = u_light_pos[i].xyz - v_eye;
+        float dist = length(to_light);
+        L = to_light / max(dist, 1e-12);
+        att = 1.0 / (1.0 + u_light_att[i] * dist);
+      }
+      float spot = 1.0;
+      if (u_light_cos[i] > -1.5) {
+        float sd = dot(-L, u_light_spot[i]);
+        spot = sd >= u_light_cos[i] ? pow(max(sd, 0.0), u_light_exp[i]) : 0.0;
+      }
+      float ndl = max(dot(n, L), 0.0);
+      vec3 h = normalize(L + vec3(0.0, 0.0, 1.0));
+      float spec = ndl > 0.0 ? pow(max(dot(n, h), 0.0), u_shininess) : 0.0;
+      c += att * spot * u_light_color[i] * (mat_ambient + v_color.rgb * ndl + u_specular.rgb * spec);
+    }
+  }
   // A texture modulates the lit colour (OpenGL's default GL_MODULATE, as SOFA's OglModel).
   // The alpha of fixed-function lighting is the diffuse alpha (texture alpha modulating it);
   // it matters only to translucent models, opaque ones keep the picture opaque.
@@ -178,6 +219,15 @@ std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int sample
   r->u_splat_alpha_ = glGetUniformLocation(p, "u_splat_alpha");
   r->u_splat_radius_ = glGetUniformLocation(p, "u_splat_radius");
   r->u_half_height_ = glGetUniformLocation(p, "u_half_height");
+  r->u_nlights_ = glGetUniformLocation(p, "u_nlights");
+  r->u_scene_lights_ = glGetUniformLocation(p, "u_scene_lights");
+  r->u_global_ambient_ = glGetUniformLocation(p, "u_global_ambient");
+  r->u_light_pos_ = glGetUniformLocation(p, "u_light_pos");
+  r->u_light_color_ = glGetUniformLocation(p, "u_light_color");
+  r->u_light_spot_ = glGetUniformLocation(p, "u_light_spot");
+  r->u_light_cos_ = glGetUniformLocation(p, "u_light_cos");
+  r->u_light_exp_ = glGetUniformLocation(p, "u_light_exp");
+  r->u_light_att_ = glGetUniformLocation(p, "u_light_att");
   glUseProgram(p);
   glUniform1i(glGetUniformLocation(p, "u_texture"), 0);  // texture unit 0
   return r;
@@ -268,6 +318,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
   glUniformMatrix4fv(u_proj_, 1, GL_FALSE, view.projection.data());
   glUniform1f(u_half_height_, 0.5f * static_cast<float>(height_));
   view_ = view.view;
+  set_lights(list.lighting, view);
 
   while (gpu_.size() < list.used) {
     GpuBatch g;
@@ -394,6 +445,39 @@ void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {
     } else {
       glDrawArrays(GL_TRIANGLES, 0, n);
     }
+  }
+}
+
+void GlRenderer::set_lights(const Lighting& l, const View& view) {
+  const int n = l.from_scene ? static_cast<int>(std::min<std::size_t>(l.lights.size(), LightManager::kMaxLights)) : 0;
+  // A LightManager without lights leaves only its global ambient, as in SOFA.
+  glUniform1i(u_scene_lights_, l.from_scene ? 1 : 0);
+  glUniform1i(u_nlights_, n);
+  float pos[4 * LightManager::kMaxLights] = {}, col[3 * LightManager::kMaxLights] = {},
+        spot[3 * LightManager::kMaxLights] = {}, cosc[LightManager::kMaxLights] = {},
+        expo[LightManager::kMaxLights] = {}, att[LightManager::kMaxLights] = {};
+  const Eigen::Matrix4d v = view.view.cast<double>();
+  for (int i = 0; i < n; ++i) {
+    const LightSource& s = l.lights[i];
+    // OpenGL transforms a light's position (w = 1) or direction (w = 0), and its spot direction,
+    // by the modelview matrix current when it is set: the camera's, so they are world values.
+    const Eigen::Vector4d p = v * Eigen::Vector4d(s.position[0], s.position[1], s.position[2], s.position[3]);
+    const Eigen::Vector3d d = v.topLeftCorner<3, 3>() * Eigen::Vector3d(s.spot_direction[0], s.spot_direction[1],
+                                                                        s.spot_direction[2]);
+    for (int k = 0; k < 4; ++k) pos[4 * i + k] = static_cast<float>(p[k]);
+    for (int k = 0; k < 3; ++k) col[3 * i + k] = s.color[k], spot[3 * i + k] = static_cast<float>(d[k]);
+    cosc[i] = s.cutoff >= 180.f ? -2.f : static_cast<float>(std::cos(s.cutoff * M_PI / 180.0));
+    expo[i] = s.exponent;
+    att[i] = s.linear_attenuation;
+  }
+  glUniform3f(u_global_ambient_, l.ambient[0], l.ambient[1], l.ambient[2]);
+  if (n > 0) {
+    glUniform4fv(u_light_pos_, n, pos);
+    glUniform3fv(u_light_color_, n, col);
+    glUniform3fv(u_light_spot_, n, spot);
+    glUniform1fv(u_light_cos_, n, cosc);
+    glUniform1fv(u_light_exp_, n, expo);
+    glUniform1fv(u_light_att_, n, att);
   }
 }
 

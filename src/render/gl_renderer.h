@@ -48,13 +48,17 @@ class GlRenderer {
   unsigned program_ = 0;
   int u_view_ = -1, u_proj_ = -1, u_ambient_ = -1, u_specular_ = -1, u_emissive_ = -1, u_shininess_ = -1,
       u_lit_ = -1, u_color_ambient_ = -1, u_point_size_ = -1, u_clip_ = -1, u_textured_ = -1,
-      u_translucent_ = -1, u_splat_ = -1, u_splat_alpha_ = -1, u_splat_radius_ = -1, u_half_height_ = -1;
+      u_translucent_ = -1, u_splat_ = -1, u_splat_alpha_ = -1, u_splat_radius_ = -1, u_half_height_ = -1,
+      u_nlights_ = -1, u_scene_lights_ = -1, u_global_ambient_ = -1, u_light_pos_ = -1, u_light_color_ = -1, u_light_spot_ = -1,
+      u_light_cos_ = -1, u_light_exp_ = -1, u_light_att_ = -1;
   std::vector<GpuBatch> gpu_;
   // Uploads `b` into `g` and draws it (`upload` false: drawn again from what was uploaded,
   // the second pass of a translucent model).
   void draw_batch(const Batch& b, GpuBatch& g, bool upload = true);
   // order_: the points of `b` from the farthest to the nearest under view_.
   void sort_back_to_front(const Batch& b);
+  // The scene's lights as uniforms, in eye space (none: the shader's headlight).
+  void set_lights(const Lighting& l, const View& view);
   Eigen::Matrix4f view_ = Eigen::Matrix4f::Identity();
   std::vector<float> depth_;
   std::vector<unsigned> order_;

@@ -1,4 +1,4 @@
-// Components that only matter to a viewer (styles, grids, frames, lights,
+// Components that only matter to a viewer (styles, grids, frames,
 // labels, backgrounds). They load without error and do nothing in batch
 // runs; their attributes are accepted as they are.
 #include "core/registry.h"
@@ -24,10 +24,6 @@ void register_viewer_only(Registry& r) {
       {"LineAxis", "axes drawn by the viewer"},
       {"OglLabel", "text label drawn by the viewer"},
       {"Visual3DText", "3D text drawn by the viewer"},
-      {"LightManager", "viewer lights"},
-      {"DirectionalLight", "viewer light"},
-      {"PositionalLight", "viewer light"},
-      {"SpotLight", "viewer light"},
       {"ViewerSetting", "viewer window settings (resolution, fullscreen, picking method)"},
       {"GlobalSystemMatrixImage", "image of a linear system's matrix (SofaMatrix plugin)"},
       {"TrailRenderer", "trail of past positions drawn by the viewer"},

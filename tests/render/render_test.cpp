@@ -485,6 +485,38 @@ TEST_F(RenderTest, OglFluidModelDrawsSphereSprites) {
   EXPECT_LT(img.rgb(100 + static_cast<int>(0.9 * r_px), 100)[2], 200);
 }
 
+// A LightManager's lights replace the headlight with fixed-function OpenGL lighting: per light
+// attenuation · spot · colour · (ambient + diffuse·max(n·L, 0)), plus the manager's ambient. A
+// square facing the camera, colour 0.5 red (ambient 0.1, diffuse 0.5, no specular).
+TEST_F(RenderTest, SceneLightsAsFixedFunctionOpenGL) {
+  auto centre_red = [&](const std::string& lights, int dx = 0) {
+    auto s = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>" + lights +
+                        square("sq", "color=\"0.5 0 0 1\"", 0.0) + "</Node>");
+    return render(*s.root).rgb(100 + dx, 100)[0];
+  };
+  // Light from the camera's side: 0.1 + 0.5.
+  EXPECT_NEAR(centre_red("<LightManager/><DirectionalLight direction=\"0 0 1\"/>"), 153, 2);
+  // From behind the square: its ambient only.
+  EXPECT_NEAR(centre_red("<LightManager/><DirectionalLight direction=\"0 0 -1\"/>"), 26, 2);
+  // 60° from the normal: 0.1 + 0.5 cos 60°.
+  EXPECT_NEAR(centre_red("<LightManager/><DirectionalLight direction=\"0.8660254 0 0.5\"/>"), 89, 2);
+  // No light: the manager's ambient times the material's.
+  EXPECT_NEAR(centre_red("<LightManager ambient=\"1 1 1 1\"/>"), 26, 2);
+  EXPECT_EQ(centre_red("<LightManager/>"), 0);
+  // A point light 2 above the centre, linear attenuation 1: (0.1 + 0.5) / (1 + 2).
+  EXPECT_NEAR(centre_red("<LightManager/><PositionalLight position=\"0 0 2\" attenuation=\"1\"/>"), 51, 2);
+  // A spot 2 above, cut-off 10°: the centre lit, a point 0.45 aside (12.7° off axis) dark.
+  const std::string spot = "<LightManager/><SpotLight position=\"0 0 2\" direction=\"0 0 -1\" cutoff=\"10\"/>";
+  EXPECT_NEAR(centre_red(spot), 153, 2);
+  EXPECT_EQ(centre_red(spot, static_cast<int>(0.45 * 100.0 / (5 * std::tan(M_PI / 8)))), 0);
+  // A light outside any LightManager's subtree is not used (a warning); the scene keeps the headlight.
+  auto lonely = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+                           "<DirectionalLight direction=\"0 0 -1\"/>" + square("sq", "color=\"0.5 0 0 1\"", 0.0) +
+                           "</Node>");
+  EXPECT_TRUE(test::any_contains(test::messages(lonely.root->diagnostics(), Severity::warning), "no LightManager"));
+  EXPECT_NEAR(render(*lonely.root).rgb(100, 100)[0], 153, 2);
+}
+
 TEST_F(RenderTest, NothingVisibleIsAnError) {
   auto s = test::load(R"(<Node name="root"><VisualStyle displayFlags="hideVisualModels"/>
       <OglModel position="0 0 0 1 0 0 1 1 0" triangles="0 1 2"/></Node>)");
