@@ -11,10 +11,14 @@
 #include "render/draw_shapes.h"
 #include "visual/color.h"
 #include "visual/cylinder_visual_model.h"
+#include "visual/color_map.h"
 #include "visual/data_display.h"
+#include "visual/line_axis.h"
 #include "visual/ogl_fluid_model.h"
 #include "visual/point_splat_model.h"
+#include "visual/trail_renderer.h"
 #include "visual/visual_bounding_box.h"
+#include "visual/visual_grid.h"
 #include "visual/visual_mesh.h"
 #include "visual/visual_point_cloud.h"
 
@@ -241,6 +245,73 @@ void add_fluid(DrawList& list, const OglFluidModel& fm) {
   close_batch(list, b);
 }
 
+void push_line(Batch& b, const Vec3& p, const Vec3& q) {
+  for (const Vec3* v : {&p, &q})
+    for (int k = 0; k < 3; ++k) b.positions.push_back(static_cast<float>((*v)[k]));
+}
+
+// VisualGrid::doDrawVisual: its lines, unlit, in its colour.
+void add_grid(DrawList& list, const VisualGrid& g) {
+  thread_local std::vector<Vec3> pts;
+  g.lines(pts);
+  Batch& b = fresh_batch(list, &g, Batch::Kind::lines);
+  for (std::size_t i = 0; i + 1 < pts.size(); i += 2) push_line(b, pts[i], pts[i + 1]);
+  set_color(b, g.color.get(), false);
+  close_batch(list, b);
+}
+
+// LineAxis::doDrawVisual: x red, y green, z blue, each from −size/2 to size/2 through the
+// origin; `infinite` lines span the scene's bounds (what SOFA's infinite lines show in its view)
+// and do not count in the bounds the default view frames.
+void add_axes(DrawList& list, const LineAxis& a) {
+  static const Rgba kAxis[3] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};
+  Batch& b = fresh_batch(list, &a, Batch::Kind::lines);
+  double half = 0.5 * a.size.get();
+  if (a.infinite.get()) {
+    half = 1.0;
+    if (list.has_bounds) half = std::max(half, 2.0 * (list.max - list.min).norm());
+  }
+  for (int k = 0; k < 3; ++k) {
+    if (!a.draws(k)) continue;
+    Vec3 p = Vec3::Zero(), q = Vec3::Zero();
+    p[k] = -half, q[k] = half;
+    push_line(b, p, q);
+    for (int v = 0; v < 2; ++v) b.colors.insert(b.colors.end(), kAxis[k].begin(), kAxis[k].end());
+  }
+  b.shading = Shading{{0, 0, 0, 0}, {1, 1, 1, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
+  if (b.positions.empty()) {
+    --list.used;
+  } else if (!a.infinite.get()) {
+    grow_bounds(list, b.positions);
+  }
+}
+
+// TrailRenderer::doDrawVisual: per point, the line strip of its stored positions, the i-th
+// sample coloured by the colour map at i over [0, nbSteps].
+void add_trails(DrawList& list, const TrailRenderer& t) {
+  Batch& b = fresh_batch(list, &t, Batch::Kind::lines);
+  b.shading = Shading{{0, 0, 0, 0}, {1, 1, 1, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
+  // The palette is parsed again only when the text differs from the last trail's.
+  thread_local std::vector<Rgba> palette;
+  thread_local std::string palette_text = "\x01";
+  if (palette_text != t.color.get()) {
+    palette = parse_color_map(t.color.get());
+    if (palette.empty()) palette = {Rgba{0, 1, 0, 1}};  // SOFA's default: green
+    palette_text = t.color.get();
+  }
+  const double steps = static_cast<double>(t.nb_steps.get());
+  for (const auto& q : t.trail()) {
+    for (std::size_t i = 0; i + 1 < q.size(); ++i) {
+      push_line(b, q[i], q[i + 1]);
+      for (std::size_t j : {i, i + 1}) {
+        const Rgba c = evaluate_palette(palette, 0.0, steps, static_cast<double>(j));
+        b.colors.insert(b.colors.end(), c.begin(), c.end());
+      }
+    }
+  }
+  close_batch(list, b);
+}
+
 }  // namespace
 
 void add_visual_extras(DrawList& list, Node& node) {
@@ -252,6 +323,9 @@ void add_visual_extras(DrawList& list, Node& node) {
     else if (const auto* vm = dynamic_cast<const VisualMesh*>(o.get())) add_visual_mesh(list, *vm);
     else if (const auto* ps = dynamic_cast<const PointSplatModel*>(o.get())) add_point_splats(list, *ps, node);
     else if (const auto* fm = dynamic_cast<const OglFluidModel*>(o.get())) add_fluid(list, *fm);
+    else if (const auto* g = dynamic_cast<const VisualGrid*>(o.get())) add_grid(list, *g);
+    else if (const auto* a = dynamic_cast<const LineAxis*>(o.get())) add_axes(list, *a);
+    else if (const auto* tr = dynamic_cast<const TrailRenderer*>(o.get())) add_trails(list, *tr);
   }
 }
 

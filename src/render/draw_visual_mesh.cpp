@@ -11,7 +11,6 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <sstream>
 
 #include "render/draw_collision.h"
 #include "render/draw_visual.h"
@@ -71,21 +70,12 @@ bool in_range(const std::array<unsigned, N>& e, std::size_t n) {
   return std::all_of(e.begin(), e.end(), [n](unsigned v) { return v < n; });
 }
 
-// The colours of `values` through the VisualMesh's colour map text: a list of colours, else a
-// preset name (SOFA's default, an empty text: HSV).
+// The colours of the vertex values through the VisualMesh's colour map (HSV when empty, SOFA's
+// default map).
 std::vector<Rgba> value_colors(const VisualMesh& m) {
   const std::vector<double>& values = m.vertex_values.get();
-  const std::string& text = m.color_map.get();
-  std::vector<Rgba> palette;
-  std::istringstream in(text);
-  std::string word;
-  bool all_colors = text.find_first_not_of(" \t\r\n") != std::string::npos;
-  while (all_colors && in >> word) {
-    if (auto c = parse_rgba(word)) palette.push_back(*c);
-    else all_colors = false;
-  }
-  if (!all_colors || palette.empty())
-    palette = build_palette(256, text.find_first_not_of(" \t\r\n") == std::string::npos ? "HSV" : text);
+  std::vector<Rgba> palette = parse_color_map(m.color_map.get());
+  if (palette.empty()) palette = build_palette(256, "HSV");  // SOFA's ColorMap::getDefault()
   const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
   std::vector<Rgba> out;
   out.reserve(values.size());

@@ -1,5 +1,8 @@
 #include "visual/color_map.h"
 
+#include <cstdlib>
+#include <sstream>
+
 #include <cmath>
 
 namespace sinew {
@@ -112,6 +115,44 @@ Rgba evaluate_palette(const std::vector<Rgba>& palette, double vmin, double vmax
   Rgba c;
   for (int k = 0; k < 4; ++k) c[k] = a[k] + (b[k] - a[k]) * t;
   return c;
+}
+
+std::vector<Rgba> parse_color_map(const std::string& text) {
+  const std::size_t a = text.find_first_not_of(" \t\r\n");
+  if (a == std::string::npos) return {};
+  const std::string t = text.substr(a, text.find_last_not_of(" \t\r\n") + 1 - a);
+  static const char* const schemes[] = {"Red to Blue",   "Blue to Red",   "Yellow to Cyan",  "Cyan to Yellow",
+                                        "Red to Yello",  "Yellow to Red", "Yellow to Green", "Green to Yellow",
+                                        "Green to Cyan", "Cyan to Green", "Cyan to Blue",    "Blue to Cyan",
+                                        "Red",           "RedInv",        "Green",           "GreenInv",
+                                        "Blue",          "BlueInv",       "HSV"};
+  for (const char* s : schemes)
+    if (t == s) return build_palette(256, t);
+  std::vector<std::string> words;
+  std::istringstream in(t);
+  for (std::string w; in >> w;) words.push_back(w);
+  auto number = [](const std::string& w, float& v) {
+    char* end = nullptr;
+    v = std::strtof(w.c_str(), &end);
+    return end && *end == '\0' && end != w.c_str();
+  };
+  std::vector<Rgba> out;
+  for (std::size_t i = 0; i < words.size();) {
+    float v = 0;
+    if (number(words[i], v)) {
+      Rgba c{0, 0, 0, 1};
+      int k = 0;
+      while (k < 4 && i < words.size() && number(words[i], v)) c[k++] = v, ++i;
+      if (k < 3) return {};
+      out.push_back(c);
+    } else if (auto c = parse_rgba(words[i])) {
+      out.push_back(*c);
+      ++i;
+    } else {
+      return {};
+    }
+  }
+  return out;
 }
 
 }  // namespace sinew

@@ -24,4 +24,10 @@ std::vector<Rgba> build_palette(unsigned size, const std::string& scheme);
 // (vmax == vmin: e = 0, the first colour). `palette` must not be empty.
 Rgba evaluate_palette(const std::vector<Rgba>& palette, double vmin, double vmax, double v);
 
+// SOFA's ColorMap text (its operator>>): empty → nothing (the caller keeps its default); the
+// name of one of ColorMap's schemes (HSV, "Red to Blue", ..., SOFA's spelling "Red to Yello")
+// → that palette of 256 colours; else a list of colours, each a name, #hex or up to four
+// numbers. Empty result for an empty or unreadable text.
+std::vector<Rgba> parse_color_map(const std::string& text);
+
 }  // namespace sinew

@@ -9,36 +9,18 @@
 #include "core/roles.h"
 #include "core/value_text.h"
 #include "visual/color.h"
+#include "visual/color_map.h"
 
 namespace sinew {
-
-namespace {
-
-// SOFA's ColorMap text: a preset name or a list of colours.
-bool is_color_map_text(const std::string& text) {
-  static const char* const presets[] = {"Red to Blue",   "Blue to Red",    "Yellow to Cyan", "Cyan to Yellow",
-                                        "Red to Yello",  "Yellow to Red",  "Yellow to Green", "Green to Yellow",
-                                        "Green to Cyan", "Cyan to Green",  "Cyan to Blue",   "Blue to Cyan",
-                                        "Red",           "RedInv",         "Green",          "GreenInv",
-                                        "Blue",          "BlueInv",        "HSV"};
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos) return true;
-  for (const char* p : presets)
-    if (text == p) return true;
-  std::istringstream in(text);
-  std::string word;
-  while (in >> word)
-    if (!parse_rgba(word)) return false;
-  return true;
-}
-
-}  // namespace
 
 void VisualMesh::parse(AttributeMap& attrs, Diagnostics& diag) {
   Component::parse(attrs, diag);
   const double s = element_space.value();
   if (!(s >= 0.0 && s <= 1.0))
     diag.error(where, describe() + ": elementSpace " + std::to_string(s) + " is not in [0, 1]");
-  if (color_map.link_path().empty() && !is_color_map_text(color_map.value()))
+  const std::string& cm = color_map.value();
+  if (color_map.link_path().empty() && cm.find_first_not_of(" \t\r\n") != std::string::npos &&
+      parse_color_map(cm).empty())
     diag.error(where, describe() + ": colorMap " + quote_value(color_map.value()) +
                           " is neither a preset name nor a list of colours");
 }

@@ -517,6 +517,36 @@ TEST_F(RenderTest, SceneLightsAsFixedFunctionOpenGL) {
   EXPECT_NEAR(render(*lonely.root).rgb(100, 100)[0], 153, 2);
 }
 
+// VisualGrid (plane z, side 2, two subdivisions): unlit lines at x, y = −1, 0, 1 in its grey;
+// LineAxis: x red horizontal, y green vertical, of `size`, only the axes named.
+TEST_F(RenderTest, VisualGridAndLineAxis) {
+  const std::string camera = "<InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>";
+  const int unit = static_cast<int>(std::lround(100.0 / (5 * std::tan(M_PI / 8))));  // 48 px
+  auto grid = test::load("<Node name=\"root\">" + camera + "<VisualGrid size=\"2\" nbSubdiv=\"2\"/></Node>");
+  const Image g = render(*grid.root);
+  // A one-pixel line through a pixel boundary lands on one of the two pixels: look at ±1.
+  auto near = [](const Image& img, int x, int y, const std::array<int, 3>& c) {
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        if (img.rgb(x + dx, y + dy) == c) return true;
+    return false;
+  };
+  const std::array<int, 3> grey{87, 87, 87};
+  EXPECT_TRUE(near(g, 100, 100 + unit / 2, grey));         // the line x = 0
+  EXPECT_TRUE(near(g, 100 + unit / 2, 100, grey));         // the line y = 0
+  EXPECT_TRUE(is_background(g.rgb(100 + unit / 2, 100 + unit / 2)));  // inside a cell
+  EXPECT_TRUE(is_background(g.rgb(100 + 2 * unit, 100)));             // beyond the grid
+  auto axes = test::load("<Node name=\"root\">" + camera + "<LineAxis size=\"2\"/></Node>");
+  const Image a = render(*axes.root);
+  EXPECT_TRUE(near(a, 100 + unit / 2, 100, {255, 0, 0}));
+  EXPECT_TRUE(near(a, 100, 100 - unit / 2, {0, 255, 0}));
+  EXPECT_TRUE(is_background(a.rgb(100 + 2 * unit, 100)));  // ends at size / 2
+  auto x_only = test::load("<Node name=\"root\">" + camera + "<LineAxis size=\"2\" axis=\"X\"/></Node>");
+  const Image x = render(*x_only.root);
+  EXPECT_TRUE(near(x, 100 + unit / 2, 100, {255, 0, 0}));
+  EXPECT_FALSE(near(x, 100, 100 - unit / 2, {0, 255, 0}));
+}
+
 TEST_F(RenderTest, NothingVisibleIsAnError) {
   auto s = test::load(R"(<Node name="root"><VisualStyle displayFlags="hideVisualModels"/>
       <OglModel position="0 0 0 1 0 0 1 1 0" triangles="0 1 2"/></Node>)");
