@@ -4,9 +4,9 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
-#include <cstdio>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include "render/image_file.h"
