@@ -38,6 +38,10 @@ class StateComparer {
   void on_step_begin(double t, const double* x, std::size_t nx, const double* v, std::size_t nv,
                      std::size_t npoints);
 
+  // Compare the file again from its start when its end is reached (CompareState's `loop`;
+  // BlockSchedule::set_loop).
+  void set_loop(bool on) { schedule_.set_loop(on); }
+
   // E_f: sum over compared blocks and lines of e / P. This decides the verdict.
   double error() const { return error_; }
   // Sum of the plain e values (reported by SOFA, not used for the verdict).

@@ -400,5 +400,27 @@ TEST(CompareState, SumsSofasMeanAbsoluteDifferencePerPoint) {
   EXPECT_EQ(r.session->root().get_mechanical_state()->read(kPosition), (std::vector<double>{1, 2, 3, 4, 5, 6}));
 }
 
+// CompareState with loop: a two-block file (0, 0.01) compared over five steps: blocks 0 and
+// 0.01, then the file again from 0.01 (its T= 0 shifted to 0.01 replaces the last block at once,
+// as SOFA's reader), 0.02, ... Every comparison counts: five compared blocks, each off by 1 in
+// one scalar of six (e = 1/6, per point 1/12).
+TEST(CompareState, LoopComparesTheFileAgain) {
+  TempDir dir;
+  const std::string file = dir.write("ref.txt", "T= 0\n  X= 1 2 3 4 5 7\nT= 0.01\n  X= 1 2 3 4 5 7\n");
+  for (const bool loop : {false, true}) {
+    const std::string xml = R"(<Node name="root" dt="0.01">
+  <DefaultAnimationLoop/>
+  <MechanicalObject name="dofs" position="1 2 3  4 5 6"/>
+  <CompareState name="cmp" filename=")" + file + R"(" loop=")" + (loop ? "1" : "0") + R"("/>
+</Node>)";
+    RunResult r = run(dir, xml, 5, false);
+    auto* c = test::get<CompareState>(r.session->root(), "cmp");
+    ASSERT_NE(c, nullptr);
+    EXPECT_EQ(c->compared_blocks(), loop ? 5 : 2) << "loop " << loop;
+    EXPECT_NEAR(c->error_by_dof(), (loop ? 5 : 2) / 12.0, 1e-12);
+    EXPECT_TRUE(r.warnings.empty()) << ::testing::PrintToString(r.warnings);
+  }
+}
+
 }  // namespace
 }  // namespace sinew

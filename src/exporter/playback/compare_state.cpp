@@ -9,8 +9,8 @@ void CompareState::init() {
   ReadState::init();  // parses the file
   comparer_.reset();
   if (!opened_ || !node()) return;
-  if (loop.get()) msg_warning("loop is not supported by CompareState: the file is compared once");
   comparer_ = std::make_unique<regression::StateComparer>(blocks_, node()->dt.get());
+  comparer_->set_loop(loop.get());
 }
 
 void CompareState::handle_event(Event& e) {

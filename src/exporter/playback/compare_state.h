@@ -4,8 +4,8 @@
 // line, the mean absolute difference between the file's numbers and the live values as SOFA
 // prints them (6 significant digits). The sums are SOFA's totalError_X/V and dofError;
 // with printLog they are reported when the simulation closes. It is the regression metric
-// (src/regression/state_compare.h), here as a scene component. `loop` is not supported
-// (a warning says so).
+// (src/regression/state_compare.h), here as a scene component. With `loop` the file starts
+// again after its end, its times shifted by the last time read (ReadState's rule).
 #pragma once
 
 #include <memory>
