@@ -10,6 +10,7 @@
 #include "render/draw_visual.h"
 #include "visual/clip_plane.h"
 #include "visual/color.h"
+#include "visual/ogl_scene_frame.h"
 #include "visual/ogl_model.h"
 #include "visual/visual_style.h"
 
@@ -346,6 +347,17 @@ void gather(Node& root, DrawList& out) {
   deferred.clear();
   seen.clear();
   visit(root, DisplayFlags::viewer_defaults(), nullptr, out, scratch, deferred, seen);
+  out.frame.on = false;
+  if (const OglSceneFrame* f = root.find_down<OglSceneFrame>(); f && f->draw.get() && f->state() == ComponentState::valid) {
+    static const char* const kStyles[] = {"Arrows", "Cylinders", "CubeCones"};
+    static const char* const kCorners[] = {"BottomLeft", "BottomRight", "TopRight", "TopLeft"};
+    out.frame.on = true;
+    for (int i = 0; i < 3; ++i)
+      if (f->style.get() == kStyles[i]) out.frame.style = i;
+    for (int i = 0; i < 4; ++i)
+      if (f->alignment.get() == kCorners[i]) out.frame.corner = i;
+    out.frame.size = f->viewport_size.get();
+  }
   Lighting& l = out.lighting;
   l.lights.clear();
   const LightManager* lm = root.find_down<LightManager>();

@@ -86,9 +86,17 @@ struct Lighting {
   std::vector<LightSource> lights;
 };
 
+// OglSceneFrame: the axes in a corner (style 0 arrows, 1 cylinders, 2 cube and cones;
+// corner 0 bottom-left, 1 bottom-right, 2 top-right, 3 top-left).
+struct SceneFrame {
+  bool on = false;
+  int style = 1, corner = 1, size = 150;
+};
+
 struct DrawList {
   std::vector<Batch> batches;
   Lighting lighting;
+  SceneFrame frame;
   std::size_t used = 0;  // batches[0, used) are this frame's
   // Bounding box of what is drawn (valid when has_bounds).
   Vec3 min = Vec3::Zero(), max = Vec3::Zero();

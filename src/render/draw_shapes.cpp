@@ -77,4 +77,48 @@ void append_frame(Batch& b, const Vec3& origin, const Mat3& axes, double length)
   }
 }
 
+void append_box(Batch& b, const Vec3& lo, const Vec3& hi, const std::array<float, 4>& color) {
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = 0; side < 2; ++side) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      Vec3 n = Vec3::Zero();
+      n[axis] = side ? 1.0 : -1.0;
+      const auto base = static_cast<unsigned>(b.positions.size() / 3);
+      for (int k = 0; k < 4; ++k) {
+        Vec3 p;
+        p[axis] = side ? hi[axis] : lo[axis];
+        p[u] = (k == 1 || k == 2) ? hi[u] : lo[u];
+        p[v] = (k >= 2) ? hi[v] : lo[v];
+        push(b.positions, p);
+        push(b.normals, n);
+      }
+      push_color(b, &color, 4);
+      b.indices.insert(b.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    }
+}
+
+void append_scene_frame(Batch& b, int style) {
+  static const std::array<float, 4> kAxis[3] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};
+  static const std::array<float, 4> kGrey{0.5f, 0.5f, 0.5f, 1}, kDark{0.25f, 0.25f, 0.25f, 1};
+  if (style == 2) {
+    constexpr double s = 0.25;
+    append_box(b, Vec3(-s, -s, -s), Vec3(s, s, s), kDark);
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 e = Vec3::Unit(k);
+      append_cone(b, s * e, 3 * s * e, 0.0, s, &kAxis[k]);
+      append_cone(b, -s * e, -3 * s * e, 0.0, s, &kGrey);
+    }
+    return;
+  }
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 e = Vec3::Unit(k);
+    if (style == 1) {
+      append_cone(b, Vec3::Zero(), e, 0.05, 0.05, &kAxis[k]);
+    } else {
+      append_cone(b, Vec3::Zero(), 0.8 * e, 0.05, 0.05, &kAxis[k]);
+      append_cone(b, 0.8 * e, e, 0.125, 0.0, &kAxis[k]);
+    }
+  }
+}
+
 }  // namespace sinew::render

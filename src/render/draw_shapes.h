@@ -21,4 +21,13 @@ void append_cone(Batch& b, const Vec3& a, const Vec3& tip, double ra, double rb,
 // radius L/10 and length L, then a cone of length and base radius L/5; x red, y green, z blue.
 void append_frame(Batch& b, const Vec3& origin, const Mat3& axes, double length);
 
+// An axis-aligned box [lo, hi] by its six faces.
+void append_box(Batch& b, const Vec3& lo, const Vec3& hi, const std::array<float, 4>& color);
+
+// OglSceneFrame's axes at the origin, unit length: style 0 arrows (a shaft of radius 0.05 to
+// 0.8, a cone of base 0.125 to 1: DrawTool's drawArrow), 1 cylinders (radius 0.05), 2 a dark
+// cube of half-side 0.25 with a cone per half axis (coloured on the positive side, grey on the
+// negative); x red, y green, z blue.
+void append_scene_frame(Batch& b, int style);
+
 }  // namespace sinew::render

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "render/draw_shapes.h"
 #include "render/image_file.h"
 
 namespace sinew::render {
@@ -292,6 +293,11 @@ void GlRenderer::present(int width, int height) {
 }
 
 GlRenderer::~GlRenderer() {
+  if (frame_gpu_) {
+    glDeleteVertexArrays(1, &frame_gpu_->vao);
+    glDeleteBuffers(4, frame_gpu_->vbo);
+    glDeleteBuffers(1, &frame_gpu_->ebo);
+  }
   for (GpuBatch& g : gpu_) {
     glDeleteVertexArrays(1, &g.vao);
     glDeleteBuffers(4, g.vbo);
@@ -362,6 +368,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
   }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glUniform1i(u_translucent_, 0);
+  if (list.frame.on) draw_scene_frame(list.frame, view);
   glBindVertexArray(0);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   glDisable(GL_CLIP_DISTANCE0);  // the viewer draws its overlays after this
@@ -446,6 +453,45 @@ void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {
       glDrawArrays(GL_TRIANGLES, 0, n);
     }
   }
+}
+
+void GlRenderer::draw_scene_frame(const SceneFrame& f, const View& view) {
+  if (frame_style_ != f.style) {
+    frame_batch_ = Batch{};
+    append_scene_frame(frame_batch_, f.style);
+    frame_batch_.shading = Shading{{0, 0, 0, 0}, {1, 1, 1, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
+    frame_batch_.lit = false;  // SOFA disables lighting for the frame
+    frame_style_ = f.style;
+    frame_gpu_.reset();
+  }
+  if (!frame_gpu_) {
+    frame_gpu_ = std::make_unique<GpuBatch>();
+    glGenVertexArrays(1, &frame_gpu_->vao);
+    glGenBuffers(4, frame_gpu_->vbo);
+    glGenBuffers(1, &frame_gpu_->ebo);
+  }
+  // OglSceneFrame::doDrawVisual: a square viewport in the corner, its depth cleared, a 60°
+  // perspective (near 0.5, far 10) and the camera's rotation with the frame 3 in front.
+  const int s = std::max(1, std::min(f.size, std::min(width_, height_)));
+  const int x = (f.corner == 1 || f.corner == 2) ? width_ - s : 0;
+  const int y = (f.corner == 2 || f.corner == 3) ? height_ - s : 0;
+  glViewport(x, y, s, s);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x, y, s, s);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  Eigen::Matrix4f v = view.view;
+  v(0, 3) = 0.f, v(1, 3) = 0.f, v(2, 3) = -3.f;
+  const float near = 0.5f, far = 10.f, t = 1.f / std::tan(static_cast<float>(M_PI) / 6.f);
+  Eigen::Matrix4f p = Eigen::Matrix4f::Zero();
+  p(0, 0) = t, p(1, 1) = t, p(2, 2) = (far + near) / (near - far), p(2, 3) = 2 * far * near / (near - far);
+  p(3, 2) = -1.f;
+  glUniformMatrix4fv(u_view_, 1, GL_FALSE, v.data());
+  glUniformMatrix4fv(u_proj_, 1, GL_FALSE, p.data());
+  draw_batch(frame_batch_, *frame_gpu_);
+  glDisable(GL_SCISSOR_TEST);
+  glViewport(0, 0, width_, height_);
+  glUniformMatrix4fv(u_view_, 1, GL_FALSE, view.view.data());
+  glUniformMatrix4fv(u_proj_, 1, GL_FALSE, view.projection.data());
 }
 
 void GlRenderer::set_lights(const Lighting& l, const View& view) {

@@ -57,6 +57,11 @@ class GlRenderer {
   void draw_batch(const Batch& b, GpuBatch& g, bool upload = true);
   // order_: the points of `b` from the farthest to the nearest under view_.
   void sort_back_to_front(const Batch& b);
+  // OglSceneFrame's axes in their corner viewport, over the scene.
+  void draw_scene_frame(const SceneFrame& f, const View& view);
+  Batch frame_batch_;
+  int frame_style_ = -1;
+  std::unique_ptr<GpuBatch> frame_gpu_;
   // The scene's lights as uniforms, in eye space (none: the shader's headlight).
   void set_lights(const Lighting& l, const View& view);
   Eigen::Matrix4f view_ = Eigen::Matrix4f::Identity();

@@ -6,6 +6,7 @@
 #include "core/roles.h"
 #include "visual/choice.h"
 #include "visual/color.h"
+#include "visual/ogl_scene_frame.h"
 
 namespace sinew {
 
@@ -13,21 +14,6 @@ namespace {
 
 // SOFA's DefaultVisualManagerLoop: runs the visual passes; Sinew's viewer and pictures do.
 class DefaultVisualManagerLoop final : public VisualComponent {};
-
-// OglSceneFrame (Sofa.GL.Component.Rendering3D): axes in a corner of the viewer.
-class OglSceneFrame final : public VisualComponent {
- public:
-  Field<bool> draw{this, "draw", true, "display the frame", "Visualization"};
-  Field<std::string> style{this, "style", "Cylinders", "Arrows, Cylinders or CubeCones", "Visualization"};
-  Field<std::string> alignment{this, "alignment", "BottomRight", "BottomLeft, BottomRight, TopRight or TopLeft",
-                               "Visualization"};
-  Field<int> viewport_size{this, "viewportSize", 150, "size of the frame's viewport (pixels)", "Visualization"};
-  void parse(AttributeMap& attrs, Diagnostics& diag) override {
-    Component::parse(attrs, diag);
-    check_choice(*this, style, {"Arrows", "Cylinders", "CubeCones"}, diag);
-    check_choice(*this, alignment, {"BottomLeft", "BottomRight", "TopRight", "TopLeft"}, diag);
-  }
-};
 
 // OglLabel (Sofa.GL.Component.Rendering2D): a line of text on the screen.
 class OglLabel final : public VisualComponent {

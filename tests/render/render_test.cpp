@@ -547,6 +547,33 @@ TEST_F(RenderTest, VisualGridAndLineAxis) {
   EXPECT_FALSE(near(x, 100, 100 - unit / 2, {0, 255, 0}));
 }
 
+// OglSceneFrame: the axes in a corner viewport of viewportSize pixels over the scene, turned as
+// the camera sees the world: x red to the right, y green upwards for a camera on +z.
+TEST_F(RenderTest, OglSceneFrameDrawsTheAxesInItsCorner) {
+  auto s = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>" +
+                      cube("c", "white", 0) + "<OglSceneFrame style=\"Arrows\" viewportSize=\"60\"/></Node>");
+  const Image img = render(*s.root);
+  auto red = [](auto c) { return c[0] > 200 && c[1] < 50 && c[2] < 50; };
+  auto green = [](auto c) { return c[1] > 200 && c[0] < 50 && c[2] < 50; };
+  // The bottom-right 60 × 60 pixels, centred on (170, 170) in picture rows from the top.
+  EXPECT_TRUE(red(img.rgb(170 + 15, 170)));
+  EXPECT_TRUE(green(img.rgb(170, 170 - 15)));
+  EXPECT_FALSE(red(img.rgb(170 - 15, 170)));
+  EXPECT_FALSE(green(img.rgb(170, 170 + 15)));
+  // Nothing of it outside its corner.
+  long outside = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      if ((x < 140 || y < 140) && (red(img.rgb(x, y)) || green(img.rgb(x, y)))) ++outside;
+  EXPECT_EQ(outside, 0);
+  // Top-left with cylinders.
+  auto t = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>" +
+                      cube("c", "white", 0) + "<OglSceneFrame alignment=\"TopLeft\" viewportSize=\"60\"/></Node>");
+  const Image tl = render(*t.root);
+  EXPECT_TRUE(red(tl.rgb(30 + 15, 30)));
+  EXPECT_TRUE(green(tl.rgb(30, 30 - 15)));
+}
+
 TEST_F(RenderTest, NothingVisibleIsAnError) {
   auto s = test::load(R"(<Node name="root"><VisualStyle displayFlags="hideVisualModels"/>
       <OglModel position="0 0 0 1 0 0 1 1 0" triangles="0 1 2"/></Node>)");
