@@ -537,7 +537,11 @@ void GlRenderer::sort_back_to_front(const Batch& b) {
     depth_[i] = view_(2, 0) * p[0] + view_(2, 1) * p[1] + view_(2, 2) * p[2];
     order_[i] = static_cast<unsigned>(i);
   }
-  std::stable_sort(order_.begin(), order_.end(), [&](unsigned a, unsigned c) { return depth_[a] < depth_[c]; });
+  // Equal depths keep the points' order, as SOFA's multimap; std::sort with the index as tie-break
+  // does so without stable_sort's temporary buffer (no allocation per frame).
+  std::sort(order_.begin(), order_.end(), [&](unsigned a, unsigned c) {
+    return depth_[a] < depth_[c] || (depth_[a] == depth_[c] && a < c);
+  });
 }
 
 unsigned GlRenderer::texture_for(const std::string& path) {
