@@ -23,6 +23,7 @@
 #include "haptics/servo_loop.h"
 #include "io/vtk_writer.h"
 #include "regression/gzip_text.h"
+#include "render/draw_text.h"
 #include "render/offscreen.h"
 #include "render/png_io.h"
 #include "runner/probes.h"
@@ -280,6 +281,7 @@ int render(const RenderArgs& a) {
   runner::SessionOptions so;
   so.data_paths = data_paths_for(a.data_paths);
   so.script_args = a.script_args;
+  renderer->set_font(render::find_font(so.data_paths));
   runner::Session session(a.scene, so);
   print_messages(session.diagnostics());
   std::size_t printed = session.diagnostics().messages().size();

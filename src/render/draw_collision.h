@@ -18,6 +18,8 @@ namespace sinew::render {
 
 Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind);
 void grow_bounds(DrawList& list, const std::vector<float>& x);
+// Positions of a state as floats (the first three coordinates of each DoF); false when it has none.
+bool state_positions(const MechanicalState& s, std::vector<float>& out);
 
 // A batch rebuilt from nothing this frame (its arrays emptied, their storage kept), and its
 // end: dropped when it drew nothing, else counted in the list's bounds.

@@ -7,6 +7,7 @@
 
 #include "core/node.h"
 #include "render/draw_collision.h"
+#include "render/draw_text.h"
 #include "render/draw_visual.h"
 #include "visual/clip_plane.h"
 #include "visual/color.h"
@@ -49,6 +50,18 @@ void grow_bounds(DrawList& list, const std::vector<float>& x) {
       list.max = list.max.cwiseMax(p);
     }
   }
+}
+
+// Positions of a state as floats (the first three coordinates of each DoF).
+bool state_positions(const MechanicalState& s, std::vector<float>& out) {
+  const int w = s.info().coord_width, dim = std::min(3, s.info().spatial_dim);
+  if (w <= 0 || dim <= 0) return false;
+  const std::vector<double>& x = s.read(kPosition);
+  const std::size_t n = s.size();
+  out.resize(n * 3);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int c = 0; c < 3; ++c) out[i * 3 + c] = c < dim ? static_cast<float>(x[i * w + c]) : 0.f;
+  return true;
 }
 
 namespace {
@@ -142,17 +155,6 @@ void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const C
   grow_bounds(list, b.positions);
 }
 
-// Positions of a state as floats (the first three coordinates of each DoF).
-bool state_positions(const MechanicalState& s, std::vector<float>& out) {
-  const int w = s.info().coord_width, dim = std::min(3, s.info().spatial_dim);
-  if (w <= 0 || dim <= 0) return false;
-  const std::vector<double>& x = s.read(kPosition);
-  const std::size_t n = s.size();
-  out.resize(n * 3);
-  for (std::size_t i = 0; i < n; ++i)
-    for (int c = 0; c < 3; ++c) out[i * 3 + c] = c < dim ? static_cast<float>(x[i * w + c]) : 0.f;
-  return true;
-}
 
 using V3f = Eigen::Vector3f;
 
@@ -263,6 +265,7 @@ void visit(Node& node, const DisplayFlags& inherited, const ClipPlane* inherited
       if (const auto* m = dynamic_cast<const OglModel*>(o.get()))
         add_visual_model(list, *m, flags.shown(DisplayFlags::wireframe), clip);
   if (flags.shown(DisplayFlags::visual_models)) add_visual_extras(list, node);
+  add_texts(list, node, flags.shown(DisplayFlags::visual_models));
 
   if (flags.shown(DisplayFlags::collision_models) || flags.shown(DisplayFlags::bounding_collision_models))
     add_collision_models(list, node, flags);
@@ -340,6 +343,7 @@ void compute_normals(const std::vector<float>& xs, const std::vector<Triangle>& 
 
 void gather(Node& root, DrawList& out) {
   out.used = 0;
+  out.texts_used = 0;
   out.has_bounds = false;
   thread_local std::vector<float> scratch;
   thread_local std::vector<const MechanicalState*> deferred;

@@ -93,8 +93,23 @@ struct SceneFrame {
   int style = 1, corner = 1, size = 150;
 };
 
+// A text to draw (render/draw_text.h): its form, where, how big, its colour.
+struct Text {
+  enum class Kind { world, indices, overlay };
+  Kind kind = Kind::world;
+  const Component* source = nullptr;
+  std::string text;            // world, overlay
+  Vec3 anchor = Vec3::Zero();  // world: top-left corner; overlay: pixels (x right, y down) from the top-left
+  std::vector<float> points;   // indices: x y z per point, labelled 0, 1, ...
+  float size = 1.f;            // world: glyph height (world units); indices: 30·size px high; overlay: fontsize
+  Rgba color{1, 1, 1, 1};
+  bool depth_test = false;
+};
+
 struct DrawList {
   std::vector<Batch> batches;
+  std::vector<Text> texts;  // texts[0, texts_used) are this frame's, drawn over the models
+  std::size_t texts_used = 0;
   Lighting lighting;
   SceneFrame frame;
   std::size_t used = 0;  // batches[0, used) are this frame's

@@ -143,11 +143,7 @@ void add_point_cloud(DrawList& list, const VisualPointCloud& pc) {
   const int w = x.width;
   const std::size_t n = x.size();
   if (n == 0 || w <= 0) return;
-  auto centre = [&](std::size_t i) {
-    const double* p = &x.data[i * w];
-    // Vec1: (x, 0, 0); Vec2 and Rigid2 (x, y, θ): (x, y, 0); Vec3 and Rigid3: the first three.
-    return Vec3(p[0], w >= 2 ? p[1] : 0.0, (w == 3 && !pc.rigid()) || w == 7 ? p[2] : 0.0);
-  };
+  auto centre = [&](std::size_t i) { return pc.centre(i); };
   const std::string& mode = pc.draw_mode.get();
   if (mode == "Point") {
     Batch& b = fresh_batch(list, &pc, Batch::Kind::points);

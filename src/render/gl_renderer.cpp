@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "render/draw_shapes.h"
+#include "render/draw_text.h"
 #include "render/image_file.h"
 
 namespace sinew::render {
@@ -145,6 +146,34 @@ void main() {
 }
 )";
 
+// Text (render/draw_text.h): vertices already in clip space; the font texture's alpha modulates
+// the colour, and fragments it leaves transparent are dropped (SOFA's alpha test, GL_GREATER 0).
+const char* kTextVertexShader = R"(#version 330 core
+layout(location = 0) in vec4 a_clip;
+layout(location = 1) in vec2 a_uv;
+layout(location = 2) in vec4 a_color;
+out vec2 v_uv;
+out vec4 v_color;
+void main() {
+  gl_Position = a_clip;
+  v_uv = a_uv;
+  v_color = a_color;
+}
+)";
+
+const char* kTextFragmentShader = R"(#version 330 core
+in vec2 v_uv;
+in vec4 v_color;
+uniform sampler2D u_font;
+out vec4 frag_color;
+void main() {
+  vec4 t = texture(u_font, v_uv);
+  float a = t.a * v_color.a;
+  if (a <= 0.0) discard;
+  frag_color = vec4(v_color.rgb * t.rgb, a);
+}
+)";
+
 unsigned compile(GLenum type, const char* src, std::string* error) {
   const GLuint s = glCreateShader(type);
   glShaderSource(s, 1, &src, nullptr);
@@ -172,6 +201,33 @@ void upload(GLenum target, unsigned buffer, const void* data, std::size_t bytes,
   }
 }
 
+// A linked program of the two shaders; 0 with *error.
+unsigned link(const char* vertex, const char* fragment, std::string* error) {
+  const unsigned vs = compile(GL_VERTEX_SHADER, vertex, error);
+  if (!vs) return 0;
+  const unsigned fs = compile(GL_FRAGMENT_SHADER, fragment, error);
+  if (!fs) {
+    glDeleteShader(vs);
+    return 0;
+  }
+  const unsigned p = glCreateProgram();
+  glAttachShader(p, vs);
+  glAttachShader(p, fs);
+  glLinkProgram(p);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = 0;
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[1024] = {};
+    glGetProgramInfoLog(p, sizeof log, nullptr, log);
+    if (error) *error = std::string("shader link failed: ") + log;
+    glDeleteProgram(p);
+    return 0;
+  }
+  return p;
+}
+
 }  // namespace
 
 std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int samples, std::string* error) {
@@ -182,27 +238,12 @@ std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int sample
 
   if (!r->allocate(width, height, error)) return nullptr;
 
-  const unsigned vs = compile(GL_VERTEX_SHADER, kVertexShader, error);
-  if (!vs) return nullptr;
-  const unsigned fs = compile(GL_FRAGMENT_SHADER, kFragmentShader, error);
-  if (!fs) {
-    glDeleteShader(vs);
-    return nullptr;
-  }
-  r->program_ = glCreateProgram();
-  glAttachShader(r->program_, vs);
-  glAttachShader(r->program_, fs);
-  glLinkProgram(r->program_);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(r->program_, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[1024] = {};
-    glGetProgramInfoLog(r->program_, sizeof log, nullptr, log);
-    if (error) *error = std::string("shader link failed: ") + log;
-    return nullptr;
-  }
+  r->program_ = link(kVertexShader, kFragmentShader, error);
+  if (!r->program_) return nullptr;
+  r->text_program_ = link(kTextVertexShader, kTextFragmentShader, error);
+  if (!r->text_program_) return nullptr;
+  glUseProgram(r->text_program_);
+  glUniform1i(glGetUniformLocation(r->text_program_, "u_font"), 0);  // texture unit 0
   const unsigned p = r->program_;
   r->u_view_ = glGetUniformLocation(p, "u_view");
   r->u_proj_ = glGetUniformLocation(p, "u_proj");
@@ -306,6 +347,9 @@ GlRenderer::~GlRenderer() {
   for (const auto& t : textures_)
     if (t.second) glDeleteTextures(1, &t.second);
   if (program_) glDeleteProgram(program_);
+  if (text_program_) glDeleteProgram(text_program_);
+  if (text_vao_) glDeleteVertexArrays(1, &text_vao_);
+  if (text_vbo_) glDeleteBuffers(1, &text_vbo_);
   release_framebuffers();
 }
 
@@ -366,8 +410,9 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
   }
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glUniform1i(u_translucent_, 0);
+  if (list.texts_used > 0) draw_texts(list, view);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   if (list.frame.on) draw_scene_frame(list.frame, view);
   glBindVertexArray(0);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
@@ -542,6 +587,60 @@ void GlRenderer::sort_back_to_front(const Batch& b) {
   std::sort(order_.begin(), order_.end(), [&](unsigned a, unsigned c) {
     return depth_[a] < depth_[c] || (depth_[a] == depth_[c] && a < c);
   });
+}
+
+void GlRenderer::draw_texts(const DrawList& list, const View& view) {
+  if (font_.empty()) {
+    if (!font_warned_)
+      std::fprintf(stderr,
+                   "sinew: text not drawn: SOFA's font textures/texture_ascii_smooth.png is in none of the data "
+                   "folders (--data-path)\n");
+    font_warned_ = true;
+    return;
+  }
+  const unsigned font = texture_for(font_);
+  if (!font) return;  // texture_for said why
+  text_vertices_.clear();
+  // Depth-tested texts first, then those drawn over everything; each group in graph order.
+  std::size_t tested_floats = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::size_t i = 0; i < list.texts_used; ++i)
+      if (list.texts[i].depth_test == (pass == 0)) text_vertices(list.texts[i], view, width_, height_, text_vertices_);
+    if (pass == 0) tested_floats = text_vertices_.size();
+  }
+  if (text_vertices_.empty()) return;
+  if (!text_vao_) {
+    glGenVertexArrays(1, &text_vao_);
+    glGenBuffers(1, &text_vbo_);
+  }
+  glBindVertexArray(text_vao_);
+  upload(GL_ARRAY_BUFFER, text_vbo_, text_vertices_.data(), text_vertices_.size() * sizeof(float), text_capacity_);
+  constexpr GLsizei stride = 10 * sizeof(float);
+  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, stride, nullptr);
+  glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(4 * sizeof(float)));
+  glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(6 * sizeof(float)));
+  for (GLuint a = 0; a < 3; ++a) glEnableVertexAttribArray(a);
+  glUseProgram(text_program_);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, font);
+  // The cells touch each other: no wrapping from one edge of the texture to the other.
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glDisable(GL_CLIP_DISTANCE0);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glDepthMask(GL_FALSE);
+  const auto count = [](std::size_t floats) { return static_cast<GLsizei>(floats / 10); };
+  if (tested_floats > 0) glDrawArrays(GL_TRIANGLES, 0, count(tested_floats));
+  glDisable(GL_DEPTH_TEST);
+  if (text_vertices_.size() > tested_floats)
+    glDrawArrays(GL_TRIANGLES, count(tested_floats), count(text_vertices_.size() - tested_floats));
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glEnable(GL_CLIP_DISTANCE0);
+  glUseProgram(program_);
 }
 
 unsigned GlRenderer::texture_for(const std::string& path) {

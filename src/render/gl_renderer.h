@@ -32,6 +32,9 @@ class GlRenderer {
   bool resize(int width, int height, std::string* error);
   // Copies the last drawn picture into the window's framebuffer (0), width × height pixels.
   void present(int width, int height);
+  // SOFA's ASCII font texture (render/draw_text.h find_font); without it texts are not drawn
+  // (one message on stderr).
+  void set_font(const std::string& path) { font_ = path; }
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -62,6 +65,13 @@ class GlRenderer {
   Batch frame_batch_;
   int frame_style_ = -1;
   std::unique_ptr<GpuBatch> frame_gpu_;
+  // The list's texts over the models (depth-tested ones first), blended, alpha kept.
+  void draw_texts(const DrawList& list, const View& view);
+  unsigned text_program_ = 0, text_vao_ = 0, text_vbo_ = 0;
+  std::size_t text_capacity_ = 0;
+  std::vector<float> text_vertices_;
+  std::string font_;
+  bool font_warned_ = false;
   // The scene's lights as uniforms, in eye space (none: the shader's headlight).
   void set_lights(const Lighting& l, const View& view);
   Eigen::Matrix4f view_ = Eigen::Matrix4f::Identity();

@@ -29,6 +29,8 @@ OffscreenRenderer::~OffscreenRenderer() {
   context_.reset();
 }
 
+void OffscreenRenderer::set_font(const std::string& path) { gl_->set_font(path); }
+
 const std::string& OffscreenRenderer::gl_description() const { return context_->description(); }
 
 namespace {

@@ -39,11 +39,13 @@ class MechanicalObject final : public MechanicalState {
                            "Topology"};
   Field<int> size_field{this, "size", 1, "number of degrees of freedom", "Infos"};
   Field<int> reserve{this, "reserve", 0, "capacity hint", "Infos"};
-  // Viewer-only fields, accepted so scenes load silently.
+  // Viewer-only fields (render/draw_list.h, render/draw_text.h draw some).
   Field<bool> show_object{this, "showObject", false, "draw the points (viewer)", "Visualization"};
   Field<double> show_object_scale{this, "showObjectScale", 0.1, "point size (viewer)", "Visualization"};
-  Field<bool> show_indices{this, "showIndices", false, "draw indices (viewer)", "Visualization"};
-  Field<double> show_indices_scale{this, "showIndicesScale", 0.02, "index size (viewer)", "Visualization"};
+  Field<bool> show_indices{this, "showIndices", false, "draw each point's index (viewer)", "Visualization"};
+  // SOFA's current meaning: a factor on a constant screen height (30 px at 1), no longer a world size.
+  Field<double> show_indices_scale{this, "showIndicesScale", 1.0, "size of the indices (1: 30 pixels high)",
+                                   "Visualization"};
   Field<bool> show_vectors{this, "showVectors", false, "draw velocities (viewer)", "Visualization"};
   Field<double> show_vectors_scale{this, "showVectorsScale", 0.0001, "vector scale (viewer)", "Visualization"};
   Field<int> draw_mode{this, "drawMode", 0, "0: points, 1: spheres, ... (viewer)", "Visualization"};

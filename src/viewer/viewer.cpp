@@ -14,6 +14,7 @@
 #include "imgui.h"
 #include "imgui_impl_glfw.h"
 #include "imgui_impl_opengl3.h"
+#include "render/draw_text.h"
 #include "render/material.h"
 #include "render/png_io.h"
 #include "viewer/picking.h"
@@ -144,6 +145,7 @@ bool ViewerApp::open_window(std::string* error) {
     samples = software ? 0 : 4;
   }
   gl = render::GlRenderer::create(std::max(fb_width(), 1), std::max(fb_height(), 1), samples, error);
+  if (gl) gl->set_font(render::find_font(options.data_paths));
   return gl != nullptr;
 }
 

@@ -1,5 +1,5 @@
 // Components that only a viewer application uses and Sinew's pictures do not draw: window and
-// GUI settings, on-screen text, the corner frame, the visual loop, a matrix image. Each has
+// GUI settings, the corner frame (drawn: see render), the visual loop, a matrix image. Each has
 // SOFA's Data (unknown attributes are reported as for any component) and does nothing in batch
 // runs; `sinew view` reads ViewerSetting's resolution.
 #include "core/registry.h"
@@ -14,40 +14,6 @@ namespace {
 
 // SOFA's DefaultVisualManagerLoop: runs the visual passes; Sinew's viewer and pictures do.
 class DefaultVisualManagerLoop final : public VisualComponent {};
-
-// OglLabel (Sofa.GL.Component.Rendering2D): a line of text on the screen.
-class OglLabel final : public VisualComponent {
- public:
-  Field<std::string> prefix{this, "prefix", "", "text before the label", "Visualization"};
-  Field<std::string> label{this, "label", "", "the text", "Visualization"};
-  Field<std::string> suffix{this, "suffix", "", "text after the label", "Visualization"};
-  Field<unsigned> x{this, "x", 10u, "horizontal position (pixels)", "Visualization"};
-  Field<unsigned> y{this, "y", 10u, "vertical position (pixels)", "Visualization"};
-  Field<unsigned> fontsize{this, "fontsize", 14u, "font size", "Visualization"};
-  Field<std::string> color{this, "color", "gray", "colour of the text", "Visualization"};
-  Field<bool> select_contrasting_color{this, "selectContrastingColor", false,
-                                       "a colour contrasting with the background instead", "Visualization"};
-  Field<unsigned> update_label_every_nb_steps{this, "updateLabelEveryNbSteps", 0u,
-                                              "update the text every this many steps", "Visualization"};
-  void parse(AttributeMap& attrs, Diagnostics& diag) override {
-    Component::parse(attrs, diag);
-    check_color_field(*this, color, diag);
-  }
-};
-
-// Visual3DText (Sofa.Component.Visual): text at a 3D position.
-class Visual3DText final : public VisualComponent {
- public:
-  Field<std::string> text{this, "text", "", "the text", "Visualization"};
-  Field<Vec3> position{this, "position", Vec3::Zero(), "where the text is", "Visualization", "length"};
-  Field<double> scale{this, "scale", 1.0, "size of the text", "Visualization"};
-  Field<std::string> color{this, "color", "1 1 1 1", "colour of the text", "Visualization"};
-  Field<bool> depth_test{this, "depthTest", true, "hide the text behind surfaces", "Visualization"};
-  void parse(AttributeMap& attrs, Diagnostics& diag) override {
-    Component::parse(attrs, diag);
-    check_color_field(*this, color, diag);
-  }
-};
 
 // ViewerSetting (Sofa.Component.Setting): the viewer window.
 class ViewerSetting final : public VisualComponent {
@@ -117,8 +83,6 @@ void add_viewer_component(Registry& r, const char* name, const char* what) {
 void register_viewer_only(Registry& r) {
   add_viewer_component<DefaultVisualManagerLoop>(r, "DefaultVisualManagerLoop", "visual update loop of the viewer");
   add_viewer_component<OglSceneFrame>(r, "OglSceneFrame", "axes drawn in a corner of the viewer");
-  add_viewer_component<OglLabel>(r, "OglLabel", "text label drawn by the viewer");
-  add_viewer_component<Visual3DText>(r, "Visual3DText", "3D text drawn by the viewer");
   add_viewer_component<ViewerSetting>(r, "ViewerSetting", "viewer window settings (resolution, fullscreen, picking method)");
   add_viewer_component<GlobalSystemMatrixImage>(r, "GlobalSystemMatrixImage", "image of a linear system's matrix (SofaMatrix plugin)");
   add_viewer_component<StatsSetting>(r, "StatsSetting", "statistics the GUI application prints or exports");

@@ -51,7 +51,13 @@ void VisualPointCloud::init() {
   if (draw_mode.value() == "Sphere" && radii > 1 && radii != n)
     msg_warning("sphereRadius has " + std::to_string(radii) + " radii for " + std::to_string(n) + " points: " +
                 (radii < n ? "the points past them take the last one" : "the extra radii are not used"));
-  if (show_indices.get()) msg_warning("showIndices: indices are not drawn (Sinew draws no text)");
+}
+
+Vec3 VisualPointCloud::centre(std::size_t i) const {
+  const FlatVec& x = position.get();
+  const int w = x.width;
+  const double* p = &x.data[i * static_cast<std::size_t>(w)];
+  return Vec3(p[0], w >= 2 ? p[1] : 0.0, (w == 3 && !rigid_) || w == 7 ? p[2] : 0.0);
 }
 
 void register_visual_point_cloud(Registry& r) {

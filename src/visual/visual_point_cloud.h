@@ -30,6 +30,9 @@ class VisualPointCloud final : public VisualComponent {
   void init() override;
   // Rigid3d / Rigid2d template: `position` holds frames (drawMode Frame allowed).
   bool rigid() const { return rigid_; }
+  // Where point i is drawn: Vec1 (x, 0, 0); Vec2 and Rigid2 (x, y, θ): (x, y, 0); Vec3 and
+  // Rigid3: the first three coordinates.
+  Vec3 centre(std::size_t i) const;
 
  private:
   bool rigid_;
