@@ -123,7 +123,7 @@ void add_texts(DrawList& list, Node& node, bool visual_models) {
     } else if (const auto* l = dynamic_cast<const OglLabel*>(o.get())) {
       if (!visual_models || !l->enable.get()) continue;
       Text& x = next_text(list, l, Text::Kind::overlay);
-      x.text = l->text();
+      l->text(x.text);
       if (x.text.empty()) {
         --list.texts_used;
         continue;

@@ -45,10 +45,10 @@ void OglLabel::handle_event(Event& e) {
   }
 }
 
-std::string OglLabel::text() const {
+void OglLabel::text(std::string& out) const {
   // Without updateLabelEveryNbSteps SOFA reads the label at every visual update.
   const std::string& shown = update_label_every_nb_steps.get() ? internal_label_ : label.get();
-  return prefix.get() + shown + suffix.get();
+  out.assign(prefix.get()).append(shown).append(suffix.get());
 }
 
 void register_ogl_label(Registry& r) {

@@ -38,8 +38,13 @@ class OglLabel final : public VisualComponent {
   bool wants_events() const override { return true; }
   void handle_event(Event& e) override;
 
-  // What is drawn: prefix + the label as last read + suffix.
-  std::string text() const;
+  // What is drawn: prefix + the label as last read + suffix (into `out`, its storage reused).
+  void text(std::string& out) const;
+  std::string text() const {
+    std::string s;
+    text(s);
+    return s;
+  }
   // The colour drawn (the contrasting one when selected).
   const Rgba& shown_color() const { return color_; }
 
