@@ -85,13 +85,14 @@ void model_vertices(const OglModel& m, std::vector<float>& out) {
   }
 }
 
-void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const ClipPlane* clip) {
+void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const ClipPlane* clip, bool shadow_shader) {
   if (!m.enable.get() || !m.is_enabled.get() || m.state() != ComponentState::valid) return;
   const auto& tris = m.triangles.get();
   const auto& quads = m.quads.get();
   if (tris.empty() && quads.empty()) return;
   Batch& b = next_batch(list, &m, Batch::Kind::triangles);
   b.wireframe = wireframe;
+  b.shadow_shader = shadow_shader;
   if (clip) {  // kept: (p - position)·normal <= 0, i.e. -normal·p + normal·position >= 0
     const Vec3 n = clip->normal.get(), at = clip->position.get();
     b.clip = {static_cast<float>(-n[0]), static_cast<float>(-n[1]), static_cast<float>(-n[2]),
@@ -242,8 +243,8 @@ void add_points(DrawList& list, const MechanicalState& state) {
 // SOFA's visual traversal (tree order without repetition): a node is drawn
 // once, reached through the first of its parents visited, with that parent's
 // display flags. `seen` lists the nodes with several parents already drawn.
-void visit(Node& node, const DisplayFlags& inherited, const ClipPlane* inherited_clip, DrawList& list,
-           std::vector<float>& scratch, std::vector<const MechanicalState*>& deferred,
+void visit(Node& node, const DisplayFlags& inherited, const ClipPlane* inherited_clip, bool shadow_shader,
+           DrawList& list, std::vector<float>& scratch, std::vector<const MechanicalState*>& deferred,
            std::vector<const Node*>& seen) {
   if (!node.activated.value()) return;
   if (node.parents().size() > 1) {
@@ -259,11 +260,14 @@ void visit(Node& node, const DisplayFlags& inherited, const ClipPlane* inherited
   for (const auto& o : node.objects())
     if (const auto* c = dynamic_cast<const ClipPlane*>(o.get()))
       if (c->active.get() && c->state() == ComponentState::valid) clip = c;
+  // SOFA draws a node's models with the nearest shader of the node or above (getShader()).
+  for (const auto& o : node.objects())
+    if (o->class_name() == "OglShadowShader" && o->state() == ComponentState::valid) shadow_shader = true;
 
   if (flags.shown(DisplayFlags::visual_models))
     for (const auto& o : node.objects())
       if (const auto* m = dynamic_cast<const OglModel*>(o.get()))
-        add_visual_model(list, *m, flags.shown(DisplayFlags::wireframe), clip);
+        add_visual_model(list, *m, flags.shown(DisplayFlags::wireframe), clip, shadow_shader);
   if (flags.shown(DisplayFlags::visual_models)) add_visual_extras(list, node);
   add_texts(list, node, flags.shown(DisplayFlags::visual_models));
 
@@ -293,7 +297,7 @@ void visit(Node& node, const DisplayFlags& inherited, const ClipPlane* inherited
       else deferred.push_back(state);
     }
   }
-  for (Node* child : node.children()) visit(*child, flags, clip, list, scratch, deferred, seen);
+  for (Node* child : node.children()) visit(*child, flags, clip, shadow_shader, list, scratch, deferred, seen);
 }
 
 }  // namespace
@@ -350,7 +354,7 @@ void gather(Node& root, DrawList& out) {
   thread_local std::vector<const Node*> seen;
   deferred.clear();
   seen.clear();
-  visit(root, DisplayFlags::viewer_defaults(), nullptr, out, scratch, deferred, seen);
+  visit(root, DisplayFlags::viewer_defaults(), nullptr, false, out, scratch, deferred, seen);
   out.frame.on = false;
   if (const OglSceneFrame* f = root.find_down<OglSceneFrame>(); f && f->draw.get() && f->state() == ComponentState::valid) {
     static const char* const kStyles[] = {"Arrows", "Cylinders", "CubeCones"};
@@ -366,10 +370,16 @@ void gather(Node& root, DrawList& out) {
   l.lights.clear();
   const LightManager* lm = root.find_down<LightManager>();
   l.from_scene = lm && lm->state() == ComponentState::valid;
+  l.shadows = l.from_scene && lm->shadows.get();
+  l.soft_shadows = l.shadows && lm->soft_shadows.get();
   if (l.from_scene) {
     l.ambient = parse_rgba(lm->ambient.get()).value_or(Rgba{0, 0, 0, 0});
     for (const Light* light : lm->lights())
-      if (light->state() == ComponentState::valid) l.lights.push_back(light->source());
+      if (light->state() == ComponentState::valid) {
+        l.lights.push_back(light->source());
+        l.lights.back().shadows = l.shadows;  // SOFA's Light::init links them to the manager's
+        l.lights.back().soft = l.soft_shadows;
+      }
   }
   bool surfaces = false;
   for (std::size_t i = 0; i < out.used; ++i) surfaces |= out.batches[i].kind == Batch::Kind::triangles;

@@ -70,6 +70,9 @@ struct Batch {
   // ClipPlane over the model (visual models only): a vertex p is kept where
   // clip·(p, 1) >= 0 (gl_ClipDistance); (0, 0, 0, 1) keeps everything.
   std::array<float, 4> clip{0.f, 0.f, 0.f, 1.f};
+  // A visual model under an OglShadowShader (its node or an ancestor): shaded as SOFA's
+  // shadow-mapping shaders do (Lighting::shadows adds the lights' shadow maps).
+  bool shadow_shader = false;
   // The texts `shading` was parsed from (a model's material and colour, a box's colour), so
   // that it is parsed again only when they change. Texts rather than field versions: a
   // component of another scene can take a freed component's address with the same version.
@@ -82,6 +85,7 @@ struct Batch {
 // viewer's headlight is used.
 struct Lighting {
   bool from_scene = false;
+  bool shadows = false, soft_shadows = false;  // the LightManager's shadows and softShadows
   Rgba ambient{0, 0, 0, 0};  // LightManager's ambient (GL_LIGHT_MODEL_AMBIENT)
   std::vector<LightSource> lights;
 };

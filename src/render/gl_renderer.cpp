@@ -12,6 +12,7 @@
 #include "render/draw_shapes.h"
 #include "render/draw_text.h"
 #include "render/image_file.h"
+#include "render/shadow_maps.h"
 
 namespace sinew::render {
 
@@ -32,7 +33,9 @@ out vec3 v_eye;
 out vec3 v_normal;
 out vec4 v_color;
 out vec2 v_texcoord;
+out vec3 v_world;
 void main() {
+  v_world = a_position;
   vec4 eye = u_view * vec4(a_position, 1.0);
   v_eye = eye.xyz;
   v_normal = mat3(u_view) * a_normal;  // the view is rigid: no inverse transpose needed
@@ -79,7 +82,95 @@ uniform float u_light_exp[kMaxLights];
 uniform float u_light_att[kMaxLights];    // linear attenuation (constant 1, quadratic 0)
 uniform float u_splat_alpha;
 uniform sampler2D u_texture;
+in vec3 v_world;
+// SOFA's shadow-mapping shaders (models under an OglShadowShader, docs/render.md): one-sided,
+// ambient = the LightManager's ambient times the material's; a spot shines in a smoothstep of
+// its cone (soft-shadow variant: to the spot's exponent) without attenuation; a directional
+// light shines along its direction, without specular; a positional light gives nothing. A
+// fragment in a light's shadow keeps (1 - shadowFactor) of that light.
+uniform bool u_sofa_shadow;
+uniform bool u_vsm;
+uniform int u_light_type[kMaxLights];      // 0 directional, 1 positional, 2 spot
+uniform vec3 u_light_dir_eye[kMaxLights];  // directional: the way the light travels (eye space)
+uniform bool u_shadow_on[kMaxLights];
+uniform mat4 u_light_vp[kMaxLights];
+uniform bool u_light_persp[kMaxLights];
+uniform float u_light_far[kMaxLights];
+uniform float u_shadow_factor[kMaxLights];
+uniform float u_vsm_bleeding[kMaxLights];
+uniform float u_vsm_min_var[kMaxLights];
+uniform float u_shadow_texel[kMaxLights];
+uniform sampler2D u_shadow_map0;
+uniform sampler2D u_shadow_map1;
+uniform sampler2D u_shadow_map2;
+uniform sampler2D u_shadow_map3;
+uniform sampler2D u_shadow_map4;
+uniform sampler2D u_shadow_map5;
+uniform sampler2D u_shadow_map6;
+uniform sampler2D u_shadow_map7;
 out vec4 frag_color;
+// GLSL 3.30 indexes sampler arrays by constants only.
+vec2 shadow_moments(int i, vec2 uv) {
+  if (i == 0) return texture(u_shadow_map0, uv).xy;
+  if (i == 1) return texture(u_shadow_map1, uv).xy;
+  if (i == 2) return texture(u_shadow_map2, uv).xy;
+  if (i == 3) return texture(u_shadow_map3, uv).xy;
+  if (i == 4) return texture(u_shadow_map4, uv).xy;
+  if (i == 5) return texture(u_shadow_map5, uv).xy;
+  if (i == 6) return texture(u_shadow_map6, uv).xy;
+  return texture(u_shadow_map7, uv).xy;
+}
+// 1: lit by light i, 0: in its shadow (soft shadows: between).
+float shadow_term(int i) {
+  vec4 c = u_light_vp[i] * vec4(v_world, 1.0);
+  if (c.w <= 0.0) return 1.0;
+  vec3 p = c.xyz / c.w;
+  vec2 uv = 0.5 * p.xy + 0.5;
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+  float d = u_light_persp[i] ? c.w / u_light_far[i] : 0.5 * p.z + 0.5;
+  if (!u_vsm) return d > shadow_moments(i, uv).x + 0.002 ? 0.0 : 1.0;
+  // Variance shadow map: its moments averaged over 5 x 5 texels (SOFA blurs the map), then
+  // Chebyshev's bound with the minimal variance and the light-bleeding reduction.
+  vec2 m = vec2(0.0);
+  for (int y = -2; y <= 2; ++y)
+    for (int x = -2; x <= 2; ++x) m += shadow_moments(i, uv + vec2(x, y) * u_shadow_texel[i]);
+  m /= 25.0;
+  float lit = d <= m.x ? 1.0 : 0.0;
+  float variance = max(m.y - m.x * m.x, u_vsm_min_var[i]);
+  float dd = d - m.x;
+  return smoothstep(u_vsm_bleeding[i], 1.0, max(lit, variance / (variance + dd * dd)));
+}
+vec3 sofa_shadow_shading(vec3 n, vec3 base, vec3 tex, out bool has_light) {
+  vec3 c = u_global_ambient * (u_ambient.rgb + u_color_ambient * base);
+  has_light = false;
+  for (int i = 0; i < u_nlights; ++i) {
+    has_light = true;
+    int t = u_light_type[i];
+    if (t == 1) continue;
+    vec3 L = t == 0 ? -u_light_dir_eye[i] : normalize(u_light_pos[i].xyz - v_eye);
+    float ndl = max(dot(n, L), 0.0);
+    if (ndl <= 0.0) continue;
+    float shadow = u_shadow_on[i] ? shadow_term(i) : 1.0;
+    vec3 light = u_light_color[i];
+    if (t == 2) {
+      float cosc = u_light_cos[i] < -1.5 ? -1.0 : u_light_cos[i];
+      float se = dot(normalize(u_light_spot[i]), -L);
+      if (se <= cosc) continue;
+      se = smoothstep(cosc, 1.0, se);
+      if (u_vsm) se = pow(se, u_light_exp[i]);
+      float k = se;
+      if (shadow < 1.0) k *= shadow + (1.0 - u_shadow_factor[i]);
+      if (u_vsm) k = min(k, se);
+      vec3 h = normalize(normalize(u_light_pos[i].xyz) + vec3(0.0, 0.0, 1.0));
+      c += k * base * light * ndl * tex + k * u_specular.rgb * light * pow(max(dot(n, h), 0.0), u_shininess);
+    } else {
+      vec3 dl = base * light * ndl;
+      if (shadow < 0.99) dl *= shadow + (1.0 - u_shadow_factor[i]);
+      c += dl * tex;
+    }
+  }
+  return c;
+}
 void main() {
   if (u_splat != 0) {
     vec2 q = gl_PointCoord * 2.0 - 1.0;
@@ -96,6 +187,14 @@ void main() {
     return;
   }
   if (!u_lit) { frag_color = vec4(v_color.rgb, 1.0); return; }
+  if (u_sofa_shadow) {
+    // Without a LightManager SOFA's shader has no light and draws the material's diffuse colour.
+    vec3 tex = u_textured ? texture(u_texture, v_texcoord).rgb : vec3(1.0);
+    bool has_light;
+    vec3 c = sofa_shadow_shading(normalize(v_normal), v_color.rgb, tex, has_light);
+    frag_color = vec4(min(has_light ? c : v_color.rgb, vec3(1.0)), u_translucent ? v_color.a : 1.0);
+    return;
+  }
   vec3 n = normalize(v_normal);
   vec3 to_eye = normalize(-v_eye);
   float d = dot(n, to_eye);
@@ -143,6 +242,29 @@ void main() {
     alpha = v_color.a;
   }
   frag_color = vec4(min(c, vec3(1.0)), u_translucent ? alpha : 1.0);
+}
+)";
+
+// A light's shadow map (render/shadow_maps.h): the depth it sees and its square (the moments
+// of SOFA's variance shadow maps; hard shadows read the first).
+const char* kShadowVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+uniform mat4 u_light_vp;
+out vec4 v_clip;
+void main() {
+  v_clip = u_light_vp * vec4(a_position, 1.0);
+  gl_Position = v_clip;
+}
+)";
+
+const char* kShadowFragmentShader = R"(#version 330 core
+in vec4 v_clip;
+uniform bool u_persp;
+uniform float u_far;
+out vec4 frag_color;
+void main() {
+  float d = u_persp ? v_clip.w / u_far : 0.5 * v_clip.z / v_clip.w + 0.5;
+  frag_color = vec4(d, d * d, 0.0, 1.0);
 }
 )";
 
@@ -242,6 +364,8 @@ std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int sample
   if (!r->program_) return nullptr;
   r->text_program_ = link(kTextVertexShader, kTextFragmentShader, error);
   if (!r->text_program_) return nullptr;
+  r->shadow_program_ = link(kShadowVertexShader, kShadowFragmentShader, error);
+  if (!r->shadow_program_) return nullptr;
   glUseProgram(r->text_program_);
   glUniform1i(glGetUniformLocation(r->text_program_, "u_font"), 0);  // texture unit 0
   const unsigned p = r->program_;
@@ -270,8 +394,11 @@ std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int sample
   r->u_light_cos_ = glGetUniformLocation(p, "u_light_cos");
   r->u_light_exp_ = glGetUniformLocation(p, "u_light_exp");
   r->u_light_att_ = glGetUniformLocation(p, "u_light_att");
+  r->u_sofa_shadow_ = glGetUniformLocation(p, "u_sofa_shadow");
   glUseProgram(p);
   glUniform1i(glGetUniformLocation(p, "u_texture"), 0);  // texture unit 0
+  for (int i = 0; i < static_cast<int>(LightManager::kMaxLights); ++i)  // units 1 to 8
+    glUniform1i(glGetUniformLocation(p, ("u_shadow_map" + std::to_string(i)).c_str()), 1 + i);
   return r;
 }
 
@@ -348,6 +475,12 @@ GlRenderer::~GlRenderer() {
     if (t.second) glDeleteTextures(1, &t.second);
   if (program_) glDeleteProgram(program_);
   if (text_program_) glDeleteProgram(text_program_);
+  if (shadow_program_) glDeleteProgram(shadow_program_);
+  for (ShadowMap& m : shadow_maps_) {
+    if (m.fbo) glDeleteFramebuffers(1, &m.fbo);
+    if (m.texture) glDeleteTextures(1, &m.texture);
+    if (m.depth) glDeleteRenderbuffers(1, &m.depth);
+  }
   if (text_vao_) glDeleteVertexArrays(1, &text_vao_);
   if (text_vbo_) glDeleteBuffers(1, &text_vbo_);
   release_framebuffers();
@@ -377,6 +510,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
     glGenBuffers(1, &g.ebo);
     gpu_.push_back(g);
   }
+  set_shadows(list, view);
   // SOFA's two visual passes: opaque models in graph order, then translucent ones.
   for (std::size_t i = 0; i < list.used; ++i)
     if (!list.batches[i].translucent) draw_batch(list.batches[i], gpu_[i]);
@@ -453,6 +587,7 @@ void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {
     glUniform1f(u_color_ambient_, b.color_ambient);
     glUniform1f(u_point_size_, b.point_size);
     glUniform4fv(u_clip_, 1, b.clip.data());
+    glUniform1i(u_sofa_shadow_, b.shadow_shader ? 1 : 0);
     const unsigned texture = b.texture.empty() ? 0 : texture_for(b.texture);
     if (texture && b.texcoords.size() == b.vertex_count() * 2) {
       upload(GL_ARRAY_BUFFER, g.vbo[3], b.texcoords.data(), b.texcoords.size() * sizeof(float), g.capacity[4]);
@@ -587,6 +722,119 @@ void GlRenderer::sort_back_to_front(const Batch& b) {
   std::sort(order_.begin(), order_.end(), [&](unsigned a, unsigned c) {
     return depth_[a] < depth_[c] || (depth_[a] == depth_[c] && a < c);
   });
+}
+
+void GlRenderer::set_shadows(const DrawList& list, const View& view) {
+  const Lighting& l = list.lighting;
+  const int n = l.from_scene ? static_cast<int>(std::min<std::size_t>(l.lights.size(), LightManager::kMaxLights)) : 0;
+  bool shaded = false;
+  for (std::size_t i = 0; i < list.used; ++i) shaded |= list.batches[i].shadow_shader;
+  if (!shaded) return;  // nothing drawn with SOFA's shadow shader: no uniform read
+  constexpr int kMax = static_cast<int>(LightManager::kMaxLights);
+  int type[kMax] = {}, on[kMax] = {}, persp[kMax] = {};
+  float dir[3 * kMax] = {}, far[kMax] = {}, factor[kMax] = {}, bleed[kMax] = {}, minvar[kMax] = {},
+        texel[kMax] = {}, vp[16 * kMax] = {};
+  const Eigen::Matrix3f rot = view.view.topLeftCorner<3, 3>();
+  for (int i = 0; i < n; ++i) {
+    const LightSource& s = l.lights[i];
+    type[i] = static_cast<int>(s.type);
+    const Eigen::Vector3f d = (rot * Eigen::Vector3f(static_cast<float>(s.position[0]), static_cast<float>(s.position[1]),
+                                                      static_cast<float>(s.position[2])))
+                                  .normalized();
+    for (int k = 0; k < 3; ++k) dir[3 * i + k] = d[k];
+    factor[i] = s.shadow_factor, bleed[i] = s.vsm_light_bleeding, minvar[i] = s.vsm_min_variance;
+    if (!s.shadows) continue;
+    const std::optional<LightView> lv = light_view(s, list.min, list.max);
+    if (!lv) continue;
+    const int size = shadow_map_size(s.texture_size, width_, height_);
+    if (!shadow_map(i, size)) continue;
+    render_shadow_map(list, *lv, shadow_maps_[i]);
+    on[i] = 1, persp[i] = lv->perspective ? 1 : 0, far[i] = lv->far, texel[i] = 1.f / static_cast<float>(size);
+    std::copy(lv->view_projection.data(), lv->view_projection.data() + 16, vp + 16 * i);
+  }
+  // Back to the picture.
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glViewport(0, 0, width_, height_);
+  glUseProgram(program_);
+  const auto loc = [this](const char* name) { return glGetUniformLocation(program_, name); };
+  glUniform1i(loc("u_vsm"), l.soft_shadows ? 1 : 0);
+  if (n > 0) {
+    glUniform1iv(loc("u_light_type"), n, type);
+    glUniform3fv(loc("u_light_dir_eye"), n, dir);
+    glUniform1iv(loc("u_shadow_on"), n, on);
+    glUniformMatrix4fv(loc("u_light_vp"), n, GL_FALSE, vp);
+    glUniform1iv(loc("u_light_persp"), n, persp);
+    glUniform1fv(loc("u_light_far"), n, far);
+    glUniform1fv(loc("u_shadow_factor"), n, factor);
+    glUniform1fv(loc("u_vsm_bleeding"), n, bleed);
+    glUniform1fv(loc("u_vsm_min_var"), n, minvar);
+    glUniform1fv(loc("u_shadow_texel"), n, texel);
+  }
+  for (int i = 0; i < n; ++i)
+    if (on[i]) {
+      glActiveTexture(GL_TEXTURE1 + i);
+      glBindTexture(GL_TEXTURE_2D, shadow_maps_[i].texture);
+    }
+  glActiveTexture(GL_TEXTURE0);
+}
+
+bool GlRenderer::shadow_map(int i, int size) {
+  ShadowMap& m = shadow_maps_[i];
+  if (m.fbo && m.size == size) return true;
+  if (!m.fbo) {
+    glGenFramebuffers(1, &m.fbo);
+    glGenTextures(1, &m.texture);
+    glGenRenderbuffers(1, &m.depth);
+  }
+  glBindTexture(GL_TEXTURE_2D, m.texture);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, size, size, 0, GL_RG, GL_FLOAT, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindRenderbuffer(GL_RENDERBUFFER, m.depth);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size, size);
+  glBindFramebuffer(GL_FRAMEBUFFER, m.fbo);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m.texture, 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m.depth);
+  m.size = size;
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    if (!shadow_warned_) std::fprintf(stderr, "sinew: shadows not drawn: no %dx%d shadow map framebuffer\n", size, size);
+    shadow_warned_ = true;
+    m.size = 0;
+    return false;
+  }
+  return true;
+}
+
+void GlRenderer::render_shadow_map(const DrawList& list, const LightView& lv, ShadowMap& m) {
+  glBindFramebuffer(GL_FRAMEBUFFER, m.fbo);
+  glViewport(0, 0, m.size, m.size);
+  glClearColor(1.f, 1.f, 0.f, 0.f);  // nothing seen: as far as can be
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glUseProgram(shadow_program_);
+  glUniformMatrix4fv(glGetUniformLocation(shadow_program_, "u_light_vp"), 1, GL_FALSE, lv.view_projection.data());
+  glUniform1i(glGetUniformLocation(shadow_program_, "u_persp"), lv.perspective ? 1 : 0);
+  glUniform1f(glGetUniformLocation(shadow_program_, "u_far"), lv.far);
+  glDisable(GL_CLIP_DISTANCE0);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  // Every visual model casts a shadow (SOFA draws them all in its shadow pass).
+  for (std::size_t i = 0; i < list.used; ++i) {
+    const Batch& b = list.batches[i];
+    if (b.kind != Batch::Kind::triangles || b.positions.empty()) continue;
+    GpuBatch& g = gpu_[i];
+    glBindVertexArray(g.vao);
+    upload(GL_ARRAY_BUFFER, g.vbo[0], b.positions.data(), b.positions.size() * sizeof(float), g.capacity[0]);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(0);
+    if (!b.indices.empty()) {
+      upload(GL_ELEMENT_ARRAY_BUFFER, g.ebo, b.indices.data(), b.indices.size() * sizeof(unsigned), g.capacity[3]);
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.indices.size()), GL_UNSIGNED_INT, nullptr);
+    } else {
+      glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(b.vertex_count()));
+    }
+  }
+  glEnable(GL_CLIP_DISTANCE0);
 }
 
 void GlRenderer::draw_texts(const DrawList& list, const View& view) {

@@ -19,6 +19,8 @@
 
 namespace sinew::render {
 
+struct LightView;
+
 class GlRenderer {
  public:
   // nullptr and *error when the framebuffer or the program cannot be made.
@@ -65,6 +67,20 @@ class GlRenderer {
   Batch frame_batch_;
   int frame_style_ = -1;
   std::unique_ptr<GpuBatch> frame_gpu_;
+  // Shadows of SOFA's shadow-mapping shaders (render/shadow_maps.h): each spot or directional
+  // light's map rendered from the light when the LightManager asks for shadows, and the
+  // uniforms of the shading; nothing when no model is under an OglShadowShader.
+  struct ShadowMap {
+    unsigned fbo = 0, texture = 0, depth = 0;
+    int size = 0;
+  };
+  void set_shadows(const DrawList& list, const View& view);
+  bool shadow_map(int i, int size);  // map i made (or resized) to size × size
+  void render_shadow_map(const DrawList& list, const LightView& lv, ShadowMap& m);
+  unsigned shadow_program_ = 0;
+  int u_sofa_shadow_ = -1;
+  ShadowMap shadow_maps_[8];
+  bool shadow_warned_ = false;
   // The list's texts over the models (depth-tested ones first), blended, alpha kept.
   void draw_texts(const DrawList& list, const View& view);
   unsigned text_program_ = 0, text_vao_ = 0, text_vbo_ = 0;

@@ -13,9 +13,7 @@ void LightManager::parse(AttributeMap& attrs, Diagnostics& diag) {
   check_color_field(*this, ambient, diag);
 }
 
-void LightManager::init() {
-  if (shadows.get()) msg_warning("shadows are not drawn: the scene is lit without them");
-}
+void LightManager::init() {}
 
 bool LightManager::put_light(const Light& l) {
   for (const Light* k : lights_)
@@ -47,12 +45,18 @@ LightSource Light::source() const {
   LightSource s;
   const Rgba c = parse_rgba(color.get()).value_or(Rgba{1, 1, 1, 1});
   s.color[0] = c[0], s.color[1] = c[1], s.color[2] = c[2];
+  s.texture_size = shadow_texture_size.get();
+  s.z_near = z_near.get(), s.z_far = z_far.get();
+  s.shadow_factor = static_cast<float>(shadow_factor.get());
+  s.vsm_light_bleeding = static_cast<float>(vsm_light_bleeding.get());
+  s.vsm_min_variance = static_cast<float>(vsm_min_variance.get());
   return s;
 }
 
 LightSource DirectionalLight::source() const {
   LightSource s = Light::source();
   const Vec3 d = direction.get();
+  s.type = LightSource::Type::directional;
   s.position[0] = d.x(), s.position[1] = d.y(), s.position[2] = d.z(), s.position[3] = 0;
   return s;
 }
@@ -60,6 +64,7 @@ LightSource DirectionalLight::source() const {
 LightSource PositionalLight::source() const {
   LightSource s = Light::source();
   const Vec3 p = position.get();
+  s.type = LightSource::Type::positional;
   s.position[0] = p.x(), s.position[1] = p.y(), s.position[2] = p.z(), s.position[3] = 1;
   s.linear_attenuation = static_cast<float>(attenuation.get());
   return s;
@@ -80,6 +85,7 @@ void SpotLight::parse(AttributeMap& attrs, Diagnostics& diag) {
 
 LightSource SpotLight::source() const {
   LightSource s = PositionalLight::source();
+  s.type = LightSource::Type::spot;
   Vec3 d = direction.get();
   if (lookat.get()) d -= position.get();
   if (d.norm() > 0) d.normalize();

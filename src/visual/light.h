@@ -5,8 +5,9 @@
 // OpenGL lights: each light's colour is its ambient, diffuse and specular intensity; a
 // position or direction is in world coordinates (SOFA sets them under the camera's modelview;
 // PositionalLight's `fixed` changes the projection matrix, which OpenGL does not apply to
-// light positions, so it has no effect there and none here). Shadows (shadows, softShadows,
-// shadowTextureSize, zNear, zFar, shadowFactor, VSM*, textureUnit) are accepted and not drawn.
+// light positions, so it has no effect there and none here). Shadows: models under an
+// OglShadowShader are shaded as SOFA's shadow-mapping shaders do, with shadow maps of the spot
+// and directional lights when the LightManager's `shadows` is on (src/render, docs/render.md).
 #pragma once
 
 #include <string>
@@ -22,8 +23,8 @@ class LightManager final : public VisualComponent {
  public:
   static constexpr std::size_t kMaxLights = 8;
 
-  Field<bool> shadows{this, "shadows", false, "enable shadows (not drawn)", "Visualization"};
-  Field<bool> soft_shadows{this, "softShadows", false, "variance soft shadows (not drawn)", "Visualization"};
+  Field<bool> shadows{this, "shadows", false, "shadows of the spot and directional lights on models under an OglShadowShader", "Visualization"};
+  Field<bool> soft_shadows{this, "softShadows", false, "soft shadows (variance shadow maps)", "Visualization"};
   Field<std::string> ambient{this, "ambient", "0 0 0 0", "global ambient light (GL_LIGHT_MODEL_AMBIENT)",
                              "Visualization"};
   Field<bool> debug_draw{this, "debugDraw", false, "draw the lights' shadow textures (not drawn)", "Visualization"};
@@ -40,30 +41,40 @@ class LightManager final : public VisualComponent {
 };
 
 // A light as the renderer uses it: world position (w = 1) or direction towards the light
-// (w = 0), colour, and for spots the direction, cut-off (degrees; 180: no cone) and exponent.
+// (w = 0), colour, and for spots the direction, cut-off (degrees; 180: no cone) and exponent;
+// its shadow parameters (used under an OglShadowShader).
 struct LightSource {
+  enum class Type { directional = 0, positional = 1, spot = 2 };  // SOFA's getLightType()
+  Type type = Type::directional;
   double position[4] = {0, 0, 1, 0};
   float color[3] = {1, 1, 1};
   double spot_direction[3] = {0, 0, -1};
   float cutoff = 180.f, exponent = 0.f, linear_attenuation = 0.f;
+  // Shadows: on when the LightManager's `shadows` is (SOFA links each light's shadowsEnabled
+  // and softShadows to its LightManager's); shadow map size (0: from the picture's size) and
+  // the light view's near and far planes (0: fitted to the scene).
+  bool shadows = false, soft = false;
+  unsigned texture_size = 0;
+  double z_near = 0, z_far = 0;
+  float shadow_factor = 1.f, vsm_light_bleeding = 0.05f, vsm_min_variance = 0.001f;
 };
 
 class Light : public VisualComponent {
  public:
   Field<std::string> color{this, "color", "1 1 1 1", "colour (intensity) of the light", "Visualization"};
-  Field<unsigned> shadow_texture_size{this, "shadowTextureSize", 0u, "size of the shadow texture (not drawn)",
+  Field<unsigned> shadow_texture_size{this, "shadowTextureSize", 0u, "size of the shadow map (0: from the picture's size)",
                                       "Visualization"};
   Field<bool> draw_source{this, "drawSource", false, "draw the light source", "Visualization"};
-  Field<double> z_near{this, "zNear", 0.0, "near plane of the shadow view (not drawn)", "Visualization"};
-  Field<double> z_far{this, "zFar", 0.0, "far plane of the shadow view (not drawn)", "Visualization"};
-  Field<bool> shadows_enabled{this, "shadowsEnabled", true, "shadows from this light (not drawn)", "Visualization"};
-  Field<bool> soft_shadows{this, "softShadows", false, "soft shadows from this light (not drawn)", "Visualization"};
-  Field<double> shadow_factor{this, "shadowFactor", 1.0, "darkness of the shadows (not drawn)", "Visualization"};
-  Field<double> vsm_light_bleeding{this, "VSMLightBleeding", 0.05, "variance shadow maps' light bleeding (not drawn)",
+  Field<double> z_near{this, "zNear", 0.0, "near plane of the light's shadow view (0: fitted to the scene)", "Visualization"};
+  Field<double> z_far{this, "zFar", 0.0, "far plane of the light's shadow view (0: fitted to the scene)", "Visualization"};
+  Field<bool> shadows_enabled{this, "shadowsEnabled", true, "shadows from this light (taken from the LightManager's shadows, as SOFA)", "Visualization"};
+  Field<bool> soft_shadows{this, "softShadows", false, "soft shadows (taken from the LightManager's softShadows, as SOFA)", "Visualization"};
+  Field<double> shadow_factor{this, "shadowFactor", 1.0, "darkness of the shadows (1: no direct light in them)", "Visualization"};
+  Field<double> vsm_light_bleeding{this, "VSMLightBleeding", 0.05, "soft shadows: light-bleeding reduction",
                                    "Visualization"};
-  Field<double> vsm_min_variance{this, "VSMMinVariance", 0.001, "variance shadow maps' minimal variance (not drawn)",
+  Field<double> vsm_min_variance{this, "VSMMinVariance", 0.001, "soft shadows: minimal variance",
                                  "Visualization"};
-  Field<unsigned> texture_unit{this, "textureUnit", 1u, "texture unit of the shadow texture (not drawn)",
+  Field<unsigned> texture_unit{this, "textureUnit", 1u, "texture unit of the shadow map (SOFA's; not needed here)",
                                "Visualization"};
   Field<std::vector<double>> model_view_matrix{this, "modelViewMatrix", {}, "the light's view matrix (output)",
                                                "Visualization"};
