@@ -348,6 +348,7 @@ void compute_normals(const std::vector<float>& xs, const std::vector<Triangle>& 
 void gather(Node& root, DrawList& out) {
   out.used = 0;
   out.texts_used = 0;
+  out.overlay_rects.clear();
   out.has_bounds = false;
   thread_local std::vector<float> scratch;
   thread_local std::vector<const MechanicalState*> deferred;

@@ -114,6 +114,9 @@ struct DrawList {
   std::vector<Batch> batches;
   std::vector<Text> texts;  // texts[0, texts_used) are this frame's, drawn over the models
   std::size_t texts_used = 0;
+  // Rectangles over the picture before its overlay texts (OglColorMap's legend bar): pixels
+  // x0 y0 x1 y1 (y down from the top) then r g b a, 8 floats each.
+  std::vector<float> overlay_rects;
   Lighting lighting;
   SceneFrame frame;
   std::size_t used = 0;  // batches[0, used) are this frame's

@@ -1,13 +1,17 @@
 #include "render/draw_text.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
 #include "core/node.h"
 #include "render/camera_view.h"
 #include "render/draw_collision.h"
+#include "visual/background_setting.h"
 #include "visual/color.h"
+#include "visual/ogl_color_map.h"
 #include "visual/ogl_label.h"
 #include "visual/visual_3d_text.h"
 #include "visual/visual_point_cloud.h"
@@ -89,6 +93,53 @@ void glyph_row(const std::string& text, float x0, float top, float w, float h, c
   }
 }
 
+Text& overlay_text(DrawList& list, const Component* source, const char* text, float x, float y, float size,
+                   const Rgba& color) {
+  Text& t = next_text(list, source, Text::Kind::overlay);
+  t.text.assign(text);
+  t.anchor = Vec3(x, y, 0);
+  t.size = size;
+  t.color = color;
+  t.depth_test = false;
+  return t;
+}
+
+// OglColorMap::doDrawVisual's legend.
+void add_legend(DrawList& list, const OglColorMap& map, Node& node) {
+  const std::vector<Rgba>& palette = map.palette();
+  if (palette.empty()) return;
+  const float ox = static_cast<float>(map.legend_offset.get().x()), oy = static_cast<float>(map.legend_offset.get().y());
+  const std::string& title = map.legend_title.get();
+  const float y0 = title.empty() ? 0.f : 2.f * static_cast<float>(map.legend_size.get());
+  // The bar, a row of pixels at a time: t from 1 at the top to 0 at the bottom, sampled
+  // linearly between texel centres, repeating past the ends (the texture's default wrap).
+  const int n = static_cast<int>(palette.size());
+  constexpr int kRows = 100;
+  for (int r = 0; r < kRows; ++r) {
+    const double t = 1.0 - (r + 0.5) / kRows, u = t * n - 0.5, f = u - std::floor(u);
+    const int i0 = ((static_cast<int>(std::floor(u)) % n) + n) % n, i1 = (i0 + 1) % n;
+    float c[3];
+    for (int k = 0; k < 3; ++k) c[k] = static_cast<float>((1 - f) * palette[i0][k] + f * palette[i1][k]);
+    const float top = oy + y0 + 20.f + static_cast<float>(r);
+    list.overlay_rects.insert(list.overlay_rects.end(), {ox + 10.f, top, ox + 20.f, top + 1.f, c[0], c[1], c[2], 1.f});
+  }
+  Rgba background{0, 0, 0, 1};  // the viewer's default
+  if (const auto* bg = node.root()->find_down<BackgroundSetting>())
+    background = parse_rgba(bg->color.get()).value_or(background);
+  const float luminance = 0.212f * background[0] + 0.715f * background[1] + 0.072f * background[2];
+  const Rgba color = luminance > 0.5f ? Rgba{0, 0, 0, 1} : Rgba{1, 1, 1, 1};
+  if (!title.empty())
+    overlay_text(list, &map, title.c_str(), std::floor(ox), std::floor(oy), static_cast<float>(map.legend_size.get()),
+                 color);
+  // As SOFA's ostream << float: the float value, 6 significant digits.
+  char text[64];
+  const float scale = static_cast<float>(map.legend_range_scale.get());
+  std::snprintf(text, sizeof text, "%g", static_cast<double>(static_cast<float>(map.max.get()) * scale));
+  overlay_text(list, &map, text, std::floor(ox), y0 + std::floor(oy), 12.f, color);
+  std::snprintf(text, sizeof text, "%g", static_cast<double>(static_cast<float>(map.min.get()) * scale));
+  overlay_text(list, &map, text, std::floor(ox), y0 + 120.f + std::floor(oy), 12.f, color);
+}
+
 }  // namespace
 
 std::string find_font(const std::vector<std::string>& data_paths) {
@@ -132,6 +183,8 @@ void add_texts(DrawList& list, Node& node, bool visual_models) {
       x.size = static_cast<float>(l->fontsize.get());
       x.color = l->shown_color();
       x.depth_test = false;
+    } else if (const auto* cm = dynamic_cast<const OglColorMap*>(o.get())) {
+      if (visual_models && cm->show_legend.get()) add_legend(list, *cm, node);
     } else if (const auto* pc = dynamic_cast<const VisualPointCloud*>(o.get())) {
       if (!visual_models || !pc->enable.get() || !pc->show_indices.get()) continue;
       const FlatVec& p = pc->position.get();
@@ -163,6 +216,20 @@ void add_texts(DrawList& list, Node& node, bool visual_models) {
   if (color)
     for (std::size_t c = 0; c < 4 && c < color->get().size(); ++c) x.color[c] = static_cast<float>(color->get()[c]);
   x.depth_test = true;
+}
+
+void rect_vertices(const DrawList& list, int width, int height, std::vector<float>& out) {
+  if (width <= 0 || height <= 0) return;
+  const float w = static_cast<float>(width), h = static_cast<float>(height);
+  const auto clip = [w, h](float x, float y) -> Eigen::Vector4f { return {2.f * x / w - 1.f, 1.f - 2.f * y / h, 0.f, 1.f}; };
+  const std::vector<float>& r = list.overlay_rects;
+  for (std::size_t i = 0; i + 8 <= r.size(); i += 8) {
+    const Rgba c{r[i + 4], r[i + 5], r[i + 6], r[i + 7]};
+    const Eigen::Vector4f tl = clip(r[i], r[i + 1]), tr = clip(r[i + 2], r[i + 1]), bl = clip(r[i], r[i + 3]),
+                          br = clip(r[i + 2], r[i + 3]);
+    vertex(out, tl, -1, -1, c), vertex(out, bl, -1, -1, c), vertex(out, tr, -1, -1, c);
+    vertex(out, tr, -1, -1, c), vertex(out, bl, -1, -1, c), vertex(out, br, -1, -1, c);
+  }
 }
 
 void text_vertices(const Text& t, const View& view, int width, int height, std::vector<float>& out) {

@@ -9,6 +9,10 @@
 //   (black, 70 % of the colour's alpha, 1.5·size px right and down); depth-tested;
 // - overlay (OglLabel, writeOverlayText): at pixel (x, y) from the top-left corner, glyphs
 //   `size` (fontsize) pixels wide and twice as high; no depth test.
+// OglColorMap's legend (showLegend) is made of overlay texts and rectangles: a bar 10 px wide
+// and 100 px high of the palette (max at the top, sampled as SOFA's 1D texture: linear,
+// repeating), `legendTitle` above it, max and min beside its ends (fontsize 12); white, or black
+// on a background whose luminance (0.212 r + 0.715 g + 0.072 b) exceeds 0.5.
 // Text is Latin-1 in SOFA's texture; UTF-8 input is decoded (code points 32–255 drawn, others
 // shown as '?').
 #pragma once
@@ -34,6 +38,10 @@ std::string find_font(const std::vector<std::string>& data_paths);
 // needs the visual-model flag (`visual_models`); indices are drawn whatever the flags, as SOFA's
 // components draw them in their draw().
 void add_texts(DrawList& list, Node& node, bool visual_models);
+
+// Triangles of the overlay rectangles of `list` (DrawList::overlay_rects), in the same vertex
+// format as text_vertices with u = v = -1 (no texture). Appends to `out`.
+void rect_vertices(const DrawList& list, int width, int height, std::vector<float>& out);
 
 // Triangles of `t` for a width × height picture: per vertex clip-space x y z w, texture u v
 // (the font texture uploaded bottom row first, as OpenGL reads images) and colour r g b a, 10

@@ -289,7 +289,7 @@ in vec4 v_color;
 uniform sampler2D u_font;
 out vec4 frag_color;
 void main() {
-  vec4 t = texture(u_font, v_uv);
+  vec4 t = v_uv.x < 0.0 ? vec4(1.0) : texture(u_font, v_uv);  // u < 0: a plain rectangle
   float a = t.a * v_color.a;
   if (a <= 0.0) discard;
   frag_color = vec4(v_color.rgb * t.rgb, a);
@@ -545,7 +545,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
     glDepthMask(GL_TRUE);
   }
   glUniform1i(u_translucent_, 0);
-  if (list.texts_used > 0) draw_texts(list, view);
+  if (list.texts_used > 0 || !list.overlay_rects.empty()) draw_texts(list, view);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   if (list.frame.on) draw_scene_frame(list.frame, view);
   glBindVertexArray(0);
@@ -838,22 +838,27 @@ void GlRenderer::render_shadow_map(const DrawList& list, const LightView& lv, Sh
 }
 
 void GlRenderer::draw_texts(const DrawList& list, const View& view) {
-  if (font_.empty()) {
-    if (!font_warned_)
-      std::fprintf(stderr,
-                   "sinew: text not drawn: SOFA's font textures/texture_ascii_smooth.png is in none of the data "
-                   "folders (--data-path)\n");
-    font_warned_ = true;
-    return;
+  unsigned font = 0;
+  if (list.texts_used > 0) {
+    if (font_.empty()) {
+      if (!font_warned_)
+        std::fprintf(stderr,
+                     "sinew: text not drawn: SOFA's font textures/texture_ascii_smooth.png is in none of the data "
+                     "folders (--data-path)\n");
+      font_warned_ = true;
+    } else {
+      font = texture_for(font_);  // 0: texture_for said why
+    }
   }
-  const unsigned font = texture_for(font_);
-  if (!font) return;  // texture_for said why
   text_vertices_.clear();
-  // Depth-tested texts first, then those drawn over everything; each group in graph order.
+  // Depth-tested texts first, then the overlay rectangles and the texts drawn over everything;
+  // each group in graph order.
   std::size_t tested_floats = 0;
   for (int pass = 0; pass < 2; ++pass) {
-    for (std::size_t i = 0; i < list.texts_used; ++i)
-      if (list.texts[i].depth_test == (pass == 0)) text_vertices(list.texts[i], view, width_, height_, text_vertices_);
+    if (pass == 1) rect_vertices(list, width_, height_, text_vertices_);
+    if (font)
+      for (std::size_t i = 0; i < list.texts_used; ++i)
+        if (list.texts[i].depth_test == (pass == 0)) text_vertices(list.texts[i], view, width_, height_, text_vertices_);
     if (pass == 0) tested_floats = text_vertices_.size();
   }
   if (text_vertices_.empty()) return;

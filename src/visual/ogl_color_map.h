@@ -1,7 +1,6 @@
 // OglColorMap (SOFA's Sofa.GL.Component.Rendering2D): a colour palette that
 // other visual components (DataDisplay) use to turn values into colours, and a
-// legend drawn over the picture when showLegend. Sinew keeps the palette
-// (visual/color_map.h) for the renderer; the legend is not drawn.
+// legend drawn over the picture when showLegend (render/draw_text.h).
 #pragma once
 
 #include <string>

@@ -300,3 +300,36 @@ TEST_F(TextPictureTest, NoFontNoText) {
 
 }  // namespace
 }  // namespace sinew
+
+namespace sinew {
+namespace {
+
+// OglColorMap's legend: a bar 10 px wide from y = 25 to 125 (legendOffset 10 5), the palette's
+// last colour at the top (red for "Blue to Red"), its first at the bottom; max and min written
+// beside its ends in white on black; a title moves everything down by 2·legendSize. The bar is
+// drawn without the font too.
+TEST_F(TextPictureTest, ColorMapLegend) {
+  const std::string map = "<OglColorMap colorScheme=\"Blue to Red\" showLegend=\"true\" min=\"-1.5\" max=\"2\"/>";
+  const Image img = picture(map);
+  const auto top = img.rgb(25, 26), bottom = img.rgb(25, 123);
+  EXPECT_GT(top[0], 200);
+  EXPECT_LT(top[2], 40);
+  EXPECT_GT(bottom[2], 200);
+  EXPECT_LT(bottom[0], 40);
+  EXPECT_TRUE(img.rgb(19, 70)[0] + img.rgb(19, 70)[1] + img.rgb(19, 70)[2] == 0);  // left of the bar
+  const auto white = [](const std::array<int, 3>& c) { return c[0] > 90 && c[0] == c[1] && c[1] == c[2]; };
+  long outside = 0;
+  EXPECT_GT(count(img, white, 10, 5, 10 + 12, 5 + 24, &outside), 10);        // "2"
+  EXPECT_GT(count(img, white, 10, 125, 10 + 4 * 12, 125 + 24, &outside), 10);  // "-1.5"
+  const Image titled = picture("<OglColorMap colorScheme=\"Blue to Red\" showLegend=\"true\" legendTitle=\"T\" "
+                               "legendSize=\"10\"/>");
+  EXPECT_GT(titled.rgb(25, 46)[0], 200);  // the bar's top moved down by 20 px
+  EXPECT_EQ(titled.rgb(25, 30), (std::array<int, 3>{0, 0, 0}));
+  renderer_->set_font("");
+  const Image no_font = picture(map);
+  EXPECT_EQ(no_font.rgb(25, 26), top);
+  EXPECT_EQ(count(no_font, white, 10, 5, 60, 29, &outside) + count(no_font, white, 10, 125, 60, 149, &outside), 0);
+}
+
+}  // namespace
+}  // namespace sinew
