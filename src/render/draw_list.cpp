@@ -270,6 +270,7 @@ void visit(Node& node, const DisplayFlags& inherited, const ClipPlane* inherited
         add_visual_model(list, *m, flags.shown(DisplayFlags::wireframe), clip, shadow_shader);
   if (flags.shown(DisplayFlags::visual_models)) add_visual_extras(list, node);
   add_texts(list, node, flags.shown(DisplayFlags::visual_models));
+  add_camera_paths(list, node);
 
   if (flags.shown(DisplayFlags::collision_models) || flags.shown(DisplayFlags::bounding_collision_models))
     add_collision_models(list, node, flags);

@@ -16,6 +16,7 @@
 #include "visual/line_axis.h"
 #include "visual/ogl_fluid_model.h"
 #include "visual/point_splat_model.h"
+#include "visual/recorded_camera.h"
 #include "visual/trail_renderer.h"
 #include "visual/visual_bounding_box.h"
 #include "visual/visual_grid.h"
@@ -136,7 +137,7 @@ void set_color(Batch& b, const std::string& text, bool lit) {
 // VisualPointCloud::doDrawVisual: unlit points of `pointSize` pixels; lit spheres whose radii
 // are sphereRadius, padded with its last value (1 when empty); or, for rigid frames, SOFA's
 // coordinate frame of size pointSize at each (the colour does not apply to frames, as in SOFA).
-// `showIndices` is not drawn (no text in pictures).
+// `showIndices`: render/draw_text.h.
 void add_point_cloud(DrawList& list, const VisualPointCloud& pc) {
   if (!pc.enable.get() || pc.state() != ComponentState::valid) return;
   const FlatVec& x = pc.position.get();
@@ -309,6 +310,22 @@ void add_trails(DrawList& list, const TrailRenderer& t) {
 }
 
 }  // namespace
+
+// RecordedCamera::draw with drawRotation: the rotation's 100-point circle, closed, and lines
+// from four of its points to the point looked at, in (0, 1, 0.5); whatever the display flags
+// (a component's draw()), and out of the bounds the default view frames (not the scene's).
+void add_camera_paths(DrawList& list, Node& node) {
+  for (const auto& o : node.objects()) {
+    const auto* c = dynamic_cast<const RecordedCamera*>(o.get());
+    if (!c || !c->draw_rotation.get() || c->state() != ComponentState::valid) continue;
+    const std::vector<Vec3> path = c->rotation_path();
+    Batch& b = fresh_batch(list, c, Batch::Kind::lines);
+    for (std::size_t i = 0; i < path.size(); ++i) push_line(b, path[i], path[(i + 1) % path.size()]);
+    for (std::size_t i = 0; i < 4; ++i) push_line(b, path[i * path.size() / 4], c->rotation_look_at.get());
+    set_color(b, "0 1 0.5 1", false);
+    if (b.positions.empty()) --list.used;
+  }
+}
 
 void add_visual_extras(DrawList& list, Node& node) {
   for (const auto& o : node.objects()) {

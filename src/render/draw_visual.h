@@ -14,6 +14,8 @@ namespace sinew::render {
 struct DrawList;
 
 void add_visual_extras(DrawList& list, Node& node);
+// RecordedCamera's rotation path (drawRotation), whatever the display flags.
+void add_camera_paths(DrawList& list, Node& node);
 
 // VisualMesh: draw_visual_mesh.cpp.
 void add_visual_mesh(DrawList& list, const VisualMesh& mesh);

@@ -21,6 +21,7 @@
 #include "viewer/view_file.h"
 #include "viewer/viewer_app.h"
 #include "visual/background_setting.h"
+#include "visual/recorded_camera.h"
 
 namespace sinew::viewer {
 
@@ -486,6 +487,10 @@ int ViewerApp::run() {
       ++timings.steps;
       timings.step_ms[timings.cursor] = static_cast<float>(ms);
       print_new_messages(root().diagnostics(), printed);
+      // A RecordedCamera moves with the simulation; SOFA's viewer draws through it.
+      if (const auto* rc = root().find_down<RecordedCamera>();
+          ok && rc && rc->activated.get() && (rc->rotation_mode.get() || rc->translation_mode.get() || rc->navigation_mode.get()))
+        camera.reset(render::camera_frame(root(), bbox_min_, bbox_max_), (bbox_min_ + bbox_max_) * 0.5);
       if (!ok) {
         animating = false;
         attach.stop();

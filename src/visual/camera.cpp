@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 
 #include "core/registry.h"
+#include "visual/recorded_camera.h"
 
 namespace sinew {
 
@@ -69,7 +70,7 @@ void register_cameras(Registry& r) {
       {"InteractiveCamera", "viewer camera driven by the mouse; its view is used by `sinew render`",
        creator<InteractiveCamera>()},
       {"Camera", "a camera rendering the scene from a given position and orientation", creator<BaseCamera>()},
-      {"RecordedCamera", "camera following a recorded or rotating path (its initial view is rendered)",
+      {"RecordedCamera", "camera moved along a scripted path (rotation, translation, navigation)",
        creator<RecordedCamera>()},
   };
   for (const auto& e : list) {

@@ -48,13 +48,6 @@ class InteractiveCamera final : public BaseCamera {
   Field<int> pivot{this, "pivot", 2, "rotation pivot: 0 lookAt, 1 camera, 2 scene centre, 3 world centre", "Camera"};
 };
 
-// RecordedCamera: a scripted path (rotation, translation, navigation). Its path data are
-// accepted as written; the renderer uses the BaseCamera part (its initial view).
-class RecordedCamera final : public BaseCamera {
- public:
-  bool accepts_any_attribute() const override { return true; }
-};
-
 // Quaternion (x y z w) whose rotation has columns x, y, z (SOFA's createQuaterFromFrame).
 VecN<4> quat_from_frame(const Vec3& x, const Vec3& y, const Vec3& z);
 // The rotation of a quaternion (x y z w), normalised.
