@@ -61,6 +61,42 @@ CameraFrame camera_frame(const Node& root, const Vec3& min, const Vec3& max, boo
   return f;
 }
 
+View viewport_view(const ExtraViewport& vp, const Vec3& min, const Vec3& max, double aspect) {
+  const Mat3 r = quat_matrix(vp.orientation);
+  View v;
+  v.view.setIdentity();
+  v.view.topLeftCorner<3, 3>() = r.cast<float>();
+  v.view.topRightCorner<3, 1>() = (-(r * vp.position)).cast<float>();
+  v.eye = vp.position;
+  v.from_scene_camera = true;
+  double z_near = vp.z_near, z_far = vp.z_far;
+  if (std::abs(z_near) < 1e-4 || std::abs(z_far) < 1e-4) {
+    z_near = 1e10, z_far = -1e10;
+    for (int c = 0; c < 8; ++c) {
+      const Vec3 p(c & 1 ? min.x() : max.x(), c & 2 ? min.y() : max.y(), c & 4 ? min.z() : max.z());
+      const double z = -(r * p - vp.position).z();
+      z_near = std::min(z_near, z), z_far = std::max(z_far, z);
+    }
+    if (z_near <= 0) z_near = 1;
+    if (z_far >= 1000.0) z_far = 1000.0;
+    if (z_near > 0 && z_far < 1000) {
+      z_near *= 0.8, z_far *= 1.2;
+      if (z_near < z_far * 0.01) z_near = z_far * 0.01;
+      if (z_near < 0.1) z_near = 0.1;
+      if (z_far < 2.0) z_far = 2.0;
+    }
+  }
+  const double s = 1.0 / std::tan(vp.fovy * M_PI / 180 * 0.5);
+  Eigen::Matrix4d p = Eigen::Matrix4d::Zero();
+  p(0, 0) = s / (aspect > 0 ? aspect : 1.0);
+  p(1, 1) = s;
+  p(2, 2) = -(z_far + z_near) / (z_far - z_near);
+  p(2, 3) = -2.0 * z_far * z_near / (z_far - z_near);
+  p(3, 2) = -1.0;
+  v.projection = p.cast<float>();
+  return v;
+}
+
 View view_for(const Node& root, const Vec3& min, const Vec3& max, int width, int height) {
   bool scene = false;
   const CameraFrame f = camera_frame(root, min, max, &scene);

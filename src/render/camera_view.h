@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "core/roles.h"
+#include "render/draw_list.h"
 
 namespace sinew {
 class Node;
@@ -40,6 +41,12 @@ CameraFrame camera_frame(const Node& root, const Vec3& min, const Vec3& max, boo
 // The view of `frame`: clip planes from the scene camera (or computed from [min, max]
 // as BaseCamera::computeZ does), projection for a width × height picture.
 View view_of(const CameraFrame& frame, const Node& root, const Vec3& min, const Vec3& max, int width, int height);
+
+// The view of an OglViewport (OglViewport::renderToViewport): world → eye = R(orientation)·(p −
+// position); with zNear or zFar 0, both from the scene box's corners at R·p − position (SOFA's
+// Transformation; the same for an identity orientation): near ≤ 0 → 1, far ≥ 1000 → 1000, else
+// ×0.8 and ×1.2, near ≥ far/100 and 0.1, far ≥ 2; perspective of `fovy` and the rectangle's aspect.
+View viewport_view(const ExtraViewport& v, const Vec3& min, const Vec3& max, double aspect);
 
 // `min`/`max`: the scene's bounding box (the root's `bbox` when set, else what is drawn).
 View view_for(const Node& root, const Vec3& min, const Vec3& max, int width, int height);

@@ -12,6 +12,7 @@
 #include "visual/clip_plane.h"
 #include "visual/color.h"
 #include "visual/ogl_scene_frame.h"
+#include "visual/ogl_viewport.h"
 #include "visual/ogl_model.h"
 #include "visual/visual_style.h"
 
@@ -271,6 +272,21 @@ void visit(Node& node, const DisplayFlags& inherited, const ClipPlane* inherited
   if (flags.shown(DisplayFlags::visual_models)) add_visual_extras(list, node);
   add_texts(list, node, flags.shown(DisplayFlags::visual_models));
   add_camera_paths(list, node);
+  for (const auto& o : node.objects())
+    if (const auto* v = dynamic_cast<const OglViewport*>(o.get())) {
+      // OglViewport::isVisible; with advancedRendering, only under that display flag.
+      if (!v->enabled.get() || v->state() != ComponentState::valid) continue;
+      if (v->advanced_rendering.get() && !flags.shown(DisplayFlags::advanced_rendering)) continue;
+      const VecNi<2>& at = v->screen_position.get();
+      const VecNi<2>& size = v->screen_size.get();
+      if (size[0] <= 0 || size[1] <= 0) continue;
+      ExtraViewport e;
+      e.x = at[0], e.y = at[1], e.width = size[0], e.height = size[1];
+      v->camera(e.position, e.orientation);
+      e.z_near = v->z_near.get(), e.z_far = v->z_far.get(), e.fovy = v->fovy.get();
+      e.swap = v->swap_main_view.get();
+      list.viewports.push_back(e);
+    }
 
   if (flags.shown(DisplayFlags::collision_models) || flags.shown(DisplayFlags::bounding_collision_models))
     add_collision_models(list, node, flags);
@@ -350,6 +366,7 @@ void gather(Node& root, DrawList& out) {
   out.used = 0;
   out.texts_used = 0;
   out.overlay_rects.clear();
+  out.viewports.clear();
   out.has_bounds = false;
   thread_local std::vector<float> scratch;
   thread_local std::vector<const MechanicalState*> deferred;

@@ -110,8 +110,19 @@ struct Text {
   bool depth_test = false;
 };
 
+// OglViewport: the scene drawn again from a fixed camera in a rectangle of the picture.
+struct ExtraViewport {
+  int x = 0, y = 0;                         // screenPosition: pixels from the left and the bottom (< 0: from the right / top)
+  int width = 0, height = 0;                // screenSize
+  Vec3 position = Vec3::Zero();             // camera position
+  VecN<4> orientation = VecN<4>(0, 0, 0, 1);  // rotation world → camera (SOFA's use of it)
+  double z_near = 0, z_far = 0, fovy = 60;  // 0: near and far fitted to the scene
+  bool swap = false;                        // swapMainView
+};
+
 struct DrawList {
   std::vector<Batch> batches;
+  std::vector<ExtraViewport> viewports;  // OglViewports shown, in graph order
   std::vector<Text> texts;  // texts[0, texts_used) are this frame's, drawn over the models
   std::size_t texts_used = 0;
   // Rectangles over the picture before its overlay texts (OglColorMap's legend bar): pixels

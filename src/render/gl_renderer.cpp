@@ -496,13 +496,6 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
   glDisable(GL_CULL_FACE);
   glEnable(GL_PROGRAM_POINT_SIZE);
   glEnable(GL_CLIP_DISTANCE0);
-  glUseProgram(program_);
-  glUniformMatrix4fv(u_view_, 1, GL_FALSE, view.view.data());  // Eigen is column-major, as GL
-  glUniformMatrix4fv(u_proj_, 1, GL_FALSE, view.projection.data());
-  glUniform1f(u_half_height_, 0.5f * static_cast<float>(height_));
-  view_ = view.view;
-  set_lights(list.lighting, view);
-
   while (gpu_.size() < list.used) {
     GpuBatch g;
     glGenVertexArrays(1, &g.vao);
@@ -510,7 +503,58 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
     glGenBuffers(1, &g.ebo);
     gpu_.push_back(g);
   }
-  set_shadows(list, view);
+  // OglViewport's swapMainView: the picture from its camera, its rectangle from the main view.
+  const ExtraViewport* swapped = nullptr;
+  for (const ExtraViewport& e : list.viewports)
+    if (e.swap) swapped = &e;
+  const double aspect = static_cast<double>(width_) / std::max(height_, 1);
+  if (swapped) draw_pass(list, viewport_view(*swapped, list.min, list.max, aspect), 0, 0, width_, height_);
+  else draw_pass(list, view, 0, 0, width_, height_);
+  // OglViewports, over the picture (SOFA's postDrawScene), each cleared to the background.
+  for (const ExtraViewport& e : list.viewports) {
+    const int x = e.x >= 0 ? e.x : width_ + e.x, y = e.y >= 0 ? e.y : height_ + e.y;
+    const double ratio = static_cast<double>(e.width) / e.height;
+    View v;
+    if (&e == swapped) {
+      v = view;  // the main view, its projection widened by the aspects' ratio
+      const float scale = static_cast<float>(aspect / ratio);
+      v.projection.row(0) *= scale;
+    } else {
+      v = viewport_view(e, list.min, list.max, ratio);
+    }
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, y, e.width, e.height);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    draw_pass(list, v, x, y, e.width, e.height);
+    glDisable(GL_SCISSOR_TEST);
+  }
+  glViewport(0, 0, width_, height_);
+  view_ = view.view;
+  // The picture's alpha stays that of the opaque pass.
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+  if (list.texts_used > 0 || !list.overlay_rects.empty()) draw_texts(list, view);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  if (list.frame.on) draw_scene_frame(list.frame, view);
+  glBindVertexArray(0);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glDisable(GL_CLIP_DISTANCE0);  // the viewer draws its overlays after this
+  if (samples_ > 0) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+}
+
+void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y, int width, int height) {
+  glUseProgram(program_);
+  glUniformMatrix4fv(u_view_, 1, GL_FALSE, view.view.data());  // Eigen is column-major, as GL
+  glUniformMatrix4fv(u_proj_, 1, GL_FALSE, view.projection.data());
+  glUniform1f(u_half_height_, 0.5f * static_cast<float>(height));
+  view_ = view.view;
+  set_lights(list.lighting, view);
+  set_shadows(list, view);  // may draw the lights' maps: the picture's framebuffer is bound after
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glViewport(x, y, width, height);
   // SOFA's two visual passes: opaque models in graph order, then translucent ones.
   for (std::size_t i = 0; i < list.used; ++i)
     if (!list.batches[i].translucent) draw_batch(list.batches[i], gpu_[i]);
@@ -544,18 +588,8 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
   }
-  glUniform1i(u_translucent_, 0);
-  if (list.texts_used > 0 || !list.overlay_rects.empty()) draw_texts(list, view);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  if (list.frame.on) draw_scene_frame(list.frame, view);
-  glBindVertexArray(0);
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-  glDisable(GL_CLIP_DISTANCE0);  // the viewer draws its overlays after this
-  if (samples_ > 0) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
-    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  }
+  glUniform1i(u_translucent_, 0);
 }
 
 void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {

@@ -57,6 +57,9 @@ class GlRenderer {
       u_nlights_ = -1, u_scene_lights_ = -1, u_global_ambient_ = -1, u_light_pos_ = -1, u_light_color_ = -1, u_light_spot_ = -1,
       u_light_cos_ = -1, u_light_exp_ = -1, u_light_att_ = -1;
   std::vector<GpuBatch> gpu_;
+  // The models seen through `view` in the rectangle (x, y, width, height) of the picture
+  // (pixels from the bottom-left): opaque, then translucent.
+  void draw_pass(const DrawList& list, const View& view, int x, int y, int width, int height);
   // Uploads `b` into `g` and draws it (`upload` false: drawn again from what was uploaded,
   // the second pass of a translucent model).
   void draw_batch(const Batch& b, GpuBatch& g, bool upload = true);
