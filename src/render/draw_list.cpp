@@ -404,6 +404,11 @@ void gather(Node& root, DrawList& out) {
   for (std::size_t i = 0; i < out.used; ++i) surfaces |= out.batches[i].kind == Batch::Kind::triangles;
   if (!surfaces)
     for (const MechanicalState* s : deferred) add_points(out, *s);
+  // The root's display flags (lights live at the root in SOFA's scenes).
+  DisplayFlags root_flags = DisplayFlags::viewer_defaults();
+  for (const auto& o : root.objects())
+    if (const auto* st = dynamic_cast<const VisualStyle*>(o.get())) root_flags = root_flags.merged(st->flags());
+  add_light_sources(out, root, root_flags.shown(DisplayFlags::visual_models));
 }
 
 }  // namespace sinew::render

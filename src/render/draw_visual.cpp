@@ -13,6 +13,7 @@
 #include "visual/cylinder_visual_model.h"
 #include "visual/color_map.h"
 #include "visual/data_display.h"
+#include "visual/light.h"
 #include "visual/line_axis.h"
 #include "visual/ogl_fluid_model.h"
 #include "visual/point_splat_model.h"
@@ -324,6 +325,61 @@ void add_camera_paths(DrawList& list, Node& node) {
     for (std::size_t i = 0; i < 4; ++i) push_line(b, path[i * path.size() / 4], c->rotation_look_at.get());
     set_color(b, "0 1 0.5 1", false);
     if (b.positions.empty()) --list.used;
+  }
+}
+
+// Light::drawSource, after the traversal (the scene's box is then known) and out of it: a
+// PositionalLight as an unlit sphere of 1 % of the box's diagonal; a SpotLight as a wireframe
+// sphere of radius zNear/10 and a wireframe cone from zNear to zFar along its direction, of
+// radius zFar·tan(cutoff) at its base and half of that scaled by zNear/zFar at its tip; zNear
+// and zFar the light's, else the box's depth range along the direction with SOFA's margins
+// (SpotLight::computeClippingPlane, whose own frame is a mirrored one). In the light's colour.
+void add_light_sources(DrawList& list, Node& root, bool visual_models) {
+  if (!visual_models) return;
+  thread_local std::vector<PositionalLight*> lights;
+  lights.clear();
+  root.collect_down(lights);
+  const Vec3 lo = list.has_bounds ? list.min : Vec3::Zero(), hi = list.has_bounds ? list.max : Vec3::Zero();
+  for (const PositionalLight* l : lights) {
+    if (!l->draw_source.get() || l->state() != ComponentState::valid) continue;
+    const Rgba c = parse_rgba(l->color.get()).value_or(Rgba{1, 1, 1, 1});
+    const Rgba color{c[0], c[1], c[2], 1.f};
+    const Vec3 pos = l->position.get();
+    Batch& b = fresh_batch(list, l, Batch::Kind::triangles);
+    b.texcoords.clear();
+    b.texture.clear();
+    b.lit = false;
+    b.translucent = false;
+    const auto* spot = dynamic_cast<const SpotLight*>(l);
+    b.wireframe = spot != nullptr;
+    if (!spot) {
+      append_sphere(b, pos, 0.01 * (hi - lo).norm(), &color);
+    } else {
+      Vec3 dir = spot->direction.get();
+      if (spot->lookat.get()) dir -= pos;
+      if (dir.norm() > 0) dir.normalize();
+      double z_near = spot->z_near.get(), z_far = spot->z_far.get();
+      if (!spot->z_near.is_set() || !spot->z_far.is_set()) {
+        z_near = 1e10, z_far = -1e10;
+        for (int k = 0; k < 8; ++k) {
+          const Vec3 p(k & 1 ? lo.x() : hi.x(), k & 2 ? lo.y() : hi.y(), k & 4 ? lo.z() : hi.z());
+          const double z = (p - pos).dot(dir);
+          z_near = std::min(z_near, z), z_far = std::max(z_far, z);
+        }
+        if (z_near <= 0) z_near = 1;
+        if (z_far >= 1000) z_far = 1000;
+        if (z_far <= 0) z_near = 0.01, z_far = 100;  // the view's planes in SOFA
+        if (z_near > 0 && z_far < 1000) {
+          z_near *= 0.8, z_far *= 1.2;
+          z_near = std::max({z_near, z_far * 0.01, 0.1});
+          z_far = std::max(z_far, 2.0);
+        }
+      }
+      const double base = z_far * std::tan(spot->cutoff.get() * M_PI / 180), tip = base * 0.5 * z_near / z_far;
+      append_sphere(b, pos, z_near * 0.1, &color);
+      append_cone(b, pos + dir * z_far, pos + dir * z_near, base, tip, &color);
+    }
+    if (b.positions.empty()) --list.used;  // not in the scene's box, as in SOFA
   }
 }
 

@@ -14,6 +14,8 @@ namespace sinew::render {
 struct DrawList;
 
 void add_visual_extras(DrawList& list, Node& node);
+// The light sources with drawSource, once the scene's box is known (after the traversal).
+void add_light_sources(DrawList& list, Node& root, bool visual_models);
 // RecordedCamera's rotation path (drawRotation), whatever the display flags.
 void add_camera_paths(DrawList& list, Node& node);
 

@@ -152,5 +152,39 @@ TEST_F(ShadowPictureTest, WithoutShaderOrManager) {
   EXPECT_EQ(wall(picture(""), -0.7), 255);
 }
 
+// Light::drawSource: a PositionalLight at (1, 1, 1) is a sphere in its colour of 1 % of the
+// scene box's diagonal around its projection (the box [-2, 2]² × [0, 1] of two small squares:
+// radius 0.057, 3.5 px at depth 4); a SpotLight's cone and sphere are drawn as lines in its
+// colour; nothing without drawSource.
+TEST_F(ShadowPictureTest, LightSourcesDrawn) {
+  const auto draw = [this](const std::string& light) {
+    auto s = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/><LightManager/>" +
+                        light +
+                        "<Node name=\"a\"><OglModel color=\"0.2 0.2 0.2\" position=\"-2 -2 0  -1.9 -2 0  -1.9 -1.9 0  "
+                        "-2 -1.9 0\" quads=\"0 1 2 3\"/></Node><Node name=\"b\"><OglModel color=\"0.2 0.2 0.2\" "
+                        "position=\"1.9 1.9 1  2 1.9 1  2 2 1  1.9 2 1\" quads=\"0 1 2 3\"/></Node></Node>");
+    Image img;
+    std::string err;
+    EXPECT_TRUE(renderer_->render(*s.root, img, &err)) << err;
+    return img;
+  };
+  const auto green = [](const std::array<int, 3>& c) { return c[1] > 200 && c[0] < 30 && c[2] < 30; };
+  const double px = 100.0 / (4.0 * std::tan(M_PI / 8));
+  const int x = static_cast<int>(std::lround(100 + px)), y = static_cast<int>(std::lround(100 - px));
+  const Image shown = draw("<PositionalLight color=\"0 1 0\" position=\"1 1 1\" drawSource=\"1\"/>");
+  EXPECT_TRUE(green(shown.rgb(x, y)));
+  EXPECT_FALSE(green(shown.rgb(x + 6, y)));
+  const Image hidden = draw("<PositionalLight color=\"0 1 0\" position=\"1 1 1\"/>");
+  EXPECT_FALSE(green(hidden.rgb(x, y)));
+  // A spot at the top looking down: lines of its colour along the middle of the picture.
+  const Image spot = draw("<SpotLight color=\"0 1 0\" position=\"0 1.8 0.5\" direction=\"0 -1 0\" cutoff=\"10\" "
+                          "drawSource=\"1\"/>");
+  long lines = 0;
+  for (int yy = 0; yy < 200; ++yy)
+    for (int xx = 80; xx < 120; ++xx) lines += green(spot.rgb(xx, yy));
+  RecordProperty("spot_pixels", static_cast<int>(lines));
+  EXPECT_GT(lines, 50);
+}
+
 }  // namespace
 }  // namespace sinew
