@@ -11,9 +11,9 @@
 #include "render/draw_visual.h"
 #include "visual/clip_plane.h"
 #include "visual/color.h"
-#include "visual/ogl_scene_frame.h"
-#include "visual/ogl_viewport.h"
+#include "visual/drawing/ogl_scene_frame.h"
 #include "visual/ogl_model.h"
+#include "visual/rendering2d/ogl_viewport.h"
 #include "visual/visual_style.h"
 
 namespace sinew::render {

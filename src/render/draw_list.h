@@ -30,7 +30,7 @@
 
 #include "core/roles.h"
 #include "render/material.h"
-#include "visual/light.h"
+#include "visual/shader/light.h"
 
 namespace sinew {
 class Node;

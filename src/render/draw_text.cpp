@@ -11,10 +11,10 @@
 #include "render/draw_collision.h"
 #include "visual/background_setting.h"
 #include "visual/color.h"
-#include "visual/ogl_color_map.h"
-#include "visual/ogl_label.h"
-#include "visual/visual_3d_text.h"
-#include "visual/visual_point_cloud.h"
+#include "visual/drawing/visual_3d_text.h"
+#include "visual/drawing/visual_point_cloud.h"
+#include "visual/rendering2d/ogl_color_map.h"
+#include "visual/rendering2d/ogl_label.h"
 
 namespace sinew::render {
 

@@ -17,7 +17,7 @@
 #include "topology/mesh_topology.h"
 #include "visual/color.h"
 #include "visual/color_map.h"
-#include "visual/visual_mesh.h"
+#include "visual/drawing/visual_mesh.h"
 
 namespace sinew::render {
 

@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 
 #include "core/roles.h"
-#include "visual/light.h"
+#include "visual/shader/light.h"
 
 namespace sinew::render {
 

@@ -6,7 +6,7 @@
 #include "core/roles.h"
 #include "visual/choice.h"
 #include "visual/color.h"
-#include "visual/ogl_scene_frame.h"
+#include "visual/drawing/ogl_scene_frame.h"
 
 namespace sinew {
 

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <thread>
@@ -204,6 +205,10 @@ TEST(LCPForceFeedback, ServoThreadRacesTheSimulationSafely) {
   const auto before = t.ff->snapshots();
   const long calls_before = calls.load();
   for (int i = 0; i < 300; ++i) animate(*t.scene.root);
+  // The servo keeps going after the steps (nothing they did holds it). On a loaded machine it
+  // may not have been scheduled during the 300 short steps: it is given up to 10 s.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (calls.load() == calls_before && std::chrono::steady_clock::now() < deadline) std::this_thread::yield();
   stop.store(true);
   servo.join();
   EXPECT_EQ(t.ff->snapshots() - before, 300u);

@@ -5,7 +5,7 @@
 
 #include "render/draw_list.h"
 #include "test_scene.h"
-#include "visual/data_display.h"
+#include "visual/drawing/data_display.h"
 
 namespace sinew {
 namespace {

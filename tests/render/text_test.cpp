@@ -13,7 +13,7 @@
 #include "render/png_io.h"
 #include "test_paths.h"
 #include "test_scene.h"
-#include "visual/ogl_label.h"
+#include "visual/rendering2d/ogl_label.h"
 
 namespace sinew {
 namespace {

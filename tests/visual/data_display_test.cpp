@@ -9,8 +9,8 @@
 
 #include "test_scene.h"
 #include "visual/color_map.h"
-#include "visual/data_display.h"
-#include "visual/ogl_color_map.h"
+#include "visual/drawing/data_display.h"
+#include "visual/rendering2d/ogl_color_map.h"
 
 namespace sinew {
 namespace {

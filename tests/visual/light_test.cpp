@@ -6,7 +6,7 @@
 #include <string>
 
 #include "test_scene.h"
-#include "visual/light.h"
+#include "visual/shader/light.h"
 
 namespace sinew {
 namespace {

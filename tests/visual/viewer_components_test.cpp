@@ -9,8 +9,8 @@
 #include "test_scene.h"
 #include "visual/clip_plane.h"
 #include "visual/color.h"
+#include "visual/drawing/visual_bounding_box.h"
 #include "visual/ogl_model.h"
-#include "visual/visual_bounding_box.h"
 
 namespace sinew::test {
 namespace {

@@ -7,9 +7,9 @@
 #include "core/node.h"
 #include "test_scene.h"
 #include "visual/color_map.h"
-#include "visual/line_axis.h"
-#include "visual/trail_renderer.h"
-#include "visual/visual_grid.h"
+#include "visual/drawing/line_axis.h"
+#include "visual/drawing/trail_renderer.h"
+#include "visual/drawing/visual_grid.h"
 
 namespace sinew {
 namespace {

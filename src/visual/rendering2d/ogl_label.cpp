@@ -1,4 +1,4 @@
-#include "visual/ogl_label.h"
+#include "visual/rendering2d/ogl_label.h"
 
 #include "core/node.h"
 #include "core/registry.h"

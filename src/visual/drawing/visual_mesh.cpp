@@ -1,4 +1,4 @@
-#include "visual/visual_mesh.h"
+#include "visual/drawing/visual_mesh.h"
 
 #include <sstream>
 #include <string>

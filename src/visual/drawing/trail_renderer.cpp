@@ -1,4 +1,4 @@
-#include "visual/trail_renderer.h"
+#include "visual/drawing/trail_renderer.h"
 
 #include "core/registry.h"
 #include "visual/color_map.h"

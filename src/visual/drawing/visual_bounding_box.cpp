@@ -1,6 +1,6 @@
 // VisualBoundingBox (SOFA's Sofa.Component.Visual): draws the twelve edges of
 // an axis-aligned box, usually linked to a model's box (bbox="@model.bbox").
-#include "visual/visual_bounding_box.h"
+#include "visual/drawing/visual_bounding_box.h"
 
 #include "core/registry.h"
 #include "visual/color.h"

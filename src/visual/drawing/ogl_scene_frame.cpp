@@ -1,4 +1,4 @@
-#include "visual/ogl_scene_frame.h"
+#include "visual/drawing/ogl_scene_frame.h"
 
 #include "visual/choice.h"
 

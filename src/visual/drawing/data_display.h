@@ -19,7 +19,7 @@
 
 #include "core/roles.h"
 #include "visual/color.h"
-#include "visual/ogl_color_map.h"
+#include "visual/rendering2d/ogl_color_map.h"
 
 namespace sinew {
 

@@ -1,4 +1,4 @@
-#include "visual/ogl_viewport.h"
+#include "visual/rendering2d/ogl_viewport.h"
 
 #include <string>
 

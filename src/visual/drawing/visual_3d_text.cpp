@@ -1,4 +1,4 @@
-#include "visual/visual_3d_text.h"
+#include "visual/drawing/visual_3d_text.h"
 
 #include "core/registry.h"
 #include "visual/color.h"

@@ -1,4 +1,4 @@
-#include "visual/visual_point_cloud.h"
+#include "visual/drawing/visual_point_cloud.h"
 
 #include <memory>
 #include <string>

@@ -1,4 +1,4 @@
-#include "visual/ogl_color_map.h"
+#include "visual/rendering2d/ogl_color_map.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "visual/light.h"
+#include "visual/shader/light.h"
 
 #include <cmath>
 

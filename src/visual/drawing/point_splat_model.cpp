@@ -1,4 +1,4 @@
-#include "visual/point_splat_model.h"
+#include "visual/drawing/point_splat_model.h"
 
 #include <string>
 #include <vector>

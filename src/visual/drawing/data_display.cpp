@@ -1,4 +1,4 @@
-#include "visual/data_display.h"
+#include "visual/drawing/data_display.h"
 
 #include <cmath>
 

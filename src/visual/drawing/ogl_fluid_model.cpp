@@ -1,4 +1,4 @@
-#include "visual/ogl_fluid_model.h"
+#include "visual/drawing/ogl_fluid_model.h"
 
 #include <string>
 #include <vector>

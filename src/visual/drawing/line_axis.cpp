@@ -1,4 +1,4 @@
-#include "visual/line_axis.h"
+#include "visual/drawing/line_axis.h"
 
 #include "core/registry.h"
 #include "core/value_text.h"

@@ -1,4 +1,4 @@
-#include "visual/visual_grid.h"
+#include "visual/drawing/visual_grid.h"
 
 #include "core/registry.h"
 #include "visual/choice.h"

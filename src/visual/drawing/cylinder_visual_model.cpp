@@ -1,4 +1,4 @@
-#include "visual/cylinder_visual_model.h"
+#include "visual/drawing/cylinder_visual_model.h"
 
 #include <string>
 #include <vector>
