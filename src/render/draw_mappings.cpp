@@ -11,9 +11,9 @@
 #include <cstring>
 
 #include "core/node.h"
-#include "mapping/barycentric_mapping.h"
-#include "mapping/hexahedron_composite_fem_mapping.h"
-#include "mapping/skinning_mapping.h"
+#include "mapping/linear/barycentric_mapping.h"
+#include "mapping/linear/hexahedron_composite_fem_mapping.h"
+#include "mapping/linear/skinning_mapping.h"
 #include "render/draw_collision.h"
 #include "visual/visual_style.h"
 

@@ -13,7 +13,7 @@
 
 #include "badinput_helpers.h"
 #include "forcefield/fem/nonuniform/hexahedron_composite_fem_force_field_and_mass.h"
-#include "mapping/hexahedron_composite_fem_mapping.h"
+#include "mapping/linear/hexahedron_composite_fem_mapping.h"
 #include "state/mechanical_object.h"
 #include "test_scene.h"
 #include "topology/grid/sparse_grid_ramification_topology.h"

@@ -1,7 +1,7 @@
 // BarycentricMapping Vec3d → Rigid3d (SOFA's BarycentricMapperTetrahedronSetTopologyRigid):
 // frames embedded in tetrahedra, on hand-derived values. J and Jᵀ are SOFA's
 // (ω = Σ x_k × v_k over the tetrahedron's vertices, not the derivative of apply).
-#include "mapping/barycentric_mapping_rigid.h"
+#include "mapping/linear/barycentric_mapping_rigid.h"
 
 #include <gtest/gtest.h>
 

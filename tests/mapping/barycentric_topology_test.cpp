@@ -13,16 +13,16 @@
 #include <vector>
 
 #include "badinput_helpers.h"
-#include "mapping/barycentric_mapping.h"
-#include "mapping/barycentric_mapping_rigid.h"
+#include "mapping/linear/barycentric_mapping.h"
+#include "mapping/linear/barycentric_mapping_rigid.h"
 #include "runner/session.h"
 #include "state/mechanical_object.h"
+#include "test_paths.h"
 #include "test_scene.h"
 #include "topology/dynamic/hexahedron_set_topology_modifier.h"
 #include "topology/dynamic/point_set_topology_container.h"
 #include "topology/dynamic/point_set_topology_modifier.h"
 #include "topology/dynamic/tetrahedron_set_topology_modifier.h"
-#include "test_paths.h"
 
 namespace sinew {
 namespace {

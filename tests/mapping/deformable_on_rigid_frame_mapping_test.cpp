@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/node.h"
-#include "mapping/deformable_on_rigid_frame_mapping.h"
+#include "mapping/linear/deformable_on_rigid_frame_mapping.h"
 #include "test_scene.h"
 
 using namespace sinew;

@@ -7,8 +7,8 @@
 
 #include <vector>
 
-#include "mapping/distance_from_target_mapping.h"
-#include "mapping/square_mapping.h"
+#include "mapping/nonlinear/distance_from_target_mapping.h"
+#include "mapping/nonlinear/square_mapping.h"
 #include "test_scene.h"
 
 namespace sinew {

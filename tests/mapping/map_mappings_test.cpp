@@ -12,9 +12,9 @@
 
 #include "core/matrix_sink.h"
 #include "core/mechanical_ops.h"
-#include "mapping/barycentric_mapping.h"
-#include "mapping/distance_mapping.h"
-#include "mapping/rigid_mapping.h"
+#include "mapping/linear/barycentric_mapping.h"
+#include "mapping/nonlinear/distance_mapping.h"
+#include "mapping/nonlinear/rigid_mapping.h"
 #include "state/mechanical_object.h"
 #include "test_scene.h"
 #include "visual/ogl_model.h"

@@ -6,10 +6,10 @@
 
 #include <vector>
 
-#include "mapping/area_mapping.h"
-#include "mapping/center_of_mass_mapping.h"
-#include "mapping/distance_to_plane_mapping.h"
-#include "mapping/volume_mapping.h"
+#include "mapping/linear/center_of_mass_mapping.h"
+#include "mapping/linear/distance_to_plane_mapping.h"
+#include "mapping/nonlinear/area_mapping.h"
+#include "mapping/nonlinear/volume_mapping.h"
 #include "test_scene.h"
 
 namespace sinew {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "mapping/skinning_mapping.h"
+#include "mapping/linear/skinning_mapping.h"
 #include "math/quat.h"
 #include "test_scene.h"
 

@@ -1,7 +1,7 @@
 // TubularMapping: rings of points around Rigid3d frames, on hand-derived values
 // (positions, velocities, forces, peaks); the conformance battery checks J
 // against finite differences and Jᵀ against J, constraint_rows_test the rows.
-#include "mapping/tubular_mapping.h"
+#include "mapping/linear/tubular_mapping.h"
 
 #include <gtest/gtest.h>
 

@@ -11,7 +11,7 @@
 
 #include <Eigen/Geometry>
 
-#include "mapping/simple_tesselated_tetra_mechanical_mapping.h"
+#include "mapping/linear/simple_tesselated_tetra_mechanical_mapping.h"
 #include "spring_helpers.h"
 #include "test_scene.h"
 #include "topology/dynamic/tetrahedron_set_topology_container.h"

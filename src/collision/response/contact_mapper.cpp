@@ -8,7 +8,7 @@
 #include "collision/model/tetrahedron_collision_model.h"
 #include "collision/model/triangle_collision_model.h"
 #include "core/node.h"
-#include "mapping/rigid_mapping.h"
+#include "mapping/nonlinear/rigid_mapping.h"
 #include "math/quat.h"
 #include "state/mechanical_object.h"
 

@@ -175,7 +175,7 @@ void ArticulatedSystemMapping::apply(int x) {
       const Vec3& on_child = ac->pos_on_child.value();
       Vec3 global = parent_c + quat_rotate(parent_q, on_parent);
       ac->global_position.set(global);
-      Vec3 child_c;
+      Vec3 child_c = Vec3::Zero();
       Quat child_q;
       switch (ac->articulation_process.value()) {
         case 0: {

@@ -45,7 +45,7 @@
 
 #include <optional>
 
-#include "mapping/barycentric_coords.h"
+#include "mapping/linear/barycentric_coords.h"
 #include "mapping/mapping_base.h"
 #include "mapping/relocation_snapshot.h"
 

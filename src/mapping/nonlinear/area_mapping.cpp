@@ -1,10 +1,10 @@
-#include "mapping/area_mapping.h"
+#include "mapping/nonlinear/area_mapping.h"
 
 #include <cmath>
 
 #include "core/registry.h"
 #include "core/value_text.h"
-#include "mapping/element_measure_kernels.h"
+#include "mapping/nonlinear/element_measure_kernels.h"
 
 namespace sinew {
 

@@ -1,24 +1,24 @@
-#include "mapping/barycentric_mapping_rigid.h"
+#include "mapping/linear/barycentric_mapping_rigid.h"
 
 #include <cmath>
 #include <limits>
 
 #include "core/node.h"
+#include "mapping/linear/barycentric_coords.h"
 #include "math/decompose.h"
 #include "math/quat.h"
-#include "mapping/barycentric_coords.h"
 
 namespace sinew {
 
 namespace {
 
 // r = M·v, summed in SOFA's order.
-inline void mul3(const double M[3][3], const double* v, double* r) {
+inline void rigid_mul3(const double M[3][3], const double* v, double* r) {
   for (int i = 0; i < 3; ++i) r[i] = M[i][0] * v[0] + M[i][1] * v[1] + M[i][2] * v[2];
 }
 
 // a × b
-inline void cross3(const double* a, const double* b, double* r) {
+inline void rigid_cross3(const double* a, const double* b, double* r) {
   r[0] = a[1] * b[2] - a[2] * b[1];
   r[1] = a[2] * b[0] - a[0] * b[2];
   r[2] = a[0] * b[1] - a[1] * b[0];
@@ -127,7 +127,7 @@ std::string BarycentricMappingRigid::embed(const std::vector<double>& in, const 
       const double* x0 = &in[tetras_[t][0] * 3];
       const double r[3] = {p[0] - x0[0], p[1] - x0[1], p[2] - x0[2]};
       double v[3];
-      mul3(f.inv, r, v);
+      rigid_mul3(f.inv, r, v);
       double d = std::max(std::max(-v[0], -v[1]), std::max(-v[2], v[0] + v[1] + v[2] - 1));
       if (d > 0) {
         const double c0 = p[0] - f.c[0], c1 = p[1] - f.c[1], c2 = p[2] - f.c[2];
@@ -151,7 +151,7 @@ std::string BarycentricMappingRigid::embed(const std::vector<double>& in, const 
     for (int c = 0; c < 3; ++c) {
       const double d[3] = {R(0, c), R(1, c), R(2, c)};
       double* b = e.axis[c];
-      mul3(frames[index].inv, d, b);
+      rigid_mul3(frames[index].inv, d, b);
       const double len = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
       if (len > std::numeric_limits<double>::epsilon())
         for (int k = 0; k < 3; ++k) b[k] /= len;
@@ -213,7 +213,7 @@ void BarycentricMappingRigid::apply(int x) {
     Mat3 A;
     for (int c = 0; c < 3; ++c) {
       double a[3];
-      mul3(E, e.axis[c], a);
+      rigid_mul3(E, e.axis[c], a);
       for (int k = 0; k < 3; ++k) A(k, c) = a[k];
     }
     quat_from_matrix(polar_rotation(A)).store(o + 3);
@@ -243,7 +243,7 @@ void BarycentricMappingRigid::apply_j(int v, int role) {
     double omega[3] = {0, 0, 0};
     for (int k = 0; k < 4; ++k) {
       double c[3];
-      cross3(X + t[k] * 3, V + t[k] * 3, c);
+      rigid_cross3(X + t[k] * 3, V + t[k] * 3, c);
       omega[0] += c[0], omega[1] += c[1], omega[2] += c[2];
     }
     o[3] = omega[0], o[4] = omega[1], o[5] = omega[2];
@@ -270,7 +270,7 @@ void BarycentricMappingRigid::apply_jt(int f, int role) {
     // The torque as forces: −x_k × τ on each vertex (the transpose of ω = Σ x_k × v_k).
     for (int k = 0; k < 4; ++k) {
       double c[3];
-      cross3(X + t[k] * 3, fi + 3, c);
+      rigid_cross3(X + t[k] * 3, fi + 3, c);
       for (int d = 0; d < 3; ++d) F[t[k] * 3 + d] -= c[d];
     }
   }

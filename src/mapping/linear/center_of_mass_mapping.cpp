@@ -1,4 +1,4 @@
-#include "mapping/center_of_mass_mapping.h"
+#include "mapping/linear/center_of_mass_mapping.h"
 
 #include "core/node.h"
 #include "core/registry.h"

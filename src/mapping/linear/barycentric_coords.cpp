@@ -1,4 +1,4 @@
-#include "mapping/barycentric_coords.h"
+#include "mapping/linear/barycentric_coords.h"
 
 #include <algorithm>
 #include <cmath>

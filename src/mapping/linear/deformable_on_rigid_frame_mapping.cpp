@@ -1,4 +1,4 @@
-#include "mapping/deformable_on_rigid_frame_mapping.h"
+#include "mapping/linear/deformable_on_rigid_frame_mapping.h"
 
 #include <string>
 

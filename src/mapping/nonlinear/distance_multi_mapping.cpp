@@ -1,9 +1,9 @@
-#include "mapping/distance_multi_mapping.h"
+#include "mapping/nonlinear/distance_multi_mapping.h"
 
 #include "core/node.h"
 #include "core/registry.h"
 #include "core/value_text.h"
-#include "mapping/edge_kernels.h"
+#include "mapping/nonlinear/edge_kernels.h"
 
 namespace sinew {
 

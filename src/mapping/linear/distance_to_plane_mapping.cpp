@@ -1,4 +1,4 @@
-#include "mapping/distance_to_plane_mapping.h"
+#include "mapping/linear/distance_to_plane_mapping.h"
 
 #include <cmath>
 #include <limits>

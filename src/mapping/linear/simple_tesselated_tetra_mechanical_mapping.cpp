@@ -1,4 +1,4 @@
-#include "mapping/simple_tesselated_tetra_mechanical_mapping.h"
+#include "mapping/linear/simple_tesselated_tetra_mechanical_mapping.h"
 
 #include "core/node.h"
 #include "core/registry.h"

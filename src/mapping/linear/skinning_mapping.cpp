@@ -1,4 +1,4 @@
-#include "mapping/skinning_mapping.h"
+#include "mapping/linear/skinning_mapping.h"
 
 #include <limits>
 #include <string>

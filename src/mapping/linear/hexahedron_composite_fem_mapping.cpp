@@ -1,4 +1,4 @@
-#include "mapping/hexahedron_composite_fem_mapping.h"
+#include "mapping/linear/hexahedron_composite_fem_mapping.h"
 
 #include "core/node.h"
 #include "core/registry.h"

@@ -1,4 +1,4 @@
-#include "mapping/identity_mapping.h"
+#include "mapping/linear/identity_mapping.h"
 
 #include <algorithm>
 

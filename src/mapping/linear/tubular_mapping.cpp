@@ -1,4 +1,4 @@
-#include "mapping/tubular_mapping.h"
+#include "mapping/linear/tubular_mapping.h"
 
 #include <cmath>
 

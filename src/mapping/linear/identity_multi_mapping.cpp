@@ -1,7 +1,7 @@
 // IdentityMultiMapping: the concatenation of its inputs, every point of the first input,
 // then of the second, ... (a GatherMultiMapping, see subset_multi_mapping.h).
 #include "core/registry.h"
-#include "mapping/subset_multi_mapping.h"
+#include "mapping/linear/subset_multi_mapping.h"
 
 namespace sinew {
 

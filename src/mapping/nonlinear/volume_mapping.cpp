@@ -1,8 +1,8 @@
-#include "mapping/volume_mapping.h"
+#include "mapping/nonlinear/volume_mapping.h"
 
 #include "core/registry.h"
 #include "core/value_text.h"
-#include "mapping/element_measure_kernels.h"
+#include "mapping/nonlinear/element_measure_kernels.h"
 
 namespace sinew {
 

@@ -1,4 +1,4 @@
-#include "mapping/distance_from_target_mapping.h"
+#include "mapping/nonlinear/distance_from_target_mapping.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "mapping/subset_multi_mapping.h"
+#include "mapping/linear/subset_multi_mapping.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "mapping/barycentric_table.h"
+#include "mapping/linear/barycentric_table.h"
 
 #include <algorithm>
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/roles.h"
-#include "mapping/barycentric_table.h"
+#include "mapping/linear/barycentric_table.h"
 
 namespace sinew {
 

@@ -1,4 +1,4 @@
-#include "mapping/square_mapping.h"
+#include "mapping/nonlinear/square_mapping.h"
 
 #include "core/registry.h"
 #include "core/value_text.h"

@@ -1,4 +1,4 @@
-#include "mapping/subset_mapping.h"
+#include "mapping/linear/subset_mapping.h"
 
 #include <cmath>
 

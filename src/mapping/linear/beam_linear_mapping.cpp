@@ -1,4 +1,4 @@
-#include "mapping/beam_linear_mapping.h"
+#include "mapping/linear/beam_linear_mapping.h"
 
 #include <cmath>
 

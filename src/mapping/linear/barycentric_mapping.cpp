@@ -1,8 +1,8 @@
-#include "mapping/barycentric_mapping.h"
+#include "mapping/linear/barycentric_mapping.h"
 
 #include "core/node.h"
 #include "core/registry.h"
-#include "mapping/barycentric_mapping_rigid.h"
+#include "mapping/linear/barycentric_mapping_rigid.h"
 #include "topology/grid/regular_grid_topology.h"
 #include "topology/grid/sparse_grid_topology.h"
 

@@ -1,10 +1,10 @@
-#include "mapping/square_distance_mapping.h"
+#include "mapping/nonlinear/square_distance_mapping.h"
 
 #include <algorithm>
 
 #include "core/node.h"
 #include "core/registry.h"
-#include "mapping/edge_kernels.h"
+#include "mapping/nonlinear/edge_kernels.h"
 
 namespace sinew {
 

@@ -1,4 +1,4 @@
-#include "mapping/edge_kernels.h"
+#include "mapping/nonlinear/edge_kernels.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "mapping/rigid_mapping.h"
+#include "mapping/nonlinear/rigid_mapping.h"
 
 #include <Eigen/Eigenvalues>
 
