@@ -508,8 +508,9 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
   for (const ExtraViewport& e : list.viewports)
     if (e.swap) swapped = &e;
   const double aspect = static_cast<double>(width_) / std::max(height_, 1);
-  if (swapped) draw_pass(list, viewport_view(*swapped, list.min, list.max, aspect), 0, 0, width_, height_);
-  else draw_pass(list, view, 0, 0, width_, height_);
+  // The lights' shadow maps do not depend on the view: drawn by the first pass only.
+  if (swapped) draw_pass(list, viewport_view(*swapped, list.min, list.max, aspect), 0, 0, width_, height_, true);
+  else draw_pass(list, view, 0, 0, width_, height_, true);
   // OglViewports, over the picture (SOFA's postDrawScene), each cleared to the background.
   for (const ExtraViewport& e : list.viewports) {
     const int x = e.x >= 0 ? e.x : width_ + e.x, y = e.y >= 0 ? e.y : height_ + e.y;
@@ -525,7 +526,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
     glEnable(GL_SCISSOR_TEST);
     glScissor(x, y, e.width, e.height);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    draw_pass(list, v, x, y, e.width, e.height);
+    draw_pass(list, v, x, y, e.width, e.height, false);
     glDisable(GL_SCISSOR_TEST);
   }
   glViewport(0, 0, width_, height_);
@@ -545,14 +546,15 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
   }
 }
 
-void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y, int width, int height) {
+void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y, int width, int height,
+                           bool shadow_maps) {
   glUseProgram(program_);
   glUniformMatrix4fv(u_view_, 1, GL_FALSE, view.view.data());  // Eigen is column-major, as GL
   glUniformMatrix4fv(u_proj_, 1, GL_FALSE, view.projection.data());
   glUniform1f(u_half_height_, 0.5f * static_cast<float>(height));
   view_ = view.view;
   set_lights(list.lighting, view);
-  set_shadows(list, view);  // may draw the lights' maps: the picture's framebuffer is bound after
+  set_shadows(list, view, shadow_maps);  // may draw the lights' maps: the picture's framebuffer is bound after
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glViewport(x, y, width, height);
   // SOFA's two visual passes: opaque models in graph order, then translucent ones.
@@ -758,7 +760,7 @@ void GlRenderer::sort_back_to_front(const Batch& b) {
   });
 }
 
-void GlRenderer::set_shadows(const DrawList& list, const View& view) {
+void GlRenderer::set_shadows(const DrawList& list, const View& view, bool render_maps) {
   const Lighting& l = list.lighting;
   const int n = l.from_scene ? static_cast<int>(std::min<std::size_t>(l.lights.size(), LightManager::kMaxLights)) : 0;
   bool shaded = false;
@@ -782,7 +784,7 @@ void GlRenderer::set_shadows(const DrawList& list, const View& view) {
     if (!lv) continue;
     const int size = shadow_map_size(s.texture_size, width_, height_);
     if (!shadow_map(i, size)) continue;
-    render_shadow_map(list, *lv, shadow_maps_[i]);
+    if (render_maps) render_shadow_map(list, *lv, shadow_maps_[i]);
     on[i] = 1, persp[i] = lv->perspective ? 1 : 0, far[i] = lv->far, texel[i] = 1.f / static_cast<float>(size);
     std::copy(lv->view_projection.data(), lv->view_projection.data() + 16, vp + 16 * i);
   }

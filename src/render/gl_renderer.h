@@ -59,7 +59,8 @@ class GlRenderer {
   std::vector<GpuBatch> gpu_;
   // The models seen through `view` in the rectangle (x, y, width, height) of the picture
   // (pixels from the bottom-left): opaque, then translucent.
-  void draw_pass(const DrawList& list, const View& view, int x, int y, int width, int height);
+  // `shadow_maps`: draw the lights' shadow maps first (once per picture).
+  void draw_pass(const DrawList& list, const View& view, int x, int y, int width, int height, bool shadow_maps);
   // Uploads `b` into `g` and draws it (`upload` false: drawn again from what was uploaded,
   // the second pass of a translucent model).
   void draw_batch(const Batch& b, GpuBatch& g, bool upload = true);
@@ -77,7 +78,7 @@ class GlRenderer {
     unsigned fbo = 0, texture = 0, depth = 0;
     int size = 0;
   };
-  void set_shadows(const DrawList& list, const View& view);
+  void set_shadows(const DrawList& list, const View& view, bool render_maps);
   bool shadow_map(int i, int size);  // map i made (or resized) to size × size
   void render_shadow_map(const DrawList& list, const LightView& lv, ShadowMap& m);
   unsigned shadow_program_ = 0;
