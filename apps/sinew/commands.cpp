@@ -281,7 +281,7 @@ int render(const RenderArgs& a) {
   runner::SessionOptions so;
   so.data_paths = data_paths_for(a.data_paths);
   so.script_args = a.script_args;
-  renderer->set_font(render::find_font(so.data_paths));
+  renderer->set_font(runner::find_data_file(so.data_paths, render::kFontFile));
   runner::Session session(a.scene, so);
   print_messages(session.diagnostics());
   std::size_t printed = session.diagnostics().messages().size();

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
 
 #include "core/node.h"
 #include "render/camera_view.h"
@@ -141,24 +139,6 @@ void add_legend(DrawList& list, const OglColorMap& map, Node& node) {
 }
 
 }  // namespace
-
-std::string find_font(const std::vector<std::string>& data_paths) {
-  std::vector<std::string> dirs = data_paths;
-  if (const char* env = std::getenv("SOFA_DATA_PATH")) {  // as the scene builder, after the others
-    std::string list = env;
-    for (std::size_t a = 0, b; a <= list.size(); a = b + 1) {
-      b = list.find(':', a);
-      if (b == std::string::npos) b = list.size();
-      if (b > a) dirs.push_back(list.substr(a, b - a));
-    }
-  }
-  std::error_code ec;
-  for (const std::string& dir : dirs) {
-    const std::filesystem::path p = std::filesystem::path(dir) / "textures" / "texture_ascii_smooth.png";
-    if (std::filesystem::is_regular_file(p, ec)) return p.string();
-  }
-  return {};
-}
 
 void add_texts(DrawList& list, Node& node, bool visual_models) {
   for (const auto& o : node.objects()) {

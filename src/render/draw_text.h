@@ -30,9 +30,8 @@ namespace sinew::render {
 
 struct View;
 
-// The font texture in the data folders, then in those of SOFA_DATA_PATH
-// (`dir/textures/texture_ascii_smooth.png`, first hit); empty when none has it.
-std::string find_font(const std::vector<std::string>& data_paths);
+// SOFA's font texture, relative to a data folder (front ends find it: runner::find_data_file).
+inline constexpr const char* kFontFile = "textures/texture_ascii_smooth.png";
 
 // Appends the texts of `node`'s components (not of its children) to list.texts. Visual3DText
 // needs the visual-model flag (`visual_models`); indices are drawn whatever the flags, as SOFA's

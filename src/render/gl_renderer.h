@@ -34,7 +34,7 @@ class GlRenderer {
   bool resize(int width, int height, std::string* error);
   // Copies the last drawn picture into the window's framebuffer (0), width × height pixels.
   void present(int width, int height);
-  // SOFA's ASCII font texture (render/draw_text.h find_font); without it texts are not drawn
+  // SOFA's ASCII font texture (render/draw_text.h kFontFile); without it texts are not drawn
   // (one message on stderr).
   void set_font(const std::string& path) { font_ = path; }
   int width() const { return width_; }

@@ -46,7 +46,7 @@ class OffscreenRenderer {
   // every picture frames what it shows. No effect on a scene camera's view, except its clip planes.
   bool frame(Node& root, std::string* error);
 
-  // SOFA's ASCII font texture for the scene's texts (render/draw_text.h find_font).
+  // SOFA's ASCII font texture for the scene's texts (render/draw_text.h kFontFile).
   void set_font(const std::string& path);
   const DrawList& draw_list() const { return list_; }
   const View& view() const { return view_; }

@@ -5,11 +5,19 @@
 
 #include "components/register_all.h"
 #include "core/simulation.h"
+#include "scene/resource_paths.h"
 
 namespace sinew::runner {
 
 std::vector<std::string> sofa_data_paths(const std::string& data_root) {
   return {data_root + "/share", data_root + "/examples"};
+}
+
+std::string find_data_file(const std::vector<std::string>& data_paths, const std::string& name) {
+  scene::ResourcePaths paths;
+  for (const std::string& dir : data_paths) paths.add(dir);
+  paths.add_from_env();
+  return paths.resolve(name, "").value_or(std::string());
 }
 
 Session::Session(const std::string& path, const SessionOptions& options) {

@@ -44,4 +44,8 @@ class Session {
 // Data folders for SOFA's layout under `data_root`: share/ then examples/.
 std::vector<std::string> sofa_data_paths(const std::string& data_root);
 
+// A data file (`name` relative to a data folder, e.g. SOFA's font texture) found as the scene
+// builder finds resources: in `data_paths`, then in those of SOFA_DATA_PATH. Empty when absent.
+std::string find_data_file(const std::vector<std::string>& data_paths, const std::string& name);
+
 }  // namespace sinew::runner

@@ -146,7 +146,7 @@ bool ViewerApp::open_window(std::string* error) {
     samples = software ? 0 : 4;
   }
   gl = render::GlRenderer::create(std::max(fb_width(), 1), std::max(fb_height(), 1), samples, error);
-  if (gl) gl->set_font(render::find_font(options.data_paths));
+  if (gl) gl->set_font(runner::find_data_file(options.data_paths, render::kFontFile));
   return gl != nullptr;
 }
 

@@ -11,6 +11,7 @@
 #include "render/draw_text.h"
 #include "render/offscreen.h"
 #include "render/png_io.h"
+#include "runner/session.h"
 #include "test_paths.h"
 #include "test_scene.h"
 #include "visual/rendering2d/ogl_label.h"
@@ -192,7 +193,7 @@ TEST(OglLabel, LabelUpdatedEveryNbSteps) {
 class TextPictureTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    font_ = render::find_font({std::string(SINEW_DATA_DIR) + "/share"});
+    font_ = runner::find_data_file({std::string(SINEW_DATA_DIR) + "/share"}, render::kFontFile);
     if (font_.empty()) GTEST_SKIP() << "SOFA's font texture not found under " << SINEW_DATA_DIR << "/share";
     std::string err;
     render::RenderOptions o;
