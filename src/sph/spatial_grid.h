@@ -89,17 +89,30 @@ struct PoolAllocator {
   bool operator==(const PoolAllocator<U>& o) const { return pool == o.pool; }
 };
 
-// Output of SpatialGrid::find_pairs. The vectors are scratch storage, longer
-// than `size` (the kernels write a few lanes past the last pair).
-// Pairs in the order found. They come in runs that share `first` (one run per
-// searching point, possibly empty): run k is [run_end[k-1], run_end[k]).
+// Output of SpatialGrid::find_pairs: the pairs in the order found, in runs
+// (one per searching point, possibly empty). Run k holds the pairs
+// [run_end[k-1], run_end[k]) (run_end[-1] = 0), each pairing run_first[k] with
+// second[e]. The vectors are scratch storage, longer than `size` and `runs`
+// (a vector store writes a few lanes past the last pair).
+//
+// The squared distances are not kept: r² = ((x2 − x1)² + (y2 − y1)²) +
+// (z2 − z1)² computed again from the points has the same bits in either
+// order of the pair, because a − b = −(b − a) exactly and squares drop the
+// sign. Not keeping them halves what the search and the row sort move.
 struct PairBuffer {
-  std::vector<std::uint32_t> first, second;
-  std::vector<double> r2;
+  std::vector<std::uint32_t> second;
+  std::vector<std::uint32_t> run_first, run_end;
   std::size_t size = 0;
-  std::vector<std::uint32_t> run_end;
   std::size_t runs = 0;
+  // Scratch of the AVX-512 search: the candidates of the visited cell (its
+  // stencil's entries, one range after the other).
+  std::vector<double> cand_x, cand_y, cand_z;
+  std::vector<std::uint32_t> cand_index;
 };
+
+// The search's kernels. All find the same pairs in the same order; `best` is
+// the widest the processor runs, and asking for one it lacks gets the next narrower.
+enum class PairKernel { scalar, avx2, avx512, best };
 
 class SpatialGrid {
  public:
@@ -138,12 +151,11 @@ class SpatialGrid {
   template <class F>
   void for_each_pair(double dist, F&& f) const;
 
-  // The pairs of for_each_pair, same pairs in the same order with the same r2
-  // bits, appended to flat arrays: out.first[k], out.second[k] are the point
-  // indices (i1, i2) for_each_pair would pass, out.r2[k] their squared
-  // distance. Uses AVX2 when the processor has it and `simd` is true.
-  // The arrays only grow (allocation-free once warm); out.size counts the pairs.
-  void find_pairs(double dist, PairBuffer& out, bool simd = true) const;
+  // The pairs of for_each_pair, in the same order, written to flat arrays:
+  // pair e of run k is (out.run_first[k], out.second[e]), the indices (i1, i2)
+  // for_each_pair would pass. The arrays only grow (allocation-free once
+  // warm); out.size counts the pairs.
+  void find_pairs(double dist, PairBuffer& out, PairKernel kernel = PairKernel::best) const;
 
   // Number of blocks created by the last update (non-empty ones and their face neighbours).
   std::size_t block_count() const { return blocks_.size() - 1; }
@@ -191,9 +203,9 @@ class SpatialGrid {
   std::vector<std::uint32_t> cell_start_;   // per global cell, +1 sentinel (block 0's cells are empty)
   std::vector<std::uint32_t> point_cell_;   // per point: its global cell
   // Points sorted by cell (stable), and their coordinates (one array per axis).
-  // Each array has kPad entries more than points, so that a 4-wide load
+  // Each array has kPad entries more than points, so that an 8-wide load
   // starting at any entry stays inside it (the extra lanes are masked).
-  static constexpr std::size_t kPad = 4;
+  static constexpr std::size_t kPad = 8;
   std::vector<std::uint32_t> entry_index_;
   std::vector<double> entry_x_, entry_y_, entry_z_;
 };

@@ -41,23 +41,17 @@ std::size_t pair_candidates(const PairCellJob& job) {
 }
 
 std::size_t pairs_scalar(const PairCellJob& job, const PairArrays& a, double dist2, PairBuffer& out, std::size_t n) {
-  std::uint32_t* first = out.first.data();
   std::uint32_t* second = out.second.data();
-  double* r2out = out.r2.data();
   for (std::uint32_t p = job.begin[0]; p < job.own_end; ++p) {
     const double x1 = a.x[p], y1 = a.y[p], z1 = a.z[p];
     for (int s = 0; s < job.ranges; ++s) {
       for (std::uint32_t q = s == 0 ? p + 1 : job.begin[s]; q < job.end[s]; ++q) {
         const double dx = a.x[q] - x1, dy = a.y[q] - y1, dz = a.z[q] - z1;
         const double r2 = dx * dx + dy * dy + dz * dz;
-        if (r2 < dist2) {
-          first[n] = a.idx[p];
-          second[n] = a.idx[q];
-          r2out[n] = r2;
-          ++n;
-        }
+        if (r2 < dist2) second[n++] = a.idx[q];
       }
     }
+    out.run_first[out.runs] = a.idx[p];
     out.run_end[out.runs++] = static_cast<std::uint32_t>(n);
   }
   return n;
@@ -65,23 +59,13 @@ std::size_t pairs_scalar(const PairCellJob& job, const PairArrays& a, double dis
 
 // Lanes kept for each 4-bit mask, packed to the front (unused slots repeat lane 0).
 struct PairPackTable {
-  alignas(32) std::int32_t lanes32[16][4];   // for 4 × 32-bit (point indices)
-  alignas(32) std::int32_t lanes64[16][8];   // for 4 × 64-bit (r², as pairs of 32-bit halves)
+  alignas(32) std::int32_t lanes32[16][4];
   PairPackTable() {
     for (int m = 0; m < 16; ++m) {
       int k = 0;
       for (int l = 0; l < 4; ++l)
-        if (m & (1 << l)) {
-          lanes32[m][k] = l;
-          lanes64[m][2 * k] = 2 * l;
-          lanes64[m][2 * k + 1] = 2 * l + 1;
-          ++k;
-        }
-      for (; k < 4; ++k) {
-        lanes32[m][k] = 0;
-        lanes64[m][2 * k] = 0;
-        lanes64[m][2 * k + 1] = 1;
-      }
+        if (m & (1 << l)) lanes32[m][k++] = l;
+      for (; k < 4; ++k) lanes32[m][k] = 0;
     }
   }
 };
@@ -89,14 +73,11 @@ const PairPackTable kPairPack;
 
 __attribute__((target("avx2,popcnt"))) std::size_t pairs_avx2(const PairCellJob& job, const PairArrays& a, double dist2,
                                                                 PairBuffer& out, std::size_t n) {
-  std::uint32_t* first = out.first.data();
   std::uint32_t* second = out.second.data();
-  double* r2out = out.r2.data();
   const __m256d d2 = _mm256_set1_pd(dist2);
   const __m256i lane = _mm256_set_epi64x(3, 2, 1, 0);
   for (std::uint32_t p = job.begin[0]; p < job.own_end; ++p) {
     const __m256d x1 = _mm256_set1_pd(a.x[p]), y1 = _mm256_set1_pd(a.y[p]), z1 = _mm256_set1_pd(a.z[p]);
-    const __m128i i1 = _mm_set1_epi32(static_cast<int>(a.idx[p]));
     for (int s = 0; s < job.ranges; ++s) {
       const std::uint32_t qe = job.end[s];
       for (std::uint32_t q = s == 0 ? p + 1 : job.begin[s]; q < qe; q += 4) {
@@ -109,15 +90,73 @@ __attribute__((target("avx2,popcnt"))) std::size_t pairs_avx2(const PairCellJob&
         const __m256d inside = _mm256_cmp_pd(r2, d2, _CMP_LT_OQ);
         const __m256i valid = _mm256_cmpgt_epi64(_mm256_set1_epi64x(static_cast<long long>(qe - q)), lane);
         const int m = _mm256_movemask_pd(_mm256_and_pd(inside, _mm256_castsi256_pd(valid)));
-        const __m256i perm64 = _mm256_load_si256(reinterpret_cast<const __m256i*>(kPairPack.lanes64[m]));
         const __m128i perm32 = _mm_load_si128(reinterpret_cast<const __m128i*>(kPairPack.lanes32[m]));
-        _mm256_storeu_pd(r2out + n, _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(r2), perm64)));
         const __m128 i2 = _mm_castsi128_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(a.idx + q)));
         _mm_storeu_si128(reinterpret_cast<__m128i*>(second + n), _mm_castps_si128(_mm_permutevar_ps(i2, perm32)));
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(first + n), i1);
         n += static_cast<std::size_t>(_mm_popcnt_u32(static_cast<unsigned>(m)));
       }
     }
+    out.run_first[out.runs] = a.idx[p];
+    out.run_end[out.runs++] = static_cast<std::uint32_t>(n);
+  }
+  return n;
+}
+
+// Eight candidates at a time, over the cell's candidates copied one range
+// after the other: each point then tests one contiguous list (the cell's own
+// points after it, then the stencil) with a single partial vector at its end,
+// where the 4-wide kernel has one per range (about eight). The kept lanes'
+// indices are packed by a compress; r² is the same expression.
+__attribute__((target("avx512f,avx512vl,popcnt"))) std::size_t pairs_avx512(const PairCellJob& job,
+                                                                              const PairArrays& a, double dist2,
+                                                                              PairBuffer& out, std::size_t n) {
+  std::size_t m = 0;
+  for (int s = 0; s < job.ranges; ++s) m += job.end[s] - job.begin[s];
+  if (out.cand_x.size() < m + 8) {
+    const std::size_t grown = std::max(m + 8, 2 * out.cand_x.size());
+    out.cand_x.resize(grown);
+    out.cand_y.resize(grown);
+    out.cand_z.resize(grown);
+    out.cand_index.resize(grown);
+  }
+  double* cx = out.cand_x.data();
+  double* cy = out.cand_y.data();
+  double* cz = out.cand_z.data();
+  std::uint32_t* ci = out.cand_index.data();
+  // Copied eight at a time: a copy may run up to seven entries past its range
+  // (the grid's arrays have kPad spare entries); the next range overwrites them.
+  for (int s = 0, k = 0; s < job.ranges; ++s) {
+    const std::uint32_t b = job.begin[s], len = job.end[s] - b;
+    for (std::uint32_t t = 0; t < len; t += 8) {
+      _mm512_storeu_pd(cx + k + t, _mm512_loadu_pd(a.x + b + t));
+      _mm512_storeu_pd(cy + k + t, _mm512_loadu_pd(a.y + b + t));
+      _mm512_storeu_pd(cz + k + t, _mm512_loadu_pd(a.z + b + t));
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(ci + k + t),
+                          _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a.idx + b + t)));
+    }
+    k += static_cast<int>(len);
+  }
+  std::uint32_t* second = out.second.data();
+  const __m512d d2 = _mm512_set1_pd(dist2);
+  // The cell's own points come first in the list (range 0 starts with them).
+  const std::size_t own = job.own_end - job.begin[0];
+  for (std::size_t k = 0; k < own; ++k) {
+    const __m512d x1 = _mm512_set1_pd(cx[k]), y1 = _mm512_set1_pd(cy[k]), z1 = _mm512_set1_pd(cz[k]);
+    for (std::size_t t = k + 1; t < m; t += 8) {
+      const std::size_t left = m - t;
+      const __mmask8 valid = left >= 8 ? static_cast<__mmask8>(0xff) : static_cast<__mmask8>((1u << left) - 1u);
+      const __m512d dx = _mm512_sub_pd(_mm512_loadu_pd(cx + t), x1);
+      const __m512d dy = _mm512_sub_pd(_mm512_loadu_pd(cy + t), y1);
+      const __m512d dz = _mm512_sub_pd(_mm512_loadu_pd(cz + t), z1);
+      // (dx² + dy²) + dz², as the scalar expression associates.
+      const __m512d r2 =
+          _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
+      const __mmask8 kept = _mm512_mask_cmp_pd_mask(valid, r2, d2, _CMP_LT_OQ);
+      const __m256i i2 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(ci + t));
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(second + n), _mm256_maskz_compress_epi32(kept, i2));
+      n += static_cast<std::size_t>(_mm_popcnt_u32(kept));
+    }
+    out.run_first[out.runs] = ci[k];
     out.run_end[out.runs++] = static_cast<std::uint32_t>(n);
   }
   return n;
@@ -128,17 +167,28 @@ bool cpu_has_avx2() {
   return yes;
 }
 
+bool cpu_has_avx512() {
+  static const bool yes =
+      __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("popcnt");
+  return yes;
+}
+
 }  // namespace
 
-void SpatialGrid::find_pairs(double dist, PairBuffer& out, bool simd) const {
+void SpatialGrid::find_pairs(double dist, PairBuffer& out, PairKernel kernel) const {
   const double dist2 = dist * dist;
-  const bool wide = simd && cpu_has_avx2();
+  if (kernel == PairKernel::best) kernel = PairKernel::avx512;
+  if (kernel == PairKernel::avx512 && !cpu_has_avx512()) kernel = PairKernel::avx2;
+  if (kernel == PairKernel::avx2 && !cpu_has_avx2()) kernel = PairKernel::scalar;
   const PairArrays arrays{entry_x_.data(), entry_y_.data(), entry_z_.data(), entry_index_.data()};
   const std::uint32_t* start = cell_start_.data();
   std::size_t n = 0;
   // One run per point: every point searches once, from its own cell.
   const std::size_t points = entry_index_.size() >= kPad ? entry_index_.size() - kPad : 0;
-  if (out.run_end.size() < points) out.run_end.resize(points);
+  if (out.run_end.size() < points) {
+    out.run_end.resize(points);
+    out.run_first.resize(points);
+  }
   out.runs = 0;
   for_each_cell([&](const std::uint32_t* cells) {
     PairCellJob job;
@@ -154,15 +204,14 @@ void SpatialGrid::find_pairs(double dist, PairBuffer& out, bool simd) const {
         ++job.ranges;
       }
     }
-    // Room for every candidate plus the lanes a 4-wide store writes past the last pair.
-    const std::size_t need = n + pair_candidates(job) + 4;
-    if (out.r2.size() < need) {
-      const std::size_t grown = std::max(need, 2 * out.r2.size());
-      out.first.resize(grown);
-      out.second.resize(grown);
-      out.r2.resize(grown);
+    // Room for every candidate plus the lanes an 8-wide store writes past the last pair.
+    const std::size_t need = n + pair_candidates(job) + 8;
+    if (out.second.size() < need) out.second.resize(std::max(need, 2 * out.second.size()));
+    switch (kernel) {
+      case PairKernel::avx512: n = pairs_avx512(job, arrays, dist2, out, n); break;
+      case PairKernel::avx2: n = pairs_avx2(job, arrays, dist2, out, n); break;
+      default: n = pairs_scalar(job, arrays, dist2, out, n); break;
     }
-    n = wide ? pairs_avx2(job, arrays, dist2, out, n) : pairs_scalar(job, arrays, dist2, out, n);
   });
   out.size = n;
 }

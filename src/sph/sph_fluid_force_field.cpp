@@ -57,30 +57,26 @@ void SPHFluidForceField::find_neighbours(const std::vector<double>& x) {
   grid_ = node()->find_up<SpatialGridContainer>();
   if (grid_ && grid_->state() == ComponentState::valid) {
     grid_->update(x);
-    grid_->grid().find_pairs(h, found_, sph::sph_simd_enabled());
+    grid_->grid().find_pairs(h, found_, sph::sph_simd_enabled() ? sph::PairKernel::best : sph::PairKernel::scalar);
   } else {
     found_.size = 0;
     found_.runs = 0;
-    if (found_.run_end.size() < n) found_.run_end.resize(n);
+    if (found_.run_end.size() < n) {
+      found_.run_end.resize(n);
+      found_.run_first.resize(n);
+    }
     for (std::size_t i = 0; i < n; ++i) {
       const double* xi = &x[3 * i];
       for (std::size_t j = i + 1; j < n; ++j) {
         const double* xj = &x[3 * j];
         const double dx = xj[0] - xi[0], dy = xj[1] - xi[1], dz = xj[2] - xi[2];
-        const double r2 = dx * dx + dy * dy + dz * dz;
-        if (r2 < h2) {
-          if (found_.size == found_.r2.size()) {
-            const std::size_t grown = std::max<std::size_t>(64, 2 * found_.size);
-            found_.first.resize(grown);
-            found_.second.resize(grown);
-            found_.r2.resize(grown);
-          }
-          found_.first[found_.size] = static_cast<std::uint32_t>(i);
-          found_.second[found_.size] = static_cast<std::uint32_t>(j);
-          found_.r2[found_.size] = r2;
-          ++found_.size;
+        if (dx * dx + dy * dy + dz * dz < h2) {
+          if (found_.size == found_.second.size())
+            found_.second.resize(std::max<std::size_t>(64, 2 * found_.size));
+          found_.second[found_.size++] = static_cast<std::uint32_t>(j);
         }
       }
+      found_.run_first[found_.runs] = static_cast<std::uint32_t>(i);
       found_.run_end[found_.runs++] = static_cast<std::uint32_t>(found_.size);
     }
   }
@@ -94,16 +90,14 @@ void SPHFluidForceField::find_neighbours(const std::vector<double>& x) {
   // each pair's read-modify-write to the previous one through memory.
   const std::size_t np = found_.size;
   const std::size_t runs = found_.runs;
-  const std::uint32_t* first = found_.first.data();
   const std::uint32_t* second = found_.second.data();
+  const std::uint32_t* run_first = found_.run_first.data();
   const std::uint32_t* run_end = found_.run_end.data();
-  const double* r2 = found_.r2.data();
   row_start_.assign(n + 1, 0);
   std::uint32_t* count = row_start_.data() + 1;
   for (std::size_t r = 0, k = 0; r < runs; ++r) {
     const std::size_t end = run_end[r];
-    if (k == end) continue;
-    const std::uint32_t f = first[k];
+    const std::uint32_t f = run_first[r];
     std::uint32_t own = 0;
     for (; k < end; ++k) {
       const std::uint32_t s = second[k];
@@ -114,33 +108,36 @@ void SPHFluidForceField::find_neighbours(const std::vector<double>& x) {
     count[f] += own;
   }
   for (std::size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
-  nb_j_.resize(np);
-  nb_q_.resize(np);
-  // Fill with a cursor per row (row_start_ shifted back afterwards). nb_q_
-  // holds r² until the kernel pass turns it into q = √(r²/h²).
+  // kPairPad slots more than pairs: the 4-wide passes over the rows read and
+  // write up to three slots past a row's end (see squared_distances).
+  nb_j_.resize(np + kPairPad);
+  std::fill(nb_j_.begin() + static_cast<std::ptrdiff_t>(np), nb_j_.end(), 0u);
+  nb_q_.resize(np + kPairPad);
+  // Fill with a cursor per row (row_start_ shifted back afterwards). The
+  // other point's slot and the run's own slot are both computed and one is
+  // chosen without a branch: whether a pair goes to the other row is not
+  // predictable.
   std::uint32_t* cursor = row_start_.data();
   std::uint32_t* nj = nb_j_.data();
-  double* nr2 = nb_q_.data();
   for (std::size_t r = 0, k = 0; r < runs; ++r) {
     const std::size_t end = run_end[r];
-    if (k == end) continue;
-    const std::uint32_t f = first[k];
-    const std::uint32_t base = cursor[f];
-    std::uint32_t own = 0;
+    const std::uint32_t f = run_first[r];
+    std::uint32_t own = cursor[f];
     for (; k < end; ++k) {
       const std::uint32_t s = second[k];
-      const bool lower = s < f;
+      const std::uint32_t lower = s < f ? 1u : 0u;
+      const std::uint32_t pick = 0u - lower;  // all ones when the pair goes to row s
       const std::uint32_t other = cursor[s];
-      const std::uint32_t slot = lower ? other : base + own;
-      cursor[s] = other + (lower ? 1u : 0u);
-      nj[slot] = lower ? f : s;
-      nr2[slot] = r2[k];
-      own += lower ? 0u : 1u;
+      cursor[s] = other + lower;
+      // Selects written as masks: GCC turns the ternaries back into branches.
+      nj[own ^ ((own ^ other) & pick)] = s ^ ((s ^ f) & pick);
+      own += 1u - lower;
     }
-    cursor[f] = base + own;
+    cursor[f] = own;
   }
   for (std::size_t i = n; i > 0; --i) row_start_[i] = row_start_[i - 1];
   row_start_[0] = 0;
+  squared_distances(x);
 
   if (debug_grid.value() && grid_) {
     // Brute-force check of the grid's pairs, per particle (SOFA's debugGrid).
@@ -157,6 +154,23 @@ void SPHFluidForceField::find_neighbours(const std::vector<double>& x) {
     }
     if (missing)
       msg_error(std::to_string(missing) + " particles have a different neighbour count on the grid than by brute force");
+  }
+}
+
+void SPHFluidForceField::squared_distances(const std::vector<double>& x) {
+  const std::size_t n = x.size() / 3;
+  double* r2 = nb_q_.data();
+  if (sph::pair_forces_simd_available()) {
+    sph::pair_squared_distances_avx2(n, row_start_.data(), nb_j_.data(), x.data(), r2, records_);
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* xi = &x[3 * i];
+    for (std::uint32_t e = row_start_[i]; e < row_start_[i + 1]; ++e) {
+      const double* xj = &x[3 * nb_j_[e]];
+      const double dx = xj[0] - xi[0], dy = xj[1] - xi[1], dz = xj[2] - xi[2];
+      r2[e] = dx * dx + dy * dy + dz * dz;
+    }
   }
 }
 
@@ -180,6 +194,12 @@ template <class Kd, class Kp>
 
 template <class Kd, class Kp>
 void kernel_pass(double* q, double* w, double* g, std::size_t np, double h2, double m, const Kd kd, const Kp kp) {
+  kernel_pass_body(q, w, g, np, h2, m, kd, kp);
+}
+
+template <class Kd, class Kp>
+__attribute__((target("avx512f,avx512vl,avx512dq,prefer-vector-width=512"))) void kernel_pass_avx512(
+    double* q, double* w, double* g, std::size_t np, double h2, double m, const Kd kd, const Kp kp) {
   kernel_pass_body(q, w, g, np, h2, m, kd, kp);
 }
 
@@ -211,14 +231,17 @@ void SPHFluidForceField::compute_force(const std::vector<double>& x, const std::
   const Kc kc(h);
   const std::uint32_t* rs = row_start_.data();
   const std::uint32_t* nj = nb_j_.data();
-  const std::size_t np = nb_j_.size();
+  const std::size_t np = row_start_[n];
 
   // Per-pair kernel terms first, in a loop without branches (the compiler
   // vectorizes it): q = √(r²/h²) in place, m·W(q) for the density, ∇W's scalar for the
   // pressure. The same expressions as inline, so the same bits.
   pair_w_.resize(np);
   pair_g_.resize(np);
-  if (sph::pair_forces_simd_available())
+  if (sph::pair_forces_simd_available() && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+      __builtin_cpu_supports("avx512dq"))
+    kernel_pass_avx512(nb_q_.data(), pair_w_.data(), pair_g_.data(), np, h2, m, kd, kp);
+  else if (sph::pair_forces_simd_available())
     kernel_pass_avx2(nb_q_.data(), pair_w_.data(), pair_g_.data(), np, h2, m, kd, kp);
   else
     kernel_pass(nb_q_.data(), pair_w_.data(), pair_g_.data(), np, h2, m, kd, kp);

@@ -50,13 +50,18 @@ class SPHFluidForceField final : public ForceField {
   const std::vector<double>& densities() const { return density_; }
   const std::vector<double>& pressures() const { return pressure_; }
   // Neighbour pairs of the last add_force: row i lists (j > i, q = r/h).
-  std::size_t pair_count() const { return nb_j_.size(); }
+  std::size_t pair_count() const { return row_start_.empty() ? 0 : row_start_.back(); }
   const std::vector<std::uint32_t>& row_start() const { return row_start_; }
   const std::vector<std::uint32_t>& neighbours() const { return nb_j_; }
   const std::vector<double>& neighbour_q() const { return nb_q_; }
 
  private:
+  // Slots past the last pair in nb_j_ and nb_q_ (4-wide passes over the rows).
+  static constexpr std::size_t kPairPad = 4;
+
   void find_neighbours(const std::vector<double>& x);
+  // r² of each pair into nb_q_ (the search does not keep it; see sph::PairBuffer).
+  void squared_distances(const std::vector<double>& x);
   template <class Kd, class Kp, class Kv, class Kc>
   void compute_force(const std::vector<double>& x, const std::vector<double>& v, std::vector<double>& f);
 
@@ -68,7 +73,7 @@ class SPHFluidForceField final : public ForceField {
   std::vector<double> nb_q_;
   std::vector<double> density_, pressure_, normal_, curvature_, p_over_rho2_;
   std::vector<double> pair_w_, pair_g_;  // per pair: m·W(q), the pressure kernel's gradient scalar
-  std::vector<double> records_;          // scratch of the SIMD force path (sph_pair_forces.h)
+  std::vector<double> records_;          // scratch of the SIMD passes (sph_pair_forces.h)
   bool warned_kernel_ = false;
 };
 

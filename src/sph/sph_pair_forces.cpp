@@ -32,6 +32,39 @@ bool pair_forces_simd_available() { return g_sph_simd.load(std::memory_order_rel
 void set_sph_simd(bool enabled) { g_sph_simd.store(enabled, std::memory_order_relaxed); }
 bool sph_simd_enabled() { return g_sph_simd.load(std::memory_order_relaxed); }
 
+__attribute__((target("avx2"))) void pair_squared_distances_avx2(std::size_t n, const std::uint32_t* row_start,
+                                                                  const std::uint32_t* neighbour, const double* x,
+                                                                  double* r2, std::vector<double>& points) {
+  // (x, y, z, 0) per particle: four of them load as four vectors and transpose
+  // into the three coordinates of four neighbours.
+  points.resize(4 * n + 4);
+  double* pts = points.data();
+  if (reinterpret_cast<std::uintptr_t>(pts) % 32 != 0) pts += (32 - reinterpret_cast<std::uintptr_t>(pts) % 32) / 8;
+  for (std::size_t i = 0; i < n; ++i) {
+    pts[4 * i] = x[3 * i];
+    pts[4 * i + 1] = x[3 * i + 1];
+    pts[4 * i + 2] = x[3 * i + 2];
+    pts[4 * i + 3] = 0.0;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t e_end = row_start[i + 1];
+    std::uint32_t e = row_start[i];
+    if (e == e_end) continue;
+    const __m256d xi0 = _mm256_set1_pd(pts[4 * i]), xi1 = _mm256_set1_pd(pts[4 * i + 1]);
+    const __m256d xi2 = _mm256_set1_pd(pts[4 * i + 2]);
+    for (; e < e_end; e += 4) {
+      __m256d xj0, xj1, xj2, unused;
+      transpose4(_mm256_load_pd(pts + 4 * neighbour[e]), _mm256_load_pd(pts + 4 * neighbour[e + 1]),
+                 _mm256_load_pd(pts + 4 * neighbour[e + 2]), _mm256_load_pd(pts + 4 * neighbour[e + 3]), xj0, xj1,
+                 xj2, unused);
+      const __m256d dx = _mm256_sub_pd(xj0, xi0), dy = _mm256_sub_pd(xj1, xi1), dz = _mm256_sub_pd(xj2, xi2);
+      // (dx² + dy²) + dz², as the search associates it.
+      _mm256_storeu_pd(r2 + e, _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+                                             _mm256_mul_pd(dz, dz)));
+    }
+  }
+}
+
 __attribute__((target("avx2"))) void add_pair_forces_avx2(const PairForceInput& in, double* f,
                                                            std::vector<double>& records) {
   const std::size_t n = in.n;

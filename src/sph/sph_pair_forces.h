@@ -37,6 +37,16 @@ bool pair_forces_simd_available();
 void set_sph_simd(bool enabled);
 bool sph_simd_enabled();
 
+// r² of every pair of the rows (row i: pairs (i, neighbour[e]) for e in
+// [row_start[i], row_start[i + 1])): ((x_j − x_i)² + (y_j − y_i)²) + (z_j − z_i)²,
+// the pair search's expression, so the same bits as the search's test saw.
+// Four pairs at a time: it writes up to three slots past a row's end, which
+// the next rows overwrite, so r2 and neighbour need three slots more than the
+// pairs (neighbour's extra slots holding valid point indices). Precondition:
+// pair_forces_simd_available(). `points` is scratch (4 doubles per particle).
+void pair_squared_distances_avx2(std::size_t n, const std::uint32_t* row_start, const std::uint32_t* neighbour,
+                                 const double* x, double* r2, std::vector<double>& points);
+
 // Adds the forces of every pair to f (3 per particle). Precondition:
 // pair_forces_simd_available(). `records` is scratch (8 doubles per particle).
 void add_pair_forces_avx2(const PairForceInput& in, double* f, std::vector<double>& records);
