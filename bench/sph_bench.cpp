@@ -8,7 +8,8 @@
 //   BM_SphStep/1000, /10000, /50000   ms per step
 //   BM_SphNeighbours/...              the grid update and pair search alone
 //                                     (find_pairs, as SPHFluidForceField uses it;
-//                                     /simd:0 the scalar kernel, /simd:1 AVX2 when present)
+//                                     /simd:0 the scalar kernel, /simd:1 AVX2,
+//                                     /simd:2 AVX-512, each when the processor has it)
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -70,16 +71,16 @@ void BM_SphNeighbours(benchmark::State& state) {
   const std::vector<double>& x = s.root->find_child_named("fluid")->mechanical_state->read(kPosition);
   sph::SpatialGrid grid(0.75);
   sph::PairBuffer pairs;
-  const bool simd = state.range(1) != 0;
+  const auto kernel = static_cast<sph::PairKernel>(state.range(1));
   for (auto _ : state) {
     grid.update(x.data(), x.size() / 3);
-    grid.find_pairs(0.745, pairs, simd);
+    grid.find_pairs(0.745, pairs, kernel);
     benchmark::DoNotOptimize(pairs.size);
   }
   state.counters["pairs"] = static_cast<double>(pairs.size);
 }
 BENCHMARK(BM_SphNeighbours)
-    ->ArgsProduct({{1000, 10000, 50000}, {0, 1}})
+    ->ArgsProduct({{1000, 10000, 50000}, {0, 1, 2}})
     ->ArgNames({"", "simd"})
     ->Unit(benchmark::kMillisecond);
 

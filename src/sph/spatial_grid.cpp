@@ -41,6 +41,11 @@ void SpatialGrid::update(const double* x, std::size_t n) {
   blocks_.resize(1);
   point_cell_.resize(n);
   static constexpr int kDir[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+  // Points of consecutive indices are often in the same block: the last
+  // block is reused without the map (looking an existing key up again changes
+  // nothing in the map, so the iteration order stays SOFA's).
+  Key last{};
+  std::uint32_t last_b = 0;
   for (std::size_t i = 0; i < n; ++i) {
     int ix = sofa_rfloor(x[3 * i] * inv_cell_width_);
     int iy = sofa_rfloor(x[3 * i + 1] * inv_cell_width_);
@@ -49,7 +54,9 @@ void SpatialGrid::update(const double* x, std::size_t n) {
     ix &= kDim - 1;
     iy &= kDim - 1;
     iz &= kDim - 1;
-    const std::uint32_t b = get_block(k);
+    const std::uint32_t b = last_b != 0 && KeyEqual{}(k, last) ? last_b : get_block(k);
+    last = k;
+    last_b = b;
     if (blocks_[b].empty) {
       blocks_[b].empty = false;
       // Create the six face neighbours (SOFA's add(), allNeighbors = false).

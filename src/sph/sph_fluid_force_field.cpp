@@ -49,6 +49,18 @@ void SPHFluidForceField::init() {
   pressure_.assign(n, 0.0);
 }
 
+namespace {
+
+sph::PairKernel pair_kernel(sph::SphSimd level) {
+  switch (level) {
+    case sph::SphSimd::avx512: return sph::PairKernel::avx512;
+    case sph::SphSimd::avx2: return sph::PairKernel::avx2;
+    default: return sph::PairKernel::scalar;
+  }
+}
+
+}  // namespace
+
 void SPHFluidForceField::find_neighbours(const std::vector<double>& x) {
   const std::size_t n = x.size() / 3;
   const double h = radius.value();
@@ -57,7 +69,7 @@ void SPHFluidForceField::find_neighbours(const std::vector<double>& x) {
   grid_ = node()->find_up<SpatialGridContainer>();
   if (grid_ && grid_->state() == ComponentState::valid) {
     grid_->update(x);
-    grid_->grid().find_pairs(h, found_, sph::sph_simd_enabled() ? sph::PairKernel::best : sph::PairKernel::scalar);
+    grid_->grid().find_pairs(h, found_, pair_kernel(sph::sph_simd()));
   } else {
     found_.size = 0;
     found_.runs = 0;
@@ -160,7 +172,7 @@ void SPHFluidForceField::find_neighbours(const std::vector<double>& x) {
 void SPHFluidForceField::squared_distances(const std::vector<double>& x) {
   const std::size_t n = x.size() / 3;
   double* r2 = nb_q_.data();
-  if (sph::pair_forces_simd_available()) {
+  if (sph::sph_simd() >= sph::SphSimd::avx2) {
     sph::pair_squared_distances_avx2(n, row_start_.data(), nb_j_.data(), x.data(), r2, records_);
     return;
   }
@@ -238,10 +250,10 @@ void SPHFluidForceField::compute_force(const std::vector<double>& x, const std::
   // pressure. The same expressions as inline, so the same bits.
   pair_w_.resize(np);
   pair_g_.resize(np);
-  if (sph::pair_forces_simd_available() && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
-      __builtin_cpu_supports("avx512dq"))
+  const sph::SphSimd simd = sph::sph_simd();
+  if (simd == sph::SphSimd::avx512)
     kernel_pass_avx512(nb_q_.data(), pair_w_.data(), pair_g_.data(), np, h2, m, kd, kp);
-  else if (sph::pair_forces_simd_available())
+  else if (simd == sph::SphSimd::avx2)
     kernel_pass_avx2(nb_q_.data(), pair_w_.data(), pair_g_.data(), np, h2, m, kd, kp);
   else
     kernel_pass(nb_q_.data(), pair_w_.data(), pair_g_.data(), np, h2, m, kd, kp);
@@ -293,7 +305,7 @@ void SPHFluidForceField::compute_force(const std::vector<double>& x, const std::
   // SOFA's literal constants are floats: 0.01f is not 0.01, 0.5f happens to be 0.5.
   const double soft = static_cast<double>(0.01f) * h2;
   const double half = static_cast<double>(0.5f);
-  if (visc_type != 1 && tension_type != 1 && sph::pair_forces_simd_available()) {
+  if (visc_type != 1 && tension_type != 1 && simd >= sph::SphSimd::avx2) {
     sph::PairForceInput in;
     in.n = n;
     in.row_start = rs;
@@ -311,7 +323,10 @@ void SPHFluidForceField::compute_force(const std::vector<double>& x, const std::
     in.soft = soft;
     in.half = half;
     in.artificial_viscosity = visc_type == 2;
-    sph::add_pair_forces_avx2(in, f.data(), records_);
+    if (simd == sph::SphSimd::avx512)
+      sph::add_pair_forces_avx512(in, f.data(), records_);
+    else
+      sph::add_pair_forces_avx2(in, f.data(), records_);
     return;
   }
   for (std::size_t i = 0; i < n; ++i) {

@@ -276,11 +276,13 @@ TEST(SPHFluidForceField, RowsKeepTheGridsOrderOfDiscovery) {
   EXPECT_GT(pairs, 1000u);
 }
 
-// The AVX2 pair search and force loop (when the processor has AVX2) against the
-// scalar code, over 60 steps of a splashing block, for the options each path
-// covers: every bit of every position and velocity must agree.
+// The vector passes (AVX2, and AVX-512 where the processor has them) against
+// the scalar code, over 60 steps of a splashing block, for the options each
+// path covers: every bit of every position and velocity must agree.
 TEST(SPHFluidForceField, SimdPathsGiveTheScalarStatesBitForBit) {
-  if (!sph::pair_forces_simd_available()) GTEST_SKIP() << "no AVX2 on this processor: only the scalar path runs";
+  sph::set_sph_simd_ceiling(sph::SphSimd::avx512);
+  const sph::SphSimd widest = sph::sph_simd();
+  if (widest == sph::SphSimd::scalar) GTEST_SKIP() << "no AVX2 on this processor: only the scalar path runs";
   const std::string pos = lattice(6, 11, 5, 0.3, -0.7, 0.05, -0.4);
   const char* walls = "<PlaneForceField normal='0 1 0' d='0'/><PlaneForceField normal='1 0 0' d='-1'/>"
                       "<PlaneForceField normal='-1 0 0' d='-2'/>";
@@ -288,26 +290,30 @@ TEST(SPHFluidForceField, SimdPathsGiveTheScalarStatesBitForBit) {
                              "pressure='1000' surfaceTension='-1000'",
                              "radius='0.745' density='15' kernelType='0' viscosityType='0' pressure='300'",
                              "radius='0.6' density='20' kernelType='0' viscosityType='2' viscosity='3' pressure='500'"}) {
-    std::vector<double> states[2];
-    for (bool simd : {false, true}) {
-      sph::set_sph_simd(simd);
+    std::vector<double> states[3];
+    for (sph::SphSimd level : {sph::SphSimd::scalar, sph::SphSimd::avx2, sph::SphSimd::avx512}) {
+      if (level > widest) continue;
+      sph::set_sph_simd_ceiling(level);
       auto scene = test::load(fluid_scene(pos, params, walls, "0 -10 0"));
       ASSERT_TRUE(scene.root);
       for (int k = 0; k < 60; ++k) animate(*scene.root);
       MechanicalState& s = *scene.root->find_child_named("fluid")->mechanical_state;
-      states[simd] = s.read(kPosition);
-      states[simd].insert(states[simd].end(), s.read(kVelocity).begin(), s.read(kVelocity).end());
+      std::vector<double>& state = states[static_cast<int>(level)];
+      state = s.read(kPosition);
+      state.insert(state.end(), s.read(kVelocity).begin(), s.read(kVelocity).end());
     }
-    sph::set_sph_simd(true);
-    ASSERT_EQ(states[0].size(), states[1].size());
-    std::size_t differ = 0;
-    for (std::size_t k = 0; k < states[0].size(); ++k) differ += states[0][k] != states[1][k] ? 1 : 0;
-    EXPECT_EQ(differ, 0u) << params;
+    sph::set_sph_simd_ceiling(sph::SphSimd::avx512);
+    for (int level = 1; level <= static_cast<int>(widest); ++level) {
+      ASSERT_EQ(states[0].size(), states[level].size());
+      std::size_t differ = 0;
+      for (std::size_t k = 0; k < states[0].size(); ++k) differ += states[0][k] != states[level][k] ? 1 : 0;
+      EXPECT_EQ(differ, 0u) << params << " (level " << level << ")";
+    }
     // The fluid moved (the comparison is not between two resting blocks).
     const std::vector<double> start = test::load(fluid_scene(pos, params, walls, "0 -10 0"))
                                           .root->find_child_named("fluid")->mechanical_state->read(kPosition);
     double moved = 0;
-    for (std::size_t k = 0; k < start.size(); ++k) moved = std::max(moved, std::abs(states[1][k] - start[k]));
+    for (std::size_t k = 0; k < start.size(); ++k) moved = std::max(moved, std::abs(states[0][k] - start[k]));
     EXPECT_GT(moved, 0.05) << params;
   }
 }
