@@ -14,6 +14,7 @@
 #include "visual/drawing/ogl_scene_frame.h"
 #include "visual/ogl_model.h"
 #include "visual/rendering2d/ogl_viewport.h"
+#include "visual/shader/order_independent_transparency.h"
 #include "visual/visual_style.h"
 
 namespace sinew::render {
@@ -385,6 +386,10 @@ void gather(Node& root, DrawList& out) {
       if (f->alignment.get() == kCorners[i]) out.frame.corner = i;
     out.frame.size = f->viewport_size.get();
   }
+  // SOFA's visual loop asks the root node's visual managers only.
+  const auto* oit = root.find_local<OrderIndependentTransparencyManager>();
+  out.oit.on = oit && oit->state() == ComponentState::valid;
+  out.oit.depth_scale = oit ? static_cast<float>(oit->depth_scale.get()) : 0.01f;
   Lighting& l = out.lighting;
   l.lights.clear();
   const LightManager* lm = root.find_down<LightManager>();

@@ -120,6 +120,13 @@ struct ExtraViewport {
   bool swap = false;                        // swapMainView
 };
 
+// OrderIndependentTransparencyManager in the root node: the translucent visual models
+// (triangle batches) are drawn by weighted blended order-independent transparency.
+struct Oit {
+  bool on = false;
+  float depth_scale = 0.01f;  // of the blending weights (1/length)
+};
+
 struct DrawList {
   std::vector<Batch> batches;
   std::vector<ExtraViewport> viewports;  // OglViewports shown, in graph order
@@ -129,6 +136,7 @@ struct DrawList {
   // x0 y0 x1 y1 (y down from the top) then r g b a, 8 floats each.
   std::vector<float> overlay_rects;
   Lighting lighting;
+  Oit oit;
   SceneFrame frame;
   std::size_t used = 0;  // batches[0, used) are this frame's
   // Bounding box of what is drawn (valid when has_bounds).

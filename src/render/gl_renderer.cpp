@@ -108,7 +108,12 @@ uniform sampler2D u_shadow_map4;
 uniform sampler2D u_shadow_map5;
 uniform sampler2D u_shadow_map6;
 uniform sampler2D u_shadow_map7;
-out vec4 frag_color;
+// OrderIndependentTransparencyManager's accumulation (docs/render.md): the weighted
+// premultiplied colour and alpha into target 0, alpha times the weight into target 1.
+uniform bool u_oit;
+uniform float u_oit_depth_scale;
+layout(location = 0) out vec4 frag_color;
+layout(location = 1) out float frag_oit_weight;
 // GLSL 3.30 indexes sampler arrays by constants only.
 vec2 shadow_moments(int i, vec2 uv) {
   if (i == 0) return texture(u_shadow_map0, uv).xy;
@@ -186,6 +191,37 @@ void main() {
     frag_color = vec4(min(c, vec3(1.0)), 1.0);
     return;
   }
+  if (u_oit) {
+    // SOFA's accumulation shader: light 0 (the headlight without a LightManager) at
+    // infinity, two-sided (|n·L|, |n·H|), no emissive term.
+    vec3 n = normalize(v_normal);
+    vec3 L = vec3(0.0, 0.0, 1.0), light = vec3(1.0), global_ambient = vec3(0.0);
+    if (u_scene_lights) {
+      global_ambient = u_global_ambient;
+      if (u_nlights > 0) {
+        L = normalize(u_light_pos[0].xyz);
+        light = u_light_color[0];
+      } else {
+        light = vec3(0.0);
+      }
+    }
+    vec3 H = normalize(L + vec3(0.0, 0.0, 1.0));
+    vec3 tex = vec3(1.0);
+    float alpha = v_color.a;
+    if (u_textured) {
+      vec4 t = texture(u_texture, v_texcoord);
+      tex = t.rgb;
+      alpha *= t.a;
+    }
+    vec3 c = u_ambient.rgb * light + global_ambient * u_ambient.rgb + v_color.rgb * tex * light * abs(dot(n, L)) +
+             u_specular.rgb * light * pow(abs(dot(n, H)), u_shininess);
+    c *= alpha;  // premultiplied
+    float depth = abs(1.0 / gl_FragCoord.w) * u_oit_depth_scale;
+    float w = clamp(0.03 / (1e-5 + pow(depth, 4.0)), 1e-2, 3e3);
+    frag_color = vec4(c * w, alpha);
+    frag_oit_weight = alpha * w;
+    return;
+  }
   if (!u_lit) { frag_color = vec4(v_color.rgb, 1.0); return; }
   if (u_sofa_shadow) {
     // Without a LightManager SOFA's shader has no light and draws the material's diffuse colour.
@@ -242,6 +278,28 @@ void main() {
     alpha = v_color.a;
   }
   frag_color = vec4(min(c, vec3(1.0)), u_translucent ? alpha : 1.0);
+}
+)";
+
+// OrderIndependentTransparencyManager's composition: a triangle covering the viewport; the
+// normalised weighted colour over the picture, covering 1 − Π(1 − alpha) of it (blended
+// with ONE, ONE_MINUS_SRC_ALPHA).
+const char* kOitVertexShader = R"(#version 330 core
+void main() {
+  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
+  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+}
+)";
+const char* kOitFragmentShader = R"(#version 330 core
+uniform sampler2D u_accumulation;
+uniform sampler2D u_weight;
+out vec4 frag_color;
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  vec4 accumulation = texelFetch(u_accumulation, p, 0);
+  float revealage = accumulation.a;
+  vec3 color = accumulation.rgb / max(texelFetch(u_weight, p, 0).r, 0.00001);
+  frag_color = vec4(color, 1.0) * (1.0 - revealage);
 }
 )";
 
@@ -366,6 +424,12 @@ std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int sample
   if (!r->text_program_) return nullptr;
   r->shadow_program_ = link(kShadowVertexShader, kShadowFragmentShader, error);
   if (!r->shadow_program_) return nullptr;
+  r->oit_program_ = link(kOitVertexShader, kOitFragmentShader, error);
+  if (!r->oit_program_) return nullptr;
+  glUseProgram(r->oit_program_);
+  glUniform1i(glGetUniformLocation(r->oit_program_, "u_accumulation"), kOitUnit);
+  glUniform1i(glGetUniformLocation(r->oit_program_, "u_weight"), kOitUnit + 1);
+  glGenVertexArrays(1, &r->oit_vao_);
   glUseProgram(r->text_program_);
   glUniform1i(glGetUniformLocation(r->text_program_, "u_font"), 0);  // texture unit 0
   const unsigned p = r->program_;
@@ -395,6 +459,8 @@ std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int sample
   r->u_light_exp_ = glGetUniformLocation(p, "u_light_exp");
   r->u_light_att_ = glGetUniformLocation(p, "u_light_att");
   r->u_sofa_shadow_ = glGetUniformLocation(p, "u_sofa_shadow");
+  r->u_oit_ = glGetUniformLocation(p, "u_oit");
+  r->u_oit_depth_scale_ = glGetUniformLocation(p, "u_oit_depth_scale");
   glUseProgram(p);
   glUniform1i(glGetUniformLocation(p, "u_texture"), 0);  // texture unit 0
   for (int i = 0; i < static_cast<int>(LightManager::kMaxLights); ++i)  // units 1 to 8
@@ -437,11 +503,101 @@ bool GlRenderer::allocate(int width, int height, std::string* error) {
 }
 
 void GlRenderer::release_framebuffers() {
-  const unsigned rbs[] = {color_rb_, depth_rb_, resolve_rb_};
-  glDeleteRenderbuffers(3, rbs);
-  const unsigned fbos[] = {fbo_, resolve_fbo_};
-  glDeleteFramebuffers(2, fbos);
+  const unsigned rbs[] = {color_rb_, depth_rb_, resolve_rb_, oit_depth_rb_};
+  glDeleteRenderbuffers(4, rbs);
+  const unsigned fbos[] = {fbo_, resolve_fbo_, oit_fbo_};
+  glDeleteFramebuffers(3, fbos);
+  glDeleteTextures(2, oit_textures_);
   color_rb_ = depth_rb_ = resolve_rb_ = fbo_ = resolve_fbo_ = 0;
+  oit_fbo_ = oit_depth_rb_ = oit_textures_[0] = oit_textures_[1] = 0;
+}
+
+bool GlRenderer::oit_buffers() {
+  if (oit_fbo_) return true;
+  glGenFramebuffers(1, &oit_fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, oit_fbo_);
+  glGenTextures(2, oit_textures_);
+  const GLint formats[2] = {GL_RGBA16F, GL_R16F};
+  const GLenum layouts[2] = {GL_RGBA, GL_RED};
+  for (int k = 0; k < 2; ++k) {
+    glBindTexture(GL_TEXTURE_2D, oit_textures_[k]);
+    glTexImage2D(GL_TEXTURE_2D, 0, formats[k], width_, height_, 0, layouts[k], GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + k, GL_TEXTURE_2D, oit_textures_[k], 0);
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glGenRenderbuffers(1, &oit_depth_rb_);
+  glBindRenderbuffer(GL_RENDERBUFFER, oit_depth_rb_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width_, height_);  // the picture's format: blitted
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, oit_depth_rb_);
+  const bool ok = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  if (!ok) {
+    if (!oit_warned_)
+      std::fprintf(stderr, "sinew: order-independent transparency unavailable (float render targets): translucent "
+                           "models are blended in drawing order\n");
+    oit_warned_ = true;
+    const unsigned fbo = oit_fbo_;
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(2, oit_textures_);
+    glDeleteRenderbuffers(1, &oit_depth_rb_);
+    oit_fbo_ = oit_depth_rb_ = oit_textures_[0] = oit_textures_[1] = 0;
+  }
+  return ok;
+}
+
+bool GlRenderer::oit_batch(const DrawList& list, const Batch& b) {
+  return list.oit.on && b.translucent && b.kind == Batch::Kind::triangles && b.splat == Batch::Splat::none;
+}
+
+void GlRenderer::draw_oit(const DrawList& list, int x, int y, int width, int height) {
+  bool any = false;
+  for (std::size_t i = 0; i < list.used && !any; ++i) any = oit_batch(list, list.batches[i]);
+  if (!any || !oit_buffers()) return;
+  // The opaque models' depth, so that they hide what is behind them.
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, oit_fbo_);
+  glBlitFramebuffer(x, y, x + width, y + height, x, y, x + width, y + height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, oit_fbo_);
+  const GLenum targets[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, targets);
+  const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x, y, width, height);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  const float accumulation_clear[4] = {0.f, 0.f, 0.f, 1.f}, weight_clear[4] = {0.f, 0.f, 0.f, 0.f};
+  glClearBufferfv(GL_COLOR, 0, accumulation_clear);
+  glClearBufferfv(GL_COLOR, 1, weight_clear);
+  // Colours and weights add up; the alpha channel keeps the product of (1 − alpha).
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+  glDepthMask(GL_FALSE);
+  glUniform1i(u_oit_, 1);
+  glUniform1f(u_oit_depth_scale_, list.oit.depth_scale);
+  for (std::size_t i = 0; i < list.used; ++i)
+    if (oit_batch(list, list.batches[i])) draw_batch(list.batches[i], gpu_[i]);
+  glUniform1i(u_oit_, 0);
+  glDepthMask(GL_TRUE);
+  // Composition over the picture (its alpha kept).
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glDisable(GL_DEPTH_TEST);
+  glUseProgram(oit_program_);
+  for (int k = 0; k < 2; ++k) {
+    glActiveTexture(GL_TEXTURE0 + kOitUnit + k);
+    glBindTexture(GL_TEXTURE_2D, oit_textures_[k]);
+  }
+  glActiveTexture(GL_TEXTURE0);
+  glBindVertexArray(oit_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glUseProgram(program_);
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  if (!scissor) glDisable(GL_SCISSOR_TEST);
 }
 
 bool GlRenderer::resize(int width, int height, std::string* error) {
@@ -476,6 +632,8 @@ GlRenderer::~GlRenderer() {
   if (program_) glDeleteProgram(program_);
   if (text_program_) glDeleteProgram(text_program_);
   if (shadow_program_) glDeleteProgram(shadow_program_);
+  if (oit_program_) glDeleteProgram(oit_program_);
+  if (oit_vao_) glDeleteVertexArrays(1, &oit_vao_);
   for (ShadowMap& m : shadow_maps_) {
     if (m.fbo) glDeleteFramebuffers(1, &m.fbo);
     if (m.texture) glDeleteTextures(1, &m.texture);
@@ -566,7 +724,7 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   for (std::size_t i = 0; i < list.used; ++i) {
     const Batch& b = list.batches[i];
-    if (!b.translucent) continue;
+    if (!b.translucent || oit_batch(list, b)) continue;
     if (b.splat == Batch::Splat::soft) {  // PointSplatModel::drawTransparent: "over", back to front
       glEnable(GL_BLEND);
       glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -590,6 +748,7 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
   }
+  draw_oit(list, x, y, width, height);  // OrderIndependentTransparencyManager's models
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glUniform1i(u_translucent_, 0);
 }

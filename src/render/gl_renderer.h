@@ -85,6 +85,17 @@ class GlRenderer {
   int u_sofa_shadow_ = -1;
   ShadowMap shadow_maps_[8];
   bool shadow_warned_ = false;
+  // OrderIndependentTransparencyManager (list.oit): the translucent triangle batches
+  // accumulated into float targets over the opaque depth, then composed over the picture
+  // in the rectangle (x, y, width, height). Float targets made at first use, at the
+  // picture's size (none: blended in drawing order, one message).
+  static bool oit_batch(const DrawList& list, const Batch& b);
+  void draw_oit(const DrawList& list, int x, int y, int width, int height);
+  bool oit_buffers();
+  static constexpr int kOitUnit = 9;  // texture units 9 and 10 (0: models, 1-8: shadow maps)
+  unsigned oit_fbo_ = 0, oit_textures_[2] = {0, 0}, oit_depth_rb_ = 0, oit_program_ = 0, oit_vao_ = 0;
+  int u_oit_ = -1, u_oit_depth_scale_ = -1;
+  bool oit_warned_ = false;
   // The list's texts over the models (depth-tested ones first), blended, alpha kept.
   void draw_texts(const DrawList& list, const View& view);
   unsigned text_program_ = 0, text_vao_ = 0, text_vbo_ = 0;

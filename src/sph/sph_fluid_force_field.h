@@ -49,7 +49,8 @@ class SPHFluidForceField final : public ForceField {
   // Per-particle results of the last add_force (density ρ, pressure p).
   const std::vector<double>& densities() const { return density_; }
   const std::vector<double>& pressures() const { return pressure_; }
-  // Neighbour pairs of the last add_force: row i lists (j > i, q = r/h).
+  // Neighbour pairs of the last add_force: row i lists (j > i, q = r/h) in
+  // [row_start()[i], row_start()[i + 1]); the vectors have spare slots past the last pair.
   std::size_t pair_count() const { return row_start_.empty() ? 0 : row_start_.back(); }
   const std::vector<std::uint32_t>& row_start() const { return row_start_; }
   const std::vector<std::uint32_t>& neighbours() const { return nb_j_; }

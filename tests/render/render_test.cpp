@@ -357,6 +357,46 @@ TEST_F(RenderTest, TranslucentModelBlendsOverTheOpaqueOnes) {
   EXPECT_NEAR(two[2], 64, 2);
 }
 
+// OrderIndependentTransparencyManager in the root node: translucent models are
+// accumulated with SOFA's weights w = clamp(0.03 / (1e-5 + (depth·0.01)⁴), 1e-2, 3e3) and
+// composed as Σ c·a·w / Σ a·w covering 1 − Π(1 − a) of the picture. Red (a = 0.5) at eye
+// depth 4 (w = 2388.5) and green (a = 0.5) at depth 3 (w = 2775.2) over opaque blue:
+// (0.4625, 0.5375, 0)·0.75 + (0, 0, 1)·0.25 = (88.5, 102.8, 63.75)/255, whatever their order;
+// blended in drawing order they give (64, 128, 64). A translucent model behind an opaque one
+// stays hidden; a manager outside the root node does nothing, as in SOFA's visual loop.
+TEST_F(RenderTest, OrderIndependentTransparencyWeighsByDepthNotOrder) {
+  const std::string camera = "<InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>";
+  const std::string plain = "Ambient 0 0 0 0 1 Specular 0 0 0 0 1 Emissive 0 0 0 0 1 Shininess 0 45\"";
+  const std::string red = square("red", "material=\"m Diffuse 1 1 0 0 0.5 " + plain, 1.0);
+  const std::string green = square("green", "material=\"m Diffuse 1 0 1 0 0.5 " + plain, 2.0);
+  const std::string blue = square("blue", "material=\"m Diffuse 1 0 0 1 1 " + plain, 0.0);
+  const std::string manager = "<OrderIndependentTransparencyManager/>";
+  auto centre = [&](const std::string& xml) {
+    auto s = test::load("<Node name=\"root\">" + camera + xml + "</Node>");
+    const Image img = render(*s.root);
+    EXPECT_EQ(img.rgba[(100 * img.width + 100) * 4 + 3], 255) << "the picture stays opaque";
+    return img.rgb(100, 100);
+  };
+  for (const std::string& xml : {manager + blue + red + green, manager + green + red + blue}) {
+    const auto c = centre(xml);
+    EXPECT_NEAR(c[0], 88.5, 1.5);
+    EXPECT_NEAR(c[1], 102.8, 1.5);
+    EXPECT_NEAR(c[2], 63.75, 1.5);
+  }
+  const auto ordered = centre(blue + red + green);
+  EXPECT_NEAR(ordered[0], 64, 2);
+  EXPECT_NEAR(ordered[1], 128, 2);
+  EXPECT_EQ(centre(manager + blue + square("red", "material=\"m Diffuse 1 1 0 0 0.5 " + plain, -1.0)),
+            (std::array<int, 3>{0, 0, 255}));
+  auto nested = test::load("<Node name=\"root\">" + camera + "<Node name=\"inner\">" + manager + "</Node>" + blue +
+                           red + green + "</Node>");
+  ASSERT_TRUE(nested.root);
+  EXPECT_TRUE(test::any_contains(test::messages(nested.root->diagnostics(), Severity::warning), "not in the root node"));
+  const auto c = render(*nested.root).rgb(100, 100);
+  EXPECT_NEAR(c[0], 64, 2);
+  EXPECT_NEAR(c[1], 128, 2);
+}
+
 // Pixels of `img` with exactly the colour `c` (±2 per channel).
 long count_color(const Image& img, const std::array<int, 3>& c) {
   return count_if(img, [&](auto p) {

@@ -1,10 +1,11 @@
 // Rendering passes of a SOFA viewer (Sofa.GL.Component.Shader): PostProcessManager (a
-// full-screen shader after the scene) and OrderIndependentTransparencyManager (weighted
-// blending of translucent models). Sinew's renderer keeps its own shading and blends
-// translucent models in drawing order (docs/render.md); these are accepted with their Data
-// and validated.
+// full-screen shader after the scene: accepted with its Data and validated, not drawn) and
+// OrderIndependentTransparencyManager (weighted blending of translucent models, drawn by
+// src/render; docs/render.md).
+#include "core/node.h"
 #include "core/registry.h"
 #include "core/roles.h"
+#include "visual/shader/order_independent_transparency.h"
 
 namespace sinew {
 
@@ -21,11 +22,6 @@ class PostProcessManager final : public VisualComponent {
   }
 };
 
-class OrderIndependentTransparencyManager final : public VisualComponent {
- public:
-  Field<double> depth_scale{this, "depthScale", 0.01, "depth scale of the blending weights", "Visualization"};
-};
-
 template <class C>
 void add(Registry& r, const char* name, const char* what) {
   ComponentInfo info;
@@ -38,10 +34,22 @@ void add(Registry& r, const char* name, const char* what) {
 
 }  // namespace
 
+void OrderIndependentTransparencyManager::init() {
+  if (!(depth_scale.value() > 0.0))
+    msg_warning("depthScale should be positive (got " + std::to_string(depth_scale.value()) + ")");
+  if (node() && !node()->parents().empty())
+    msg_warning("not in the root node: SOFA's visual loop asks only the root node's managers to draw, so "
+                "translucent models are blended in drawing order");
+}
+
 void register_render_passes(Registry& r) {
   add<PostProcessManager>(r, "PostProcessManager", "full-screen shader pass after the scene");
-  add<OrderIndependentTransparencyManager>(r, "OrderIndependentTransparencyManager",
-                                           "order-independent transparency of translucent models");
+  ComponentInfo info;
+  info.name = "OrderIndependentTransparencyManager";
+  info.category = "Visual";
+  info.description = "order-independent transparency of the translucent visual models (viewer only)";
+  info.create = creator<OrderIndependentTransparencyManager>();
+  r.add(std::move(info));
 }
 
 }  // namespace sinew
