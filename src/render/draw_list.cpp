@@ -6,7 +6,9 @@
 #include <Eigen/Geometry>
 
 #include "core/node.h"
+#include "math/quat.h"
 #include "render/draw_collision.h"
+#include "render/draw_shapes.h"
 #include "render/draw_text.h"
 #include "render/draw_visual.h"
 #include "visual/clip_plane.h"
@@ -275,8 +277,22 @@ void visit(Node& node, const DisplayFlags& inherited, const ClipPlane* inherited
   add_camera_paths(list, node);
   for (const auto& o : node.objects())
     if (const auto* v = dynamic_cast<const OglViewport*>(o.get())) {
+      if (v->state() != ComponentState::valid) continue;
+      if (v->draw_camera.get()) {
+        // OglViewport::draw: its camera as a frame of size 0.1 (drawn whatever the display
+        // flags and `enabled`, so in the views too), the orientation taken as a frame's.
+        Vec3 p;
+        VecN<4> q;
+        v->camera(p, q);
+        Batch& b = fresh_batch(list, v, Batch::Kind::triangles);
+        b.shading = Shading{{0, 0, 0, 0}, {1, 1, 1, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
+        b.color_ambient = 0.2f;
+        b.shading_parsed = false;
+        append_frame(b, p, quat_to_matrix(quat_normalized(Quat::from(q.data()))), 0.1);
+        close_batch(list, b);
+      }
       // OglViewport::isVisible; with advancedRendering, only under that display flag.
-      if (!v->enabled.get() || v->state() != ComponentState::valid) continue;
+      if (!v->enabled.get()) continue;
       if (v->advanced_rendering.get() && !flags.shown(DisplayFlags::advanced_rendering)) continue;
       const VecNi<2>& at = v->screen_position.get();
       const VecNi<2>& size = v->screen_size.get();

@@ -91,5 +91,32 @@ TEST_F(ViewportPictureTest, SceneDrawnAgainInItsRectangle) {
   }
 }
 
+// drawCamera (OglViewport::draw): the view's camera as SOFA's frame of size 0.1, drawn even
+// when the view is disabled. Seen from z = 2 (120.7 px per unit), the red x shaft ends about
+// 12 px right of the centre, the green y shaft 12 px above; without drawCamera nothing
+// (a blue square in a corner, so that the picture has a visual model).
+TEST_F(ViewportPictureTest, DrawCameraShowsItsFrame) {
+  auto picture = [&](const char* draw) {
+    auto s = test::load(std::string("<Node name=\"root\"><InteractiveCamera position=\"0 0 2\" lookAt=\"0 0 0\"/>"
+                                    "<OglViewport enabled=\"0\" screenSize=\"100 100\" cameraPosition=\"0 0 0\" "
+                                    "drawCamera=\"") +
+                        draw +
+                        "\"/><Node name=\"sq\"><OglModel color=\"0 0 1\" position=\"-0.7 -0.7 0  -0.6 -0.7 0  -0.6 -0.6 0  "
+                        "-0.7 -0.6 0\" quads=\"0 1 2 3\"/></Node></Node>");
+    Image img;
+    std::string err;
+    EXPECT_TRUE(renderer_->render(*s.root, img, &err)) << err;
+    return img;
+  };
+  const auto green = [](const std::array<int, 3>& c) { return c[1] > 100 && c[0] < 20 && c[2] < 20; };
+  const Image on = picture("1");
+  EXPECT_TRUE(red(on.rgb(106, 100)));
+  EXPECT_TRUE(green(on.rgb(100, 94)));
+  EXPECT_FALSE(red(on.rgb(120, 100)));  // beyond the 0.12-long arrow (14.5 px)
+  const Image off = picture("0");
+  EXPECT_FALSE(red(off.rgb(106, 100)));
+  EXPECT_FALSE(green(off.rgb(100, 94)));
+}
+
 }  // namespace
 }  // namespace sinew

@@ -29,7 +29,7 @@ class OglViewport final : public VisualComponent {
   Field<bool> use_fbo{this, "useFBO", true, "render the view into a frame buffer object (same picture)",
                       "Visualization"};
   Field<bool> swap_main_view{this, "swapMainView", false, "swap this view with the main one", "Visualization"};
-  Field<bool> draw_camera{this, "drawCamera", false, "draw the view's camera in the main view (not drawn)",
+  Field<bool> draw_camera{this, "drawCamera", false, "draw the view's camera as a frame of size 0.1",
                           "Visualization"};
 
   void parse(AttributeMap& attrs, Diagnostics& diag) override;
