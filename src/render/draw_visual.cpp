@@ -318,13 +318,22 @@ void add_trails(DrawList& list, const TrailRenderer& t) {
 void add_camera_paths(DrawList& list, Node& node) {
   for (const auto& o : node.objects()) {
     const auto* c = dynamic_cast<const RecordedCamera*>(o.get());
-    if (!c || !c->draw_rotation.get() || c->state() != ComponentState::valid) continue;
-    const std::vector<Vec3> path = c->rotation_path();
-    Batch& b = fresh_batch(list, c, Batch::Kind::lines);
-    for (std::size_t i = 0; i < path.size(); ++i) push_line(b, path[i], path[(i + 1) % path.size()]);
-    for (std::size_t i = 0; i < 4; ++i) push_line(b, path[i * path.size() / 4], c->rotation_look_at.get());
-    set_color(b, "0 1 0.5 1", false);
-    if (b.positions.empty()) --list.used;
+    if (!c || c->state() != ComponentState::valid) continue;
+    if (c->draw_rotation.get()) {
+      const std::vector<Vec3> path = c->rotation_path();
+      if (path.empty()) continue;  // SOFA's draw returns, skipping the translation's path too
+      Batch& b = fresh_batch(list, c, Batch::Kind::lines);
+      for (std::size_t i = 0; i < path.size(); ++i) push_line(b, path[i], path[(i + 1) % path.size()]);
+      for (std::size_t i = 0; i < 4; ++i) push_line(b, path[i * path.size() / 4], c->rotation_look_at.get());
+      set_color(b, "0 1 0.5 1", false);
+    }
+    // drawTranslation: the segments between consecutive cameraPositions (not closed).
+    const std::vector<Vec3>& positions = c->camera_positions.get();
+    if (c->draw_translation.get() && positions.size() >= 2) {
+      Batch& b = fresh_batch(list, c, Batch::Kind::lines);
+      for (std::size_t i = 0; i + 1 < positions.size(); ++i) push_line(b, positions[i], positions[i + 1]);
+      set_color(b, "0 1 0.5 1", false);
+    }
   }
 }
 

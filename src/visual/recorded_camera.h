@@ -7,8 +7,9 @@
 // - navigationMode: along `cameraPositions` with `cameraOrientations` slerped.
 // The camera is moved at each AnimateBeginEvent whose time reached the next step (SOFA's
 // m_nextStep), and put back by a reset; the renderer reads the moved BaseCamera Data.
-// `drawRotation` draws the rotation's circle and four lines to the point looked at
-// (src/render). Its mouse modes are the viewer's.
+// `drawRotation` draws the rotation's circle and four lines to the point looked at,
+// `drawTranslation` the segments between the cameraPositions (src/render). Its mouse modes
+// are the viewer's.
 #pragma once
 
 #include <vector>

@@ -232,3 +232,38 @@ TEST(SpringDraw, LinesColouredByCompressionAndByKind) {
 
 }  // namespace
 }  // namespace sinew
+
+namespace sinew {
+namespace {
+
+// RecordedCamera::draw: drawRotation's closed circle of 100 points and four lines to the
+// point looked at, drawTranslation's open polyline through cameraPositions, both in
+// (0, 1, 0.5) whatever the display flags.
+TEST(CameraPathDraw, RotationCircleAndTranslationSegments) {
+  auto s = test::load(R"(<Node name="root">
+      <RecordedCamera name="cam" drawRotation="1" drawTranslation="1" rotationCenter="0 0 0"
+                      rotationStartPoint="0 0 2" rotationLookAt="0 1 0" cameraPositions="0 0 0  1 0 0  1 1 0"/>
+    </Node>)");
+  render::DrawList list;
+  render::gather(*s.root, list);
+  std::vector<const render::Batch*> paths;
+  for (std::size_t i = 0; i < list.used; ++i)
+    if (list.batches[i].source && list.batches[i].source->name.get() == "cam") paths.push_back(&list.batches[i]);
+  ASSERT_EQ(paths.size(), 2u);
+  EXPECT_EQ(paths[0]->kind, render::Batch::Kind::lines);
+  EXPECT_EQ(paths[0]->vertex_count(), 2u * (100 + 4));
+  const render::Batch& t = *paths[1];
+  EXPECT_EQ(t.kind, render::Batch::Kind::lines);
+  const std::vector<float> expected{0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 1, 0};
+  EXPECT_EQ(t.positions, expected);
+  EXPECT_EQ(t.shading.diffuse, (std::array<float, 4>{0, 1, 0.5f, 1}));
+
+  auto off = test::load(R"(<Node name="root">
+      <RecordedCamera name="cam" cameraPositions="0 0 0  1 0 0"/><VisualStyle displayFlags="showAll"/></Node>)");
+  render::gather(*off.root, list);
+  for (std::size_t i = 0; i < list.used; ++i)
+    EXPECT_TRUE(!list.batches[i].source || list.batches[i].source->name.get() != "cam");
+}
+
+}  // namespace
+}  // namespace sinew
