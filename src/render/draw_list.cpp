@@ -39,6 +39,9 @@ Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind) {
   b.lit = true;
   b.splat = Batch::Splat::none;
   b.clip = {0.f, 0.f, 0.f, 1.f};
+  b.alpha_blend = false;
+  b.depth_test = true;
+  b.cull = 0;
   return b;
 }
 
@@ -157,6 +160,12 @@ void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const C
   b.blend = m.blend_translucency.get();
   b.write_depth = m.write_z_transparent.get();
   b.premultiplied = m.premultiplied_alpha.get();
+  b.alpha_blend = m.alpha_blend.get();
+  b.blend_equation = m.blend_equation_index();
+  b.source_factor = m.source_factor_index();
+  b.dest_factor = m.dest_factor_index();
+  b.depth_test = m.depth_test.get();
+  b.cull = m.cull_face.get();
   grow_bounds(list, b.positions);
 }
 

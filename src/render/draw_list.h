@@ -60,6 +60,12 @@ struct Batch {
   // writing depth only with `write_depth` (writeZTransparent); `premultiplied`: the colour
   // already holds its alpha (premultipliedAlpha).
   bool translucent = false, blend = true, write_depth = false, premultiplied = false;
+  // OglModel's own GL state (internalDraw): `alpha_blend` draws it blended by
+  // blend_equation (0 add, 1 subtract, 2 min, 3 max) with source_factor and dest_factor
+  // (0 zero, 1 one, 2 source alpha, 3 one minus source alpha), without writing depth;
+  // `depth_test` off draws it over everything; `cull` 1 drops back faces, 2 front faces.
+  bool alpha_blend = false, depth_test = true;
+  int blend_equation = 0, source_factor = 2, dest_factor = 3, cull = 0;
   // Points drawn as camera-facing discs of `splat_radius` (world units; 0: plain points of
   // point_size pixels): `soft` discs fade as cos(π/2·r/R)·splat_alpha and are blended "over",
   // back to front, in the translucent pass (PointSplatModel); otherwise they are lit sphere

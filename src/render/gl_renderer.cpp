@@ -717,7 +717,11 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
   glViewport(x, y, width, height);
   // SOFA's two visual passes: opaque models in graph order, then translucent ones.
   for (std::size_t i = 0; i < list.used; ++i)
-    if (!list.batches[i].translucent) draw_batch(list.batches[i], gpu_[i]);
+    if (!list.batches[i].translucent) {
+      begin_model_state(list.batches[i]);
+      draw_batch(list.batches[i], gpu_[i]);
+      end_model_state(list.batches[i]);
+    }
   glUniform1i(u_translucent_, 1);
   // The picture's alpha stays that of the opaque pass (a PNG of a translucent model is not
   // itself translucent).
@@ -733,7 +737,9 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
       continue;
     }
     if (!b.blend) {  // blendTranslucency off: drawn opaque, after the opaque models
+      begin_model_state(b);
       draw_batch(b, gpu_[i]);
+      end_model_state(b);
       continue;
     }
     // OglModel::internalDraw: the background is first darkened by (1 - alpha), then the
@@ -744,13 +750,41 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
     glBlendFunc(GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
     draw_batch(b, gpu_[i]);
     glBlendFunc(b.premultiplied ? GL_ONE : GL_SRC_ALPHA, GL_ONE);
+    begin_model_state(b);  // alphaBlend's factors replace these, as in internalDraw
     draw_batch(b, gpu_[i], /*upload=*/false);
+    end_model_state(b);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
   }
   draw_oit(list, x, y, width, height);  // OrderIndependentTransparencyManager's models
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glUniform1i(u_translucent_, 0);
+}
+
+void GlRenderer::begin_model_state(const Batch& b) {
+  if (b.alpha_blend) {
+    static const GLenum kEquations[] = {GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_MIN, GL_MAX};
+    static const GLenum kFactors[] = {GL_ZERO, GL_ONE, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA};
+    glDepthMask(GL_FALSE);
+    glBlendEquation(kEquations[b.blend_equation & 3]);
+    glBlendFunc(kFactors[b.source_factor & 3], kFactors[b.dest_factor & 3]);
+    glEnable(GL_BLEND);
+  }
+  if (!b.depth_test) glDisable(GL_DEPTH_TEST);
+  if (b.cull == 1 || b.cull == 2) {
+    glCullFace(b.cull == 1 ? GL_BACK : GL_FRONT);
+    glEnable(GL_CULL_FACE);
+  }
+}
+
+void GlRenderer::end_model_state(const Batch& b) {
+  if (b.cull == 1 || b.cull == 2) glDisable(GL_CULL_FACE);
+  if (!b.depth_test) glEnable(GL_DEPTH_TEST);
+  if (b.alpha_blend) {  // internalDraw's restore
+    glBlendEquation(GL_FUNC_ADD);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+  }
 }
 
 void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {

@@ -64,7 +64,10 @@ class GlRenderer {
   // Uploads `b` into `g` and draws it (`upload` false: drawn again from what was uploaded,
   // the second pass of a translucent model).
   void draw_batch(const Batch& b, GpuBatch& g, bool upload = true);
-  // order_: the points of `b` from the farthest to the nearest under view_.
+  // OglModel's alphaBlend, depthTest and cullFace set before a draw of `b`, and undone after.
+  static void begin_model_state(const Batch& b);
+  static void end_model_state(const Batch& b);
+    // order_: the points of `b` from the farthest to the nearest under view_.
   void sort_back_to_front(const Batch& b);
   // OglSceneFrame's axes in their corner viewport, over the scene.
   void draw_scene_frame(const SceneFrame& f, const View& view);

@@ -209,7 +209,47 @@ void OglModel::follow_topology() {
   }
 }
 
+namespace {
+
+constexpr const char* kBlendEquations[] = {"GL_FUNC_ADD", "GL_FUNC_SUBTRACT", "GL_MIN", "GL_MAX"};
+constexpr const char* kBlendFactors[] = {"GL_ZERO", "GL_ONE", "GL_SRC_ALPHA", "GL_ONE_MINUS_SRC_ALPHA"};
+
+// The index of `value` in `options`, -1 when absent.
+template <std::size_t N>
+int option_index(const std::string& value, const char* const (&options)[N]) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (value == options[i]) return static_cast<int>(i);
+  return -1;
+}
+
+}  // namespace
+
+int OglModel::blend_equation_index() const {
+  const int i = option_index(blend_equation.get(), kBlendEquations);
+  return i < 0 ? 0 : i;
+}
+int OglModel::source_factor_index() const {
+  const int i = option_index(source_factor.get(), kBlendFactors);
+  return i < 0 ? 2 : i;
+}
+int OglModel::dest_factor_index() const {
+  const int i = option_index(dest_factor.get(), kBlendFactors);
+  return i < 0 ? 3 : i;
+}
+
 void OglModel::init() {
+  // SOFA's option lists for alpha blending: another value keeps the default.
+  if (option_index(blend_equation.get(), kBlendEquations) < 0)
+    msg_warning("blendEquation '" + blend_equation.get() +
+                "' is not one of GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_MIN, GL_MAX: GL_FUNC_ADD is used");
+  if (option_index(source_factor.get(), kBlendFactors) < 0)
+    msg_warning("sfactor '" + source_factor.get() +
+                "' is not one of GL_ZERO, GL_ONE, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA: GL_SRC_ALPHA is used");
+  if (option_index(dest_factor.get(), kBlendFactors) < 0)
+    msg_warning("dfactor '" + dest_factor.get() +
+                "' is not one of GL_ZERO, GL_ONE, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA: GL_ONE_MINUS_SRC_ALPHA is used");
+  if (cull_face.get() < 0 || cull_face.get() > 2)
+    msg_warning("cullFace " + std::to_string(cull_face.get()) + " is not 0, 1 or 2: no culling");
   if (!filename.get().empty()) {
     if (!load_file()) {
       set_state(ComponentState::invalid);

@@ -91,6 +91,13 @@ class OglModel : public VisualState {
                                   "Visualization"};
   void update_bbox();
 
+  // The alpha blending options as indices in SOFA's lists: blendEquation GL_FUNC_ADD,
+  // GL_FUNC_SUBTRACT, GL_MIN, GL_MAX; sfactor and dfactor GL_ZERO, GL_ONE, GL_SRC_ALPHA,
+  // GL_ONE_MINUS_SRC_ALPHA. A value outside its list keeps the default (warned at init).
+  int blend_equation_index() const;
+  int source_factor_index() const;
+  int dest_factor_index() const;
+
   // Pseudo-attribute `color` (SOFA's setColor): kept as written.
   const std::string& color() const { return color_; }
 

@@ -357,6 +357,31 @@ TEST_F(RenderTest, TranslucentModelBlendsOverTheOpaqueOnes) {
   EXPECT_NEAR(two[2], 64, 2);
 }
 
+// OglModel's own GL state (internalDraw): alphaBlend draws it with blendEquation, sfactor and
+// dfactor; depthTest="0" draws it over what is in front; cullFace 1 drops back faces, 2 front
+// faces (the square faces the camera). Red drawn after blue, at the centre of the picture.
+TEST_F(RenderTest, OglModelBlendDepthAndCullOptions) {
+  const std::string camera = "<InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>";
+  const std::string blue = square("blue", "color=\"0 0 1 1\"", 0.0);
+  auto centre = [&](const std::string& red_attrs, double z) {
+    auto s = test::load("<Node name=\"root\">" + camera + blue + square("red", "color=\"1 0 0 1\" " + red_attrs, z) +
+                        "</Node>");
+    return render(*s.root).rgb(100, 100);
+  };
+  using C = std::array<int, 3>;
+  EXPECT_EQ(centre("", 1.0), (C{255, 0, 0}));
+  EXPECT_EQ(centre("alphaBlend=\"1\"", 1.0), (C{255, 0, 0}));  // source alpha 1: the default factors replace
+  EXPECT_EQ(centre("alphaBlend=\"1\" sfactor=\"GL_ONE\" dfactor=\"GL_ONE\"", 1.0), (C{255, 0, 255}));
+  EXPECT_EQ(centre("alphaBlend=\"1\" blendEquation=\"GL_MIN\"", 1.0), (C{0, 0, 0}));
+  EXPECT_EQ(centre("", -1.0), (C{0, 0, 255}));
+  EXPECT_EQ(centre("depthTest=\"0\"", -1.0), (C{255, 0, 0}));
+  EXPECT_EQ(centre("cullFace=\"1\"", 1.0), (C{255, 0, 0}));
+  EXPECT_EQ(centre("cullFace=\"2\"", 1.0), (C{0, 0, 255}));
+  auto bad = test::load("<Node name=\"root\">" + camera + square("red", "sfactor=\"GL_DST_COLOR\"", 0.0) + "</Node>");
+  EXPECT_TRUE(test::any_contains(test::messages(bad.root->diagnostics(), Severity::warning),
+                                 "sfactor 'GL_DST_COLOR' is not one of"));
+}
+
 // OrderIndependentTransparencyManager in the root node: translucent models are
 // accumulated with SOFA's weights w = clamp(0.03 / (1e-5 + (depth·0.01)⁴), 1e-2, 3e3) and
 // composed as Σ c·a·w / Σ a·w covering 1 − Π(1 − a) of the picture. Red (a = 0.5) at eye
