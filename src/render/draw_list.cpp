@@ -21,6 +21,9 @@
 
 namespace sinew::render {
 
+// The ClipPlane applying to a node's models for each OpenGL plane id (nullptr: none).
+using ClipSet = std::array<const ClipPlane*, Batch::kClipPlanes>;
+
 // The next batch of the list, reused when the same component drew it last frame.
 Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind) {
   if (list.used == list.batches.size()) list.batches.emplace_back();
@@ -38,7 +41,7 @@ Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind) {
   b.wireframe = false;
   b.lit = true;
   b.splat = Batch::Splat::none;
-  b.clip = {0.f, 0.f, 0.f, 1.f};
+  b.clip = Batch::no_clip();
   b.alpha_blend = false;
   b.depth_test = true;
   b.cull = 0;
@@ -92,7 +95,7 @@ void model_vertices(const OglModel& m, std::vector<float>& out) {
   }
 }
 
-void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const ClipPlane* clip, bool shadow_shader) {
+void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const ClipSet& clip, bool shadow_shader) {
   if (!m.enable.get() || !m.is_enabled.get() || m.state() != ComponentState::valid) return;
   const auto& tris = m.triangles.get();
   const auto& quads = m.quads.get();
@@ -100,11 +103,13 @@ void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const C
   Batch& b = next_batch(list, &m, Batch::Kind::triangles);
   b.wireframe = wireframe;
   b.shadow_shader = shadow_shader;
-  if (clip) {  // kept: (p - position)·normal <= 0, i.e. -normal·p + normal·position >= 0
-    const Vec3 n = clip->normal.get(), at = clip->position.get();
-    b.clip = {static_cast<float>(-n[0]), static_cast<float>(-n[1]), static_cast<float>(-n[2]),
-              static_cast<float>(n.dot(at))};
-  }
+  for (int k = 0; k < Batch::kClipPlanes; ++k)
+    if (const ClipPlane* c = clip[static_cast<std::size_t>(k)]) {
+      // kept: (p - position)·normal <= 0, i.e. -normal·p + normal·position >= 0
+      const Vec3 n = c->normal.get(), at = c->position.get();
+      b.clip[static_cast<std::size_t>(k)] = {static_cast<float>(-n[0]), static_cast<float>(-n[1]),
+                                             static_cast<float>(-n[2]), static_cast<float>(n.dot(at))};
+    }
   model_vertices(m, b.positions);
   const std::size_t n = b.vertex_count();
   const auto& given = m.normal.get();
@@ -256,7 +261,7 @@ void add_points(DrawList& list, const MechanicalState& state) {
 // SOFA's visual traversal (tree order without repetition): a node is drawn
 // once, reached through the first of its parents visited, with that parent's
 // display flags. `seen` lists the nodes with several parents already drawn.
-void visit(Node& node, const DisplayFlags& inherited, const ClipPlane* inherited_clip, bool shadow_shader,
+void visit(Node& node, const DisplayFlags& inherited, const ClipSet& inherited_clip, bool shadow_shader,
            DrawList& list, std::vector<float>& scratch, std::vector<const MechanicalState*>& deferred,
            std::vector<const Node*>& seen) {
   if (!node.activated.value()) return;
@@ -267,12 +272,16 @@ void visit(Node& node, const DisplayFlags& inherited, const ClipPlane* inherited
   DisplayFlags flags = inherited;
   for (const auto& o : node.objects())
     if (const auto* s = dynamic_cast<const VisualStyle*>(o.get())) flags = flags.merged(s->flags());
-  // SOFA enables a ClipPlane before drawing its node's models and disables it after its
-  // subtree: the node's own active plane, else the one inherited.
-  const ClipPlane* clip = inherited_clip;
+  // SOFA's ClipPlane::fwdDraw sets OpenGL plane `id` before its node's models are drawn
+  // (an inactive one switches that plane off) and bwdDraw restores it after the subtree:
+  // per id, the node's last plane, else the one inherited. Planes of different ids combine.
+  ClipSet clip = inherited_clip;
   for (const auto& o : node.objects())
-    if (const auto* c = dynamic_cast<const ClipPlane*>(o.get()))
-      if (c->active.get() && c->state() == ComponentState::valid) clip = c;
+    if (const auto* c = dynamic_cast<const ClipPlane*>(o.get())) {
+      if (c->state() != ComponentState::valid) continue;
+      const int id = c->id.get();
+      if (id >= 0 && id < Batch::kClipPlanes) clip[static_cast<std::size_t>(id)] = c->active.get() ? c : nullptr;
+    }
   // SOFA draws a node's models with the nearest shader of the node or above (getShader()).
   for (const auto& o : node.objects())
     if (o->class_name() == "OglShadowShader" && o->state() == ComponentState::valid) shadow_shader = true;
@@ -399,7 +408,7 @@ void gather(Node& root, DrawList& out) {
   thread_local std::vector<const Node*> seen;
   deferred.clear();
   seen.clear();
-  visit(root, DisplayFlags::viewer_defaults(), nullptr, false, out, scratch, deferred, seen);
+  visit(root, DisplayFlags::viewer_defaults(), ClipSet{}, false, out, scratch, deferred, seen);
   out.frame.on = false;
   if (const OglSceneFrame* f = root.find_down<OglSceneFrame>(); f && f->draw.get() && f->state() == ComponentState::valid) {
     static const char* const kStyles[] = {"Arrows", "Cylinders", "CubeCones"};

@@ -73,9 +73,15 @@ struct Batch {
   enum class Splat { none, soft, sphere };
   Splat splat = Splat::none;
   float splat_radius = 0.f, splat_alpha = 1.f;
-  // ClipPlane over the model (visual models only): a vertex p is kept where
-  // clip·(p, 1) >= 0 (gl_ClipDistance); (0, 0, 0, 1) keeps everything.
-  std::array<float, 4> clip{0.f, 0.f, 0.f, 1.f};
+  // ClipPlanes over the model (visual models only), by OpenGL id: a vertex p is kept where
+  // clip[k]·(p, 1) >= 0 for every k (gl_ClipDistance[k]); (0, 0, 0, 1) keeps everything.
+  static constexpr int kClipPlanes = 8;  // GL_MAX_CLIP_DISTANCES is at least 8
+  std::array<std::array<float, 4>, kClipPlanes> clip = no_clip();
+  static std::array<std::array<float, 4>, kClipPlanes> no_clip() {
+    std::array<std::array<float, 4>, kClipPlanes> c{};
+    for (auto& p : c) p = {0.f, 0.f, 0.f, 1.f};
+    return c;
+  }
   // A visual model under an OglShadowShader (its node or an ancestor): shaded as SOFA's
   // shadow-mapping shaders do (Lighting::shadows adds the lights' shadow maps).
   bool shadow_shader = false;

@@ -28,7 +28,8 @@ uniform mat4 u_proj;
 uniform float u_point_size;
 uniform float u_splat_radius;  // > 0: points are discs of this world radius
 uniform float u_half_height;   // half the viewport's height in pixels
-uniform vec4 u_clip;  // ClipPlane: kept where dot(u_clip, (p, 1)) >= 0
+uniform vec4 u_clip[8];  // ClipPlanes by id: kept where dot(u_clip[k], (p, 1)) >= 0 for every k
+out float gl_ClipDistance[8];
 out vec3 v_eye;
 out vec3 v_normal;
 out vec4 v_color;
@@ -49,7 +50,7 @@ void main() {
     gl_PointSize = u_point_size;
   }
   v_texcoord = a_texcoord;
-  gl_ClipDistance[0] = dot(u_clip, vec4(a_position, 1.0));
+  for (int k = 0; k < 8; ++k) gl_ClipDistance[k] = dot(u_clip[k], vec4(a_position, 1.0));
 }
 )";
 
@@ -381,6 +382,11 @@ void upload(GLenum target, unsigned buffer, const void* data, std::size_t bytes,
   }
 }
 
+// The vertex shader's eight clip distances (ClipPlane ids 0 to 7) on or off.
+void clip_distances(bool on) {
+  for (int k = 0; k < Batch::kClipPlanes; ++k) (on ? glEnable : glDisable)(GL_CLIP_DISTANCE0 + k);
+}
+
 // A linked program of the two shaders; 0 with *error.
 unsigned link(const char* vertex, const char* fragment, std::string* error) {
   const unsigned vs = compile(GL_VERTEX_SHADER, vertex, error);
@@ -585,6 +591,7 @@ void GlRenderer::draw_oit(const DrawList& list, int x, int y, int width, int hei
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glDisable(GL_DEPTH_TEST);
+  clip_distances(false);  // the composition's triangle writes none
   glUseProgram(oit_program_);
   for (int k = 0; k < 2; ++k) {
     glActiveTexture(GL_TEXTURE0 + kOitUnit + k);
@@ -595,6 +602,7 @@ void GlRenderer::draw_oit(const DrawList& list, int x, int y, int width, int hei
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
   glUseProgram(program_);
+  clip_distances(true);
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   if (!scissor) glDisable(GL_SCISSOR_TEST);
@@ -653,7 +661,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
   glEnable(GL_PROGRAM_POINT_SIZE);
-  glEnable(GL_CLIP_DISTANCE0);
+  clip_distances(true);
   while (gpu_.size() < list.used) {
     GpuBatch g;
     glGenVertexArrays(1, &g.vao);
@@ -696,7 +704,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
   if (list.frame.on) draw_scene_frame(list.frame, view);
   glBindVertexArray(0);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-  glDisable(GL_CLIP_DISTANCE0);  // the viewer draws its overlays after this
+  clip_distances(false);  // the viewer draws its overlays after this
   if (samples_ > 0) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
@@ -815,7 +823,7 @@ void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {
     glUniform1f(u_shininess_, b.shading.shininess);
     glUniform1f(u_color_ambient_, b.color_ambient);
     glUniform1f(u_point_size_, b.point_size);
-    glUniform4fv(u_clip_, 1, b.clip.data());
+    glUniform4fv(u_clip_, Batch::kClipPlanes, b.clip[0].data());
     glUniform1i(u_sofa_shadow_, b.shadow_shader ? 1 : 0);
     const unsigned texture = b.texture.empty() ? 0 : texture_for(b.texture);
     if (texture && b.texcoords.size() == b.vertex_count() * 2) {
@@ -1045,7 +1053,7 @@ void GlRenderer::render_shadow_map(const DrawList& list, const LightView& lv, Sh
   glUniformMatrix4fv(glGetUniformLocation(shadow_program_, "u_light_vp"), 1, GL_FALSE, lv.view_projection.data());
   glUniform1i(glGetUniformLocation(shadow_program_, "u_persp"), lv.perspective ? 1 : 0);
   glUniform1f(glGetUniformLocation(shadow_program_, "u_far"), lv.far);
-  glDisable(GL_CLIP_DISTANCE0);
+  clip_distances(false);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   // Every visual model casts a shadow (SOFA draws them all in its shadow pass).
   for (std::size_t i = 0; i < list.used; ++i) {
@@ -1063,7 +1071,7 @@ void GlRenderer::render_shadow_map(const DrawList& list, const LightView& lv, Sh
       glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(b.vertex_count()));
     }
   }
-  glEnable(GL_CLIP_DISTANCE0);
+  clip_distances(true);
 }
 
 void GlRenderer::draw_texts(const DrawList& list, const View& view) {
@@ -1108,7 +1116,7 @@ void GlRenderer::draw_texts(const DrawList& list, const View& view) {
   // The cells touch each other: no wrapping from one edge of the texture to the other.
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glDisable(GL_CLIP_DISTANCE0);
+  clip_distances(false);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -1121,7 +1129,7 @@ void GlRenderer::draw_texts(const DrawList& list, const View& view) {
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
-  glEnable(GL_CLIP_DISTANCE0);
+  clip_distances(true);
   glUseProgram(program_);
 }
 

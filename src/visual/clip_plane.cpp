@@ -15,6 +15,12 @@ void ClipPlane::init() {
     set_state(ComponentState::invalid);
     return;
   }
+  if (id.value() > 7) {
+    msg_error("plane id " + std::to_string(id.value()) +
+              " is beyond OpenGL's eight clip planes (0 to 7): the component is disabled");
+    set_state(ComponentState::invalid);
+    return;
+  }
   if (normal.value().norm() == 0.0) {
     msg_error("normal is zero: the component is disabled");
     set_state(ComponentState::invalid);

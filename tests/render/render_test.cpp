@@ -14,6 +14,7 @@
 #include "render/offscreen.h"
 #include "render/png_io.h"
 #include "runner/session.h"
+#include "gl_skip.h"
 #include "test_scene.h"
 #include "visual/clip_plane.h"
 #include "visual/ogl_model.h"
@@ -43,7 +44,10 @@ class RenderTest : public ::testing::Test {
     o.width = 200, o.height = 200;
     o.samples = 0;  // exact pixel counts
     renderer_ = render::OffscreenRenderer::create(o, &err);
-    if (!renderer_) GTEST_SKIP() << "no off-screen OpenGL here (" << err << "); install Mesa (scripts/setup)";
+    if (!renderer_) {
+    ASSERT_TRUE(test::no_gl_context(err)) << "the renderer fails: " << err;
+    GTEST_SKIP() << "no off-screen OpenGL here (" << err << "); install Mesa (scripts/setup)";
+  }
   }
   Image render(Node& root) {
     Image img;
@@ -138,6 +142,42 @@ TEST_F(RenderTest, ClipPlaneRemovesHalfTheCube) {
   const double a = f * 0.25 / 4.5, b = f * 0.5 / 4.5, c = f * 0.25 / 5.5, back = f * 0.5 / 5.5;
   const double expected = (b - a) * 2 * b + (a - c) * (b + back);  // 838 pixels
   EXPECT_NEAR(count_if(img, lit, 100, 200), expected, 0.03 * expected);
+}
+
+// Several ClipPlanes (SOFA's fwdDraw sets OpenGL plane `id`): the root's id 0 (normal +x) and a
+// child node's id 1 (normal +y) both apply, leaving the bottom-left quarter of the front face;
+// an inactive plane of id 0 in the child switches the root's off (only the top half goes); a
+// second plane of the same id in a node replaces the first; an id beyond 7 is an error.
+TEST_F(RenderTest, ClipPlanesOfDifferentIdsCombine) {
+  const double half = 100.0 * 0.5 / (4.5 * std::tan(M_PI / 8));
+  const double quarter = half * half;  // one quadrant of the front face, in pixels
+  auto lit_in = [](const Image& img, bool left, bool top) {
+    long n = 0;
+    for (int y = top ? 0 : 100; y < (top ? 100 : 200); ++y)
+      for (int x = left ? 0 : 100; x < (left ? 100 : 200); ++x) n += is_background(img.rgb(x, y)) ? 0 : 1;
+    return n;
+  };
+  auto scene = [&](const std::string& inner_planes) {
+    return test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+                      "<ClipPlane normal=\"1 0 0\"/><Node name=\"inner\">" +
+                      inner_planes + cube("cube", "red", 0) + "</Node></Node>");
+  };
+  auto both = scene("<ClipPlane id=\"1\" normal=\"0 1 0\"/>");
+  Image img = render(*both.root);
+  EXPECT_NEAR(lit_in(img, true, false), quarter, 0.05 * quarter);
+  EXPECT_EQ(lit_in(img, true, true), 0);
+  EXPECT_EQ(lit_in(img, false, false), 0);
+  EXPECT_EQ(lit_in(img, false, true), 0);
+  auto off = scene("<ClipPlane id=\"1\" normal=\"0 1 0\"/><ClipPlane active=\"0\"/>");
+  img = render(*off.root);
+  EXPECT_NEAR(lit_in(img, true, false) + lit_in(img, false, false), 2 * quarter, 0.05 * quarter);
+  EXPECT_EQ(lit_in(img, true, true) + lit_in(img, false, true), 0);
+  auto replaced = scene("<ClipPlane normal=\"-1 0 0\"/>");  // id 0 again: keeps the right half
+  img = render(*replaced.root);
+  EXPECT_EQ(lit_in(img, true, false) + lit_in(img, true, true), 0);
+  EXPECT_NEAR(lit_in(img, false, false) + lit_in(img, false, true), 2 * quarter, 0.05 * quarter);
+  auto bad = test::load("<Node name=\"root\"><ClipPlane id=\"8\"/>" + cube("cube", "red", 0) + "</Node>");
+  EXPECT_TRUE(test::any_contains(test::messages(bad.root->diagnostics(), Severity::error), "beyond OpenGL's eight"));
 }
 
 // VisualBoundingBox of [-0.5, 0.5]³ seen from z = 5: one-pixel green lines along the front

@@ -7,6 +7,7 @@
 
 #include "render/offscreen.h"
 #include "render/shadow_maps.h"
+#include "gl_skip.h"
 #include "test_scene.h"
 
 namespace sinew {
@@ -85,7 +86,10 @@ class ShadowPictureTest : public ::testing::Test {
     o.width = 200, o.height = 200;
     o.samples = 0;
     renderer_ = render::OffscreenRenderer::create(o, &err);
-    if (!renderer_) GTEST_SKIP() << "no off-screen OpenGL here (" << err << "); install Mesa (scripts/setup)";
+    if (!renderer_) {
+    ASSERT_TRUE(test::no_gl_context(err)) << "the renderer fails: " << err;
+    GTEST_SKIP() << "no off-screen OpenGL here (" << err << "); install Mesa (scripts/setup)";
+  }
   }
   // A white wall z = 0 over [-2, 2]², a square of side 0.5 at z = 1 in front of it, the camera
   // at z = 5 (48.3 px per unit on the wall), the lights and manager given.

@@ -13,6 +13,7 @@
 #include "render/png_io.h"
 #include "runner/session.h"
 #include "test_paths.h"
+#include "gl_skip.h"
 #include "test_scene.h"
 #include "visual/rendering2d/ogl_label.h"
 
@@ -200,7 +201,10 @@ class TextPictureTest : public ::testing::Test {
     o.width = 200, o.height = 200;
     o.samples = 0;
     renderer_ = render::OffscreenRenderer::create(o, &err);
-    if (!renderer_) GTEST_SKIP() << "no off-screen OpenGL here (" << err << "); install Mesa (scripts/setup)";
+    if (!renderer_) {
+    ASSERT_TRUE(test::no_gl_context(err)) << "the renderer fails: " << err;
+    GTEST_SKIP() << "no off-screen OpenGL here (" << err << "); install Mesa (scripts/setup)";
+  }
     renderer_->set_font(font_);
   }
   // A 200×200 picture of `xml` (inside the root, camera at z = 5 looking at the origin: 48.3

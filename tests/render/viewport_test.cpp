@@ -6,6 +6,7 @@
 
 #include "render/camera_view.h"
 #include "render/offscreen.h"
+#include "gl_skip.h"
 #include "test_scene.h"
 
 namespace sinew {
@@ -48,7 +49,10 @@ class ViewportPictureTest : public ::testing::Test {
     o.width = 200, o.height = 200;
     o.samples = 0;
     renderer_ = render::OffscreenRenderer::create(o, &err);
-    if (!renderer_) GTEST_SKIP() << "no off-screen OpenGL here (" << err << "); install Mesa (scripts/setup)";
+    if (!renderer_) {
+    ASSERT_TRUE(test::no_gl_context(err)) << "the renderer fails: " << err;
+    GTEST_SKIP() << "no off-screen OpenGL here (" << err << "); install Mesa (scripts/setup)";
+  }
   }
   std::unique_ptr<render::OffscreenRenderer> renderer_;
 };
