@@ -553,14 +553,14 @@ bool GlRenderer::oit_buffers() {
   return ok;
 }
 
-bool GlRenderer::oit_batch(const DrawList& list, const Batch& b) {
-  return list.oit.on && b.translucent && b.kind == Batch::Kind::triangles && b.splat == Batch::Splat::none;
+bool GlRenderer::oit_batch(const Batch& b) {
+  return b.translucent && b.kind == Batch::Kind::triangles && b.splat == Batch::Splat::none;
 }
 
 void GlRenderer::draw_oit(const DrawList& list, int x, int y, int width, int height) {
   bool any = false;
-  for (std::size_t i = 0; i < list.used && !any; ++i) any = oit_batch(list, list.batches[i]);
-  if (!any || !oit_buffers()) return;
+  for (std::size_t i = 0; i < list.used && !any; ++i) any = oit_batch(list.batches[i]);
+  if (!any) return;
   // The opaque models' depth, so that they hide what is behind them.
   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, oit_fbo_);
@@ -583,7 +583,7 @@ void GlRenderer::draw_oit(const DrawList& list, int x, int y, int width, int hei
   glUniform1i(u_oit_, 1);
   glUniform1f(u_oit_depth_scale_, list.oit.depth_scale);
   for (std::size_t i = 0; i < list.used; ++i)
-    if (oit_batch(list, list.batches[i])) draw_batch(list.batches[i], gpu_[i]);
+    if (oit_batch(list.batches[i])) draw_batch(list.batches[i], gpu_[i]);
   glUniform1i(u_oit_, 0);
   glDepthMask(GL_TRUE);
   // Composition over the picture (its alpha kept).
@@ -734,9 +734,11 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
   // The picture's alpha stays that of the opaque pass (a PNG of a translucent model is not
   // itself translucent).
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+  // Without float targets the manager's models are blended in drawing order (one message).
+  const bool oit = list.oit.on && oit_buffers();
   for (std::size_t i = 0; i < list.used; ++i) {
     const Batch& b = list.batches[i];
-    if (!b.translucent || oit_batch(list, b)) continue;
+    if (!b.translucent || (oit && oit_batch(b))) continue;
     if (b.splat == Batch::Splat::soft) {  // PointSplatModel::drawTransparent: "over", back to front
       glEnable(GL_BLEND);
       glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -764,7 +766,7 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
   }
-  draw_oit(list, x, y, width, height);  // OrderIndependentTransparencyManager's models
+  if (oit) draw_oit(list, x, y, width, height);  // OrderIndependentTransparencyManager's models
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glUniform1i(u_translucent_, 0);
 }

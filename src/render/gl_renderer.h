@@ -67,7 +67,7 @@ class GlRenderer {
   // OglModel's alphaBlend, depthTest and cullFace set before a draw of `b`, and undone after.
   static void begin_model_state(const Batch& b);
   static void end_model_state(const Batch& b);
-    // order_: the points of `b` from the farthest to the nearest under view_.
+  // order_: the points of `b` from the farthest to the nearest under view_.
   void sort_back_to_front(const Batch& b);
   // OglSceneFrame's axes in their corner viewport, over the scene.
   void draw_scene_frame(const SceneFrame& f, const View& view);
@@ -92,7 +92,7 @@ class GlRenderer {
   // accumulated into float targets over the opaque depth, then composed over the picture
   // in the rectangle (x, y, width, height). Float targets made at first use, at the
   // picture's size (none: blended in drawing order, one message).
-  static bool oit_batch(const DrawList& list, const Batch& b);
+  static bool oit_batch(const Batch& b);
   void draw_oit(const DrawList& list, int x, int y, int width, int height);
   bool oit_buffers();
   static constexpr int kOitUnit = 9;  // texture units 9 and 10 (0: models, 1-8: shadow maps)
