@@ -203,22 +203,8 @@ __attribute__((target("avx2"))) void pair_squared_distances_avx2(std::size_t n, 
 __attribute__((target("avx2"))) void add_pair_forces_avx2(const PairForceInput& in, double* f,
                                                            std::vector<double>& records) {
   const std::size_t n = in.n;
-  // One 64-byte record per particle, (x, ρ) then (v, p/ρ²): the four records of
-  // a chunk of pairs load as eight vectors and transpose into eight fields.
-  records.resize(8 * n + 4);
-  double* rec = records.data();
-  if (reinterpret_cast<std::uintptr_t>(rec) % 32 != 0) rec += (32 - reinterpret_cast<std::uintptr_t>(rec) % 32) / 8;
-  for (std::size_t i = 0; i < n; ++i) {
-    double* r = rec + 8 * i;
-    r[0] = in.x[3 * i];
-    r[1] = in.x[3 * i + 1];
-    r[2] = in.x[3 * i + 2];
-    r[3] = in.rho[i];
-    r[4] = in.v[3 * i];
-    r[5] = in.v[3 * i + 1];
-    r[6] = in.v[3 * i + 2];
-    r[7] = in.p_over_rho2[i];
-  }
+  // The four records of a chunk of pairs load as eight vectors and transpose into eight fields.
+  const double* rec = fill_records(in, records);
   const __m256d minus_m2 = _mm256_set1_pd(-in.m2);
   const __m256d mu = _mm256_set1_pd(in.mu), h = _mm256_set1_pd(in.h), m = _mm256_set1_pd(in.m);
   const __m256d soft = _mm256_set1_pd(in.soft), half = _mm256_set1_pd(in.half);
