@@ -18,13 +18,34 @@ void BlockCsrMatrix::reset(std::size_t n, int bs, Structure s) {
   col_rows_.clear();
 }
 
-bool BlockCsrMatrix::in_structure(std::size_t r, std::size_t c) const {
+bool BlockCsrMatrix::in_structure(std::size_t r, std::size_t c) const { return storage(r, c); }
+
+bool BlockCsrMatrix::storage(std::size_t& r, std::size_t& c) const {
+  if (structure_ == Structure::block_tridiagonal) {
+    // SOFA's BTDMatrix keeps three blocks per block row, block (bi, bj) at
+    // index 3·bi + (bj − bi + 1), and its add() refuses only bj > bi + 1: an
+    // entry further left lands in an earlier block of that array. SOFA's results
+    // depend on it (a contact with a state outside the system projects its
+    // coupling at local indices: BeamFEMForceField.scn), so it lands there here too.
+    // Index beyond the array (SOFA writes past it) or one of the two slots no
+    // block uses, (0, −1) and (nb−1, nb): dropped.
+    const std::size_t b = static_cast<std::size_t>(bs_);
+    const std::size_t bi = r / b, bj = c / b;
+    if (bj > bi + 1) return false;
+    const std::size_t s = 2 * bi + bj + 1;  // 3·bi + (bj − bi + 1)
+    if (s >= 3 * nb_) return false;
+    const std::size_t tr = s / 3, slot = s % 3;
+    if ((tr == 0 && slot == 0) || tr + slot > nb_) return false;  // column tr + slot − 1 outside [0, nb)
+    r = tr * b + r % b;
+    c = (tr + slot - 1) * b + c % b;
+    return true;
+  }
   if (r >= n_ || c >= n_) return false;
   switch (structure_) {
     case Structure::general: return true;
     case Structure::diagonal: return r == c;
     case Structure::block_diagonal: return r / bs_ == c / bs_;
-    case Structure::block_tridiagonal: return r / bs_ <= c / bs_ + 1 && c / bs_ <= r / bs_ + 1;
+    case Structure::block_tridiagonal: break;
   }
   return true;
 }
@@ -34,8 +55,8 @@ void BlockCsrMatrix::build_pattern(const std::vector<std::uint64_t>& scalar_keys
   std::vector<std::uint64_t> blocks;
   blocks.reserve(scalar_keys.size() / (b * b) + nb_ + 1);
   for (std::uint64_t k : scalar_keys) {
-    const std::uint64_t r = k >> 32, c = k & 0xffffffffu;
-    if (!in_structure(r, c)) continue;
+    std::size_t r = k >> 32, c = k & 0xffffffffu;
+    if (!storage(r, c)) continue;
     blocks.push_back(((r / b) << 32) | (c / b));
   }
   for (std::uint64_t i = 0; i < nb_; ++i) blocks.push_back((i << 32) | i);
@@ -67,7 +88,7 @@ void BlockCsrMatrix::build_pattern(const std::vector<std::uint64_t>& scalar_keys
 }
 
 std::int64_t BlockCsrMatrix::slot(std::size_t r, std::size_t c) const {
-  if (!in_structure(r, c) || row_begin_.empty()) return -1;
+  if (row_begin_.empty() || !storage(r, c)) return -1;
   const std::size_t br = r / bs_, bc = c / bs_;
   const auto first = cols_.begin() + row_begin_[br], last = cols_.begin() + row_begin_[br + 1];
   const auto it = std::lower_bound(first, last, static_cast<int>(bc));

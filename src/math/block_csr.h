@@ -34,6 +34,8 @@ class BlockCsrMatrix {
   bool has_pattern() const { return !row_begin_.empty(); }
 
   // Value index of scalar entry (r, c), or -1 when outside the pattern/structure.
+  // block_tridiagonal stores as SOFA's BTDMatrix does: an entry left of the
+  // band lands in another block (see storage()); the slot is that block's.
   std::int64_t slot(std::size_t r, std::size_t c) const;
   bool in_structure(std::size_t r, std::size_t c) const;
 
@@ -54,6 +56,9 @@ class BlockCsrMatrix {
   Eigen::MatrixXd to_dense() const;
 
  private:
+  // Where entry (r, c) is stored: true and (r, c) moved there, false when dropped.
+  bool storage(std::size_t& r, std::size_t& c) const;
+
   std::size_t n_ = 0, nb_ = 0;
   int bs_ = 1;
   Structure structure_ = Structure::general;

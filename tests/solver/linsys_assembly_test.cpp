@@ -263,3 +263,84 @@ TEST(LinsysMapped, MassOnARigidlyMappedStateIsProjectedAsJtMJ) {
   EXPECT_NEAR(A(0, 0), 1.0 + 2 * 0.5, 1e-12);
   EXPECT_NEAR(A(6, 6), 1.0 + 2 * 0.5, 1e-12);
 }
+
+// SOFA's MatrixProjectionMethod projects a block between a mapped state and a
+// state outside the system (an obstacle's contact points) over the independent
+// states the mapped side reaches, with no Jacobian on the outside side: K₁₂ and
+// K₂₁ land at the outside state's own indices, K₂₂ nowhere.
+// BeamFEMForceField.scn (floor contacts, BTD solver) matches SOFA through this.
+TEST(LinsysMapped, CouplingWithAStateOutsideTheSystemLandsAtThatStatesOwnIndices) {
+  auto s = load(R"(<Node name="root" dt="0.01" gravity="0 0 0">
+    <DefaultAnimationLoop/>
+    <Node name="sim">
+      <EulerImplicitSolver/>
+      <SparseLDLSolver/>
+      <MechanicalObject name="top" position="0 0 0  1 0 0  2 0 0"/>
+      <UniformMass vertexMass="1"/>
+      <Node name="child">
+        <MechanicalObject name="m" position="0 0 0  1 0 0  2 0 0"/>
+        <IdentityMapping/>
+      </Node>
+      <SpringForceField name="spring" object1="@child/m" object2="@../obstacle/o" spring="2 0 100 0 1"/>
+    </Node>
+    <Node name="obstacle">
+      <MechanicalObject name="o" position="2 2 1"/>
+    </Node>
+  </Node>)");
+  ASSERT_TRUE(s.root);
+  Node* sim = s.root->find_child_named("sim");
+  ASSERT_NE(sim, nullptr);
+  MechanicalOps ops(*sim);
+  MatrixLinearSolver* solver = matrix_solver(*sim);
+  ASSERT_NE(solver, nullptr);
+  ops.compute_force(MechanicalOps::alloc_vec());  // the spring's tangent is that of its last force
+  solver->build_system(ops, 0.0, 0.0, 1.0);
+  const Eigen::MatrixXd A = solver->system()->matrix().to_dense();
+  ASSERT_EQ(A.rows(), 9);
+  const Eigen::Matrix3d k11 = A.block<3, 3>(6, 6);  // spring end on the top's point 2
+  EXPECT_GT(k11.cwiseAbs().maxCoeff(), 10.0);
+  // K₁₂ = −K₁₁ at columns 0..2 (the obstacle's point 0), K₂₁ at rows 0..2.
+  EXPECT_LT((A.block<3, 3>(6, 0) + k11).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((A.block<3, 3>(0, 6) + k11).cwiseAbs().maxCoeff(), 1e-12);
+  // No K₂₂, nothing on point 1.
+  EXPECT_EQ((A.block<3, 3>(0, 0).cwiseAbs().maxCoeff()), 0.0);
+  EXPECT_EQ((A.block<3, 9>(3, 0).cwiseAbs().maxCoeff()), 0.0);
+}
+
+// The same rule between two bodies (SOFA 2a278d8, fixed upstream later): a
+// block between states mapped from different independent states P1 and P2 is
+// projected for every pair of {P1, P2}; a side that does not reach a state
+// takes no Jacobian. With identity mappings each coupling block K₁₂ and K₂₁
+// lands in all four blocks of the system.
+TEST(LinsysMapped, CouplingBetweenStatesOfTwoBodiesIsProjectedOverBothBodies) {
+  auto s = load(R"(<Node name="root" dt="0.01" gravity="0 0 0">
+    <DefaultAnimationLoop/>
+    <EulerImplicitSolver/>
+    <SparseLDLSolver/>
+    <Node name="P1">
+      <MechanicalObject name="dofs" position="0 0 0"/>
+      <UniformMass vertexMass="1"/>
+      <Node name="M1"><MechanicalObject name="dofs" position="0 0 0"/><IdentityMapping/></Node>
+    </Node>
+    <Node name="P2">
+      <MechanicalObject name="dofs" position="2 1 0"/>
+      <UniformMass vertexMass="1"/>
+      <Node name="M2"><MechanicalObject name="dofs" position="2 1 0"/><IdentityMapping/></Node>
+    </Node>
+    <SpringForceField object1="@P1/M1/dofs" object2="@P2/M2/dofs" spring="0 0 100 0 1"/>
+  </Node>)");
+  ASSERT_TRUE(s.root);
+  MechanicalOps ops(*s.root);
+  MatrixLinearSolver* solver = matrix_solver(*s.root);
+  ASSERT_NE(solver, nullptr);
+  ops.compute_force(MechanicalOps::alloc_vec());
+  solver->build_system(ops, 0.0, 0.0, 1.0);
+  const Eigen::MatrixXd A = solver->system()->matrix().to_dense();
+  ASSERT_EQ(A.rows(), 6);
+  // K₁₁ = K₂₂ = k, K₁₂ = K₂₁ = −k: each block holds its own term plus K₁₂ + K₂₁.
+  const Eigen::Matrix3d k = -A.block<3, 3>(0, 3) / 2;
+  EXPECT_GT(k.cwiseAbs().maxCoeff(), 10.0);
+  EXPECT_LT((A.block<3, 3>(0, 0) - (k - 2 * k)).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((A.block<3, 3>(3, 0) + 2 * k).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((A.block<3, 3>(3, 3) - (k - 2 * k)).cwiseAbs().maxCoeff(), 1e-12);
+}

@@ -301,6 +301,38 @@ TEST(LinsysBlockCsr, BlockTridiagonalStructureKeepsThreeBlockDiagonals) {
   EXPECT_EQ(M.slot(0, 12), -1);
 }
 
+// SOFA's BTDMatrix stores block (bi, bj) at 3·bi + (bj − bi + 1) and refuses
+// only bj > bi + 1: an entry left of the band is written into another block of
+// its array (BeamFEMForceField.scn's floor contacts depend on it).
+TEST(LinsysBlockCsr, BlockTridiagonalEntriesLeftOfTheBandLandWhereSofasBtdMatrixPutsThem) {
+  BlockCsrMatrix M;
+  M.reset(24, 6, BlockCsrMatrix::Structure::block_tridiagonal);  // 4 block rows
+  std::vector<std::uint64_t> keys;
+  for (std::uint64_t i = 0; i < 24; ++i)
+    for (std::uint64_t j = 0; j < 24; ++j) keys.push_back((i << 32) | j);
+  M.build_pattern(keys);
+  EXPECT_EQ(M.nnz_blocks(), 10u);  // nothing but the band is stored
+  // (2, 0): index 3·2 − 1 = 5, block (1, 2); inner (1, 4) stays.
+  EXPECT_EQ(M.slot(13, 4), M.slot(7, 16));
+  // (3, 0): index 7, block (2, 2).
+  EXPECT_EQ(M.slot(18, 0), M.slot(12, 12));
+  // (3, 1): index 8, block (2, 3).
+  EXPECT_EQ(M.slot(20, 9), M.slot(14, 21));
+  // Rows below the matrix still land inside the array: (4, 1) is index 10, block (3, 3).
+  EXPECT_EQ(M.slot(24, 6), M.slot(18, 18));
+  // Index 11 is the unused slot (3, 4); 12 and beyond are past SOFA's array.
+  EXPECT_EQ(M.slot(24, 12), -1);
+  EXPECT_EQ(M.slot(30, 6), -1);
+  // Right of the band: refused, as SOFA's add().
+  EXPECT_EQ(M.slot(0, 12), -1);
+  // Values added through the slots sum in the target block.
+  M.set_zero();
+  M.values()[M.slot(18, 0)] += 2.0;
+  M.values()[M.slot(12, 12)] += 0.5;
+  EXPECT_EQ(M.coeff(12, 12), 2.5);
+  EXPECT_EQ(M.coeff(18, 0), 2.5);  // read through the same storage
+}
+
 // ---------------------------------------------------------------- constraint-correction product (§3.0)
 
 TEST(LinsysCompliance, JMinvJtMatchesDenseProduct) {

@@ -55,17 +55,17 @@ void PenaltyContactForceField::add_dforce(const MechParams& p, double kfactor) {
   }
 }
 
+// All four blocks, even on an obstacle's side, as SOFA: the system decides what
+// lands where (an obstacle outside it still adds coupling terms, see MappedAssembly).
 bool PenaltyContactForceField::build_stiffness(MatrixSink& K) {
   for (const Point& c : points_) {
     if (c.pen <= 0) continue;
     const Mat3 block = c.ks * c.normal * c.normal.transpose();
     const std::size_t i1 = 3 * c.m1, i2 = 3 * c.m2;
-    if (!fixed1_) K.add_block(s1_, i1, s1_, i1, -block);
-    if (!fixed1_ && !fixed2_) {
-      K.add_block(s1_, i1, s2_, i2, block);
-      K.add_block(s2_, i2, s1_, i1, block);
-    }
-    if (!fixed2_) K.add_block(s2_, i2, s2_, i2, -block);
+    K.add_block(s1_, i1, s1_, i1, -block);
+    K.add_block(s1_, i1, s2_, i2, block);
+    K.add_block(s2_, i2, s1_, i1, block);
+    K.add_block(s2_, i2, s2_, i2, -block);
   }
   return true;
 }

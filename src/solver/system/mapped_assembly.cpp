@@ -30,8 +30,8 @@ void MappedAssembly::project(MechanicalOps& ops, const std::vector<Pair>& pairs,
   }
   compute(sink);
   for (const Product& p : products_) {
-    const auto oa = static_cast<std::uint32_t>(offset_of(chains_[p.chain_a].tops[p.top_a].top));
-    const auto ob = static_cast<std::uint32_t>(offset_of(chains_[p.chain_b].tops[p.top_b].top));
+    const auto oa = static_cast<std::uint32_t>(offset_of(p.state_a));
+    const auto ob = static_cast<std::uint32_t>(offset_of(p.state_b));
     const Csr& R = p.R;
     for (int r = 0; r < R.rows; ++r)
       for (int q = R.ptr[r]; q < R.ptr[r + 1]; ++q)
@@ -54,6 +54,10 @@ bool MappedAssembly::unchanged(const std::vector<Pair>& pairs, const MatrixSink&
   if (j != key_target_.size()) return false;
   for (const Chain& c : chains_)
     if (scalar_size(c.state) != c.size) return false;
+  for (std::size_t p = 0; p < pairs.size(); ++p)  // states outside the system have no chain
+    if (pairs[p].first && pairs[p].second &&
+        pair_sizes_[p] != std::make_pair(scalar_size(pairs[p].first), scalar_size(pairs[p].second)))
+      return false;
   for (MappingJacobian& m : jacobians_) {
     m.entries.clear();
     if (!m.mapping->jacobian(m.entries) || m.entries.size() != m.slot.size()) return false;
@@ -100,22 +104,68 @@ void MappedAssembly::build(MechanicalOps& ops, const std::vector<Pair>& pairs, c
     for (std::size_t i = 0; i < slots.size(); ++i) slot_[where[p][i]] = slots[i];
   }
 
-  // Chains of Jacobians and the products J_aᵀ·(K·J_b) for every pair of tops.
+  // Chains of Jacobians and the products J_aᵀ·(K·J_b), by SOFA's rule
+  // (MatrixProjectionMethod::addMappedMatrixToGlobalMatrixEigen): one product
+  // for every ordered pair (a, b) of the independent states either side
+  // reaches, landing at (offset a, offset b). A side that does not reach a
+  // (or reaches nothing: a state outside this system, such as an obstacle's
+  // contact points) takes no Jacobian, i.e. its K rows or columns stay in that
+  // state's own indices. For one body this is the exact Jᵀ·K·J; otherwise
+  // SOFA adds these extra terms, and its results (BeamFEMForceField.scn:
+  // contacts with the floor) depend on them.
+  identities_.clear();
+  pair_sizes_.assign(pairs.size(), {0, 0});
+  std::vector<const MechanicalState*> tops;
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     if (!pairs[p].first || !pairs[p].second) continue;
+    pair_sizes_[p] = {scalar_size(pairs[p].first), scalar_size(pairs[p].second)};
+    const std::size_t missing_before = missing_.size();
     const int ca = chain_of(ops, pairs[p].first, offset_of, 0);
     const int cb = chain_of(ops, pairs[p].second, offset_of, 0);
-    if (ca < 0 || cb < 0) continue;
-    for (std::size_t ta = 0; ta < chains_[ca].tops.size(); ++ta)
-      for (std::size_t tb = 0; tb < chains_[cb].tops.size(); ++tb) {
-        Product prod{static_cast<int>(p), ca, static_cast<int>(ta), cb, static_cast<int>(tb), {}, {}, false, false, {}, {}};
-        csr_multiply_pattern(K_[p], chains_[cb].tops[tb].J, prod.KJ);
-        csr_multiply_pattern(chains_[ca].tops[ta].Jt, prod.KJ, prod.R);
+    if (missing_.size() != missing_before) continue;  // a mapping without Jacobian: not assembled
+    tops.clear();
+    for (int c : {ca, cb})
+      if (c >= 0)
+        for (const TopJacobian& t : chains_[c].tops)
+          if (std::find(tops.begin(), tops.end(), t.top) == tops.end()) tops.push_back(t.top);
+    for (const MechanicalState* a : tops)
+      for (const MechanicalState* b : tops) {
+        Product prod{static_cast<int>(p), ca, top_index(ca, a), cb, top_index(cb, b), {}, {}, false, false, {}, {}};
+        prod.state_a = a;
+        prod.state_b = b;
+        if (prod.top_a < 0) prod.identity_a = identity(static_cast<int>(pair_sizes_[p].first));
+        if (prod.top_b < 0) prod.identity_b = identity(static_cast<int>(pair_sizes_[p].second));
+        csr_multiply_pattern(K_[p], jacobian_b(prod), prod.KJ);
+        csr_multiply_pattern(jacobian_a_transposed(prod), prod.KJ, prod.R);
         products_.push_back(std::move(prod));
       }
   }
   valid_ = true;
   ++pattern_builds_;
+}
+
+const Csr* MappedAssembly::identity(int n) {
+  for (const Csr& c : identities_)
+    if (c.rows == n) return &c;
+  identities_.emplace_back();
+  csr_identity(n, identities_.back());
+  return &identities_.back();
+}
+
+int MappedAssembly::top_index(int chain, const MechanicalState* top) const {
+  if (chain < 0) return -1;
+  const std::vector<TopJacobian>& tops = chains_[static_cast<std::size_t>(chain)].tops;
+  for (std::size_t t = 0; t < tops.size(); ++t)
+    if (tops[t].top == top) return static_cast<int>(t);
+  return -1;
+}
+
+const Csr& MappedAssembly::jacobian_b(const Product& p) const {
+  return p.top_b < 0 ? *p.identity_b : chains_[p.chain_b].tops[p.top_b].J;
+}
+
+const Csr& MappedAssembly::jacobian_a_transposed(const Product& p) const {
+  return p.top_a < 0 ? *p.identity_a : chains_[p.chain_a].tops[p.top_a].Jt;
 }
 
 int MappedAssembly::jacobian_of(Mapping* mapping) {
@@ -246,8 +296,8 @@ void MappedAssembly::compute(const MatrixSink& sink) {
     ++j;
   }
   for (Product& p : products_) {
-    const Csr* Jb = &chains_[p.chain_b].tops[p.top_b].J;
-    const Csr* Jat = &chains_[p.chain_a].tops[p.top_a].Jt;
+    const Csr* Jb = &jacobian_b(p);
+    const Csr* Jat = &jacobian_a_transposed(p);
     if (p.frozen) {  // the Jacobians of the first assembly since the pattern was built
       if (!p.captured) {
         p.Jb = *Jb;

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <utility>
@@ -33,8 +34,9 @@ class MappedAssembly {
 
   // Reads the triplets of `sink` whose target is 1 + p (the entries of
   // pairs[p], local scalar indices) and appends Jᵀ·K·J as target-0 triplets
-  // in global indices. Pairs whose states cannot be reached through mappings
-  // with Jacobians are skipped; those mappings are listed in missing().
+  // in global indices, by SOFA's rule for states reaching different (or no)
+  // independent states (see build()). Pairs behind a mapping without Jacobian
+  // are skipped; those mappings are listed in missing().
   // `constant[p]` (when given): the Jacobians of pairs[p] are taken at the first assembly
   // after a pattern build and reused until the next one (MatrixProjectionMethod's
   // areJacobiansConstant).
@@ -78,12 +80,20 @@ class MappedAssembly {
     bool frozen = false;    // Jacobians taken once (constant[pair])
     bool captured = false;  // Jb, Jat hold them
     Csr Jb, Jat;
+    const MechanicalState* state_a = nullptr;  // the product lands at (offset of state_a, offset of state_b)
+    const MechanicalState* state_b = nullptr;
+    const Csr* identity_a = nullptr;  // J_a when top_a < 0 (that side does not reach state_a)
+    const Csr* identity_b = nullptr;
   };
 
   bool unchanged(const std::vector<Pair>& pairs, const MatrixSink& sink);
   void build(MechanicalOps& ops, const std::vector<Pair>& pairs, const MatrixSink& sink, const OffsetOf& offset_of);
   int chain_of(MechanicalOps& ops, const MechanicalState* s, const OffsetOf& offset_of, int depth);
   int jacobian_of(Mapping* m);
+  int top_index(int chain, const MechanicalState* top) const;  // -1: not reached (or chain < 0)
+  const Csr& jacobian_b(const Product& p) const;
+  const Csr& jacobian_a_transposed(const Product& p) const;
+  const Csr* identity(int n);
   void compute(const MatrixSink& sink);
 
   std::vector<Pair> pairs_;
@@ -95,6 +105,8 @@ class MappedAssembly {
   std::vector<int> key_target_, slot_;
   std::vector<std::uint32_t> key_row_, key_col_;
   std::vector<Product> products_;
+  std::deque<Csr> identities_;  // one per size (stable addresses)
+  std::vector<std::pair<std::size_t, std::size_t>> pair_sizes_;  // scalar sizes of each pair's states at the build
   std::vector<double> work_;
   std::vector<Mapping*> missing_;
   bool valid_ = false;

@@ -140,7 +140,7 @@ void SystemAssembler::build_pattern() {
   auto key_of = [](const MatrixSink::Triplet& e) { return (static_cast<std::uint64_t>(e.row) << 32) | e.col; };
   keys_.clear();
   for (const auto& e : t)
-    if (e.target == 0 && e.row < n_ && e.col < n_) keys_.push_back(key_of(e));
+    if (e.target == 0) keys_.push_back(key_of(e));  // the matrix keeps those of its structure
   matrix_.reset(n_, bs_, structure_);
   matrix_.build_pattern(keys_);
   keys_.clear();
@@ -148,7 +148,7 @@ void SystemAssembler::build_pattern() {
   for (const auto& e : t) {
     if (e.target != 0) continue;
     keys_.push_back(key_of(e));
-    slots_.push_back(e.row < n_ && e.col < n_ ? matrix_.slot(e.row, e.col) : -1);
+    slots_.push_back(matrix_.slot(e.row, e.col));
   }
   // Runs of nine keys forming a 3×3 block stored contiguously (block CSR with
   // 3×3 blocks, block-aligned): replayed with one key check (MatrixSink::add_block).
