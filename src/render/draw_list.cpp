@@ -38,6 +38,7 @@ Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind) {
   b.kind = kind;
   b.color_ambient = 0.f;
   b.point_size = 1.f;
+  b.line_width = 1.f;
   b.wireframe = false;
   b.lit = true;
   b.splat = Batch::Splat::none;
@@ -102,6 +103,7 @@ void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const C
   if (tris.empty() && quads.empty()) return;
   Batch& b = next_batch(list, &m, Batch::Kind::triangles);
   b.wireframe = wireframe;
+  b.line_width = static_cast<float>(m.line_width.get());  // SOFA's glLineWidth(lineWidth) around the draw
   b.shadow_shader = shadow_shader;
   for (int k = 0; k < Batch::kClipPlanes; ++k)
     if (const ClipPlane* c = clip[static_cast<std::size_t>(k)]) {

@@ -53,6 +53,8 @@ struct Batch {
   Shading shading{};
   float color_ambient = 0.f;  // ambient term proportional to the vertex colour (SOFA's draw tool)
   float point_size = 1.f;
+  // Width in pixels of lines and of wireframe edges (SOFA's glLineWidth / drawLines size).
+  float line_width = 1.f;
   bool wireframe = false;  // showWireframe: triangles drawn as their edges
   bool lit = true;         // triangles shaded by the headlight; false: their colour as is
   // A visual model whose material is translucent (diffuse used, alpha < 1): drawn after every

@@ -1,7 +1,6 @@
 // VisualBoundingBox as SOFA draws it: the twelve edges of the box, in its
 // colour, unlit; DataDisplay's coloured mesh; VisualPointCloud's points, spheres or frames;
-// CylinderVisualModel's cylinders. Core-profile OpenGL has no wide lines everywhere, so
-// `thickness` is not honoured (lines are one pixel wide).
+// CylinderVisualModel's cylinders. Lines are `thickness` pixels wide.
 #include "render/draw_visual.h"
 
 #include "core/node.h"
@@ -33,6 +32,7 @@ void add_box(DrawList& list, const VisualBoundingBox& vb) {
   const auto box = vb.box();
   if (!box) return;
   Batch& b = fresh_batch(list, &vb, Batch::Kind::lines);
+  b.line_width = static_cast<float>(vb.thickness.get());
   // The colour text is parsed again only when it changed (parsing allocates).
   if (!b.shading_parsed || b.material_text != vb.color.get()) {
     const Rgba c = parse_rgba(vb.color.get()).value_or(Rgba{1, 1, 0, 1});
@@ -253,6 +253,7 @@ void add_grid(DrawList& list, const VisualGrid& g) {
   thread_local std::vector<Vec3> pts;
   g.lines(pts);
   Batch& b = fresh_batch(list, &g, Batch::Kind::lines);
+  b.line_width = static_cast<float>(g.thickness.get());
   for (std::size_t i = 0; i + 1 < pts.size(); i += 2) push_line(b, pts[i], pts[i + 1]);
   set_color(b, g.color.get(), false);
   close_batch(list, b);
@@ -264,6 +265,7 @@ void add_grid(DrawList& list, const VisualGrid& g) {
 void add_axes(DrawList& list, const LineAxis& a) {
   static const Rgba kAxis[3] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};
   Batch& b = fresh_batch(list, &a, Batch::Kind::lines);
+  b.line_width = static_cast<float>(a.thickness.get());
   double half = 0.5 * a.size.get();
   if (a.infinite.get()) {
     half = 1.0;
@@ -288,6 +290,7 @@ void add_axes(DrawList& list, const LineAxis& a) {
 // sample coloured by the colour map at i over [0, nbSteps].
 void add_trails(DrawList& list, const TrailRenderer& t) {
   Batch& b = fresh_batch(list, &t, Batch::Kind::lines);
+  b.line_width = static_cast<float>(t.thickness.get());
   b.shading = Shading{{0, 0, 0, 0}, {1, 1, 1, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
   // The palette is parsed again only when the text differs from the last trail's.
   thread_local std::vector<Rgba> palette;

@@ -797,6 +797,15 @@ void GlRenderer::end_model_state(const Batch& b) {
   }
 }
 
+// Wide lines: core-profile contexts without the forward-compatible flag keep them (Mesa draws
+// each as a screen-aligned quad, as SOFA's fixed-function glLineWidth); the width is clamped
+// to the implementation's range.
+void GlRenderer::set_line_width(float w) {
+  if (line_width_range_[1] <= 0.f) glGetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, line_width_range_);
+  if (!(w >= 1.f)) w = 1.f;  // also NaN
+  glLineWidth(std::min(w, std::max(1.f, line_width_range_[1])));
+}
+
 void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {
   glBindVertexArray(g.vao);
   if (upload_data) {
@@ -862,15 +871,19 @@ void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {
     glUniform1f(u_splat_radius_, 0.f);
   } else if (b.kind == Batch::Kind::lines) {
     glUniform1i(u_lit_, 0);
+    set_line_width(b.line_width);
     glDrawArrays(GL_LINES, 0, n);
+    set_line_width(1.f);
   } else {
     glUniform1i(u_lit_, b.lit ? 1 : 0);
     glPolygonMode(GL_FRONT_AND_BACK, b.wireframe ? GL_LINE : GL_FILL);
+    if (b.wireframe) set_line_width(b.line_width);
     if (!b.indices.empty()) {
       glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.indices.size()), GL_UNSIGNED_INT, nullptr);
     } else {
       glDrawArrays(GL_TRIANGLES, 0, n);
     }
+    if (b.wireframe) set_line_width(1.f);
   }
 }
 

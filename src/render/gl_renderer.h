@@ -64,6 +64,8 @@ class GlRenderer {
   // Uploads `b` into `g` and draws it (`upload` false: drawn again from what was uploaded,
   // the second pass of a translucent model).
   void draw_batch(const Batch& b, GpuBatch& g, bool upload = true);
+  void set_line_width(float w);
+  float line_width_range_[2] = {0.f, 0.f};  // GL_ALIASED_LINE_WIDTH_RANGE, read once
   // OglModel's alphaBlend, depthTest and cullFace set before a draw of `b`, and undone after.
   static void begin_model_state(const Batch& b);
   static void end_model_state(const Batch& b);

@@ -99,7 +99,8 @@ bool ViewerApp::open_window(std::string* error) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  // Not forward-compatible: such contexts refuse wide lines (glLineWidth above 1).
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_FALSE);
   int w = options.width, h = options.height;
   if (w <= 0 || h <= 0) {  // ViewerSetting's resolution, else 1024×768
     w = 1024, h = 768;

@@ -199,6 +199,22 @@ TEST_F(RenderTest, VisualBoundingBoxDrawsTwelveEdges) {
   EXPECT_EQ(count_if(img, green, 0, static_cast<int>(100 - b) - 1), 0);  // nothing left of the front square
 }
 
+// `thickness` widens the lines as SOFA's glLineWidth: five-pixel lines cover about five times
+// the pixels of one-pixel lines (less where the twelve edges overlap near the corners).
+TEST_F(RenderTest, VisualBoundingBoxThicknessWidensItsLines) {
+  auto box = [&](const std::string& thickness) {
+    auto s = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+                        "<VisualBoundingBox color=\"green\" bbox=\"-0.5 -0.5 -0.5 0.5 0.5 0.5\" thickness=\"" +
+                        thickness + "\"/></Node>");
+    return count_if(render(*s.root), [](auto c) { return c[1] > 200 && c[0] < 30 && c[2] < 30; });
+  };
+  const long thin = box("1"), wide = box("5");
+  RecordProperty("thin", static_cast<int>(thin));
+  RecordProperty("wide", static_cast<int>(wide));
+  EXPECT_GT(wide, 4.2 * thin);
+  EXPECT_LT(wide, 5.0 * thin);
+}
+
 // Without a camera, SOFA's default view frames the cube: 3 half-diagonals from its centre.
 TEST_F(RenderTest, DefaultViewFramesTheBoundingBox) {
   auto s = test::load("<Node name=\"root\">" + cube("cube", "0 1 0", 0) + "</Node>");

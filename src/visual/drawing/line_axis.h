@@ -14,7 +14,7 @@ class LineAxis final : public VisualComponent {
   Field<std::string> axis{this, "axis", "xyz", "axes to draw (letters x, y, z, either case)", "Visualization"};
   Field<double> size{this, "size", 10.0, "length of the lines", "Visualization", "length"};
   Field<bool> infinite{this, "infinite", false, "draw lines across the scene instead of `size`", "Visualization"};
-  Field<double> thickness{this, "thickness", 1.0, "thickness of the lines (pixels; not honoured)", "Visualization"};
+  Field<double> thickness{this, "thickness", 1.0, "thickness of the lines (pixels)", "Visualization"};
   Field<bool> vanishing{this, "vanishing", false, "infinite lines fade away (not drawn: they end at the scene)",
                         "Visualization"};
   Field<int> nb_line_segments{this, "nbLineSegments", 1, "segments per axis line", "Visualization"};

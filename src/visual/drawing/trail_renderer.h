@@ -20,7 +20,7 @@ class TrailRenderer final : public VisualComponent {
   Field<unsigned> nb_steps{this, "nbSteps", 100u, "number of steps kept in the trail", "Visualization"};
   Field<std::string> color{this, "color", "0 1 0 1", "colour map of the trail: a scheme (HSV, ...) or colours",
                            "Visualization"};
-  Field<double> thickness{this, "thickness", 1.0, "thickness of the trail (pixels; not honoured)", "Visualization"};
+  Field<double> thickness{this, "thickness", 1.0, "thickness of the trail (pixels)", "Visualization"};
 
   void parse(AttributeMap& attrs, Diagnostics& diag) override;
   void reset() override { trail_.clear(); }

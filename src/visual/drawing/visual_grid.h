@@ -16,7 +16,7 @@ class VisualGrid final : public VisualComponent {
   Field<int> nb_subdiv{this, "nbSubdiv", 16, "number of subdivisions", "Visualization"};
   Field<std::string> color{this, "color", "0.34117647058 0.34117647058 0.34117647058 1", "colour of the lines",
                            "Visualization"};
-  Field<double> thickness{this, "thickness", 1.0, "thickness of the lines (pixels; not honoured)", "Visualization"};
+  Field<double> thickness{this, "thickness", 1.0, "thickness of the lines (pixels)", "Visualization"};
   Field<int> nb_line_segments{this, "nbLineSegments", 1, "segments per grid line", "Visualization"};
 
   void parse(AttributeMap& attrs, Diagnostics& diag) override;
