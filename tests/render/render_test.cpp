@@ -215,6 +215,39 @@ TEST_F(RenderTest, VisualBoundingBoxThicknessWidensItsLines) {
   EXPECT_LT(wide, 5.0 * thin);
 }
 
+// BaseROI::draw under showBehaviorModels: BoxROI's box in cyan (drawBoxes), the selected
+// points in (1, 0.4, 0.4) as squares of drawSize pixels (drawPoints); nothing without the flag.
+TEST_F(RenderTest, BoxRoiDrawsItsBoxAndSelectedPoints) {
+  auto scene = [](const std::string& flags) {
+    return "<Node name=\"root\"><VisualStyle displayFlags=\"" + flags +
+           "\"/><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>" + cube("side", "blue", 1.5) +
+           "<RegularGridTopology name=\"grid\" n=\"3 3 3\" min=\"-0.5 -0.5 -0.5\" max=\"0.5 0.5 0.5\"/>"
+           "<MechanicalObject name=\"dofs\"/>"
+           "<BoxROI box=\"-0.6 -0.6 -0.6 -0.25 0.6 0.6\" drawBoxes=\"1\" drawPoints=\"1\" drawSize=\"4\"/></Node>";
+  };
+  auto s = test::load(scene("showBehaviorModels"));
+  const Image img = render(*s.root);
+  auto cyan = [](auto c) { return c[0] < 30 && c[1] > 200 && c[2] > 200; };
+  auto salmon = [](auto c) { return c[0] > 200 && c[1] > 80 && c[1] < 125 && c[2] > 80 && c[2] < 125; };
+  const long n_cyan = count_if(img, cyan), n_salmon = count_if(img, salmon);
+  RecordProperty("cyan", static_cast<int>(n_cyan));
+  RecordProperty("salmon", static_cast<int>(n_salmon));
+  // The box's front face is 0.35 × 1.2 at distance 4.4 (f = 100 / tan 22.5° px per unit at 1):
+  // its outline alone is 2·(0.35 + 1.2)·f / 4.4 ≈ 170 pixels, four wide.
+  EXPECT_GT(n_cyan, 4 * 150);
+  // The nine points of the column x = −0.5, 4 × 4 pixels each (some hidden behind others or
+  // under the box's lines), and none right of the box.
+  EXPECT_GT(n_salmon, 3 * 16);
+  EXPECT_LE(n_salmon, 9 * 16);
+  const double f = 100.0 / std::tan(M_PI / 8);
+  const int right_of_box = static_cast<int>(100 + (-0.25 * f / 4.4)) + 3;
+  EXPECT_EQ(count_if(img, salmon, right_of_box), 0);
+  EXPECT_EQ(count_if(img, cyan, right_of_box + 3, 130), 0);  // up to the blue cube's edge
+  auto hidden = test::load(scene("hideBehaviorModels showVisual"));
+  const Image none = render(*hidden.root);
+  EXPECT_EQ(count_if(none, cyan) + count_if(none, salmon), 0);
+}
+
 // Without a camera, SOFA's default view frames the cube: 3 half-diagonals from its centre.
 TEST_F(RenderTest, DefaultViewFramesTheBoundingBox) {
   auto s = test::load("<Node name=\"root\">" + cube("cube", "0 1 0", 0) + "</Node>");

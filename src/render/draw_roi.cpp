@@ -1,0 +1,144 @@
+// Region-of-interest engines as SOFA's BaseROI::draw shows them under showBehaviorModels:
+// the region itself when drawROI (drawBoxes) is on (BoxROI::roiDraw: each aligned box's
+// twelve edges and each oriented box's, in cyan), then what the engine selected, in
+// (1, 0.4, 0.4), unlit: points (drawPoints) of max(drawSize, 1) pixels, edges, quads,
+// tetrahedra and hexahedra as lines of that width, triangles filled. SphereROI's spheres and
+// cones and MeshROI's own mesh are not drawn (their selections are).
+#include "core/node.h"
+#include "engine/base_roi.h"
+#include "engine/box_roi.h"
+#include "render/draw_collision.h"
+
+namespace sinew::render {
+
+namespace {
+
+constexpr Rgba kSelected{1.f, 0.4f, 0.4f, 1.f};
+constexpr Rgba kRegion{0.f, 1.f, 1.f, 1.f};  // SOFA's RGBAColor::cyan()
+
+void unlit(Batch& b, const Rgba& c, float size) {
+  b.shading = Shading{{0, 0, 0, 0}, c, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
+  b.shading_parsed = false;
+  b.lit = false;
+  b.line_width = size;
+  b.point_size = size;
+}
+
+void push(Batch& b, const Vec3& p) {
+  for (int k = 0; k < 3; ++k) b.positions.push_back(static_cast<float>(p[k]));
+}
+
+// BoxROI::getPointsFromOrientedBox: the parallelogram p0 p1 p2 (p3 = p0 + p2 − p1) moved by
+// depth/2 along its normal, and its copy depth below.
+std::array<Vec3, 8> oriented_corners(const VecN<10>& box) {
+  std::array<Vec3, 8> p;
+  p[0] = Vec3(box[0], box[1], box[2]);
+  p[1] = Vec3(box[3], box[4], box[5]);
+  p[2] = Vec3(box[6], box[7], box[8]);
+  const double depth = box[9];
+  const Vec3 a = p[1] - p[0], c = p[2] - p[0];
+  Vec3 normal(a[1] * c[2] - a[2] * c[1], a[2] * c[0] - a[0] * c[2], a[0] * c[1] - a[1] * c[0]);
+  if (const double n = normal.norm(); n > 0) normal /= n;
+  for (int i = 0; i < 3; ++i) p[i] += normal * depth / 2;
+  p[3] = p[0] + (p[2] - p[1]);
+  p[4] = p[0] - normal * depth;
+  p[6] = p[2] - normal * depth;
+  p[5] = p[1] - normal * depth;
+  p[7] = p[3] - normal * depth;
+  return p;
+}
+
+void add_box_region(DrawList& list, const BoxROI& roi, float width) {
+  Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
+  unlit(b, kRegion, width);
+  for (const VecN<6>& box : roi.box.get()) {
+    const Vec3 lo(box[0], box[1], box[2]), hi(box[3], box[4], box[5]);
+    auto corner = [&](int i) { return Vec3(i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]); };
+    for (int i = 0; i < 8; ++i)
+      for (int bit : {1, 2, 4})
+        if (!(i & bit)) push(b, corner(i)), push(b, corner(i | bit));
+  }
+  static constexpr int kEdges[12][2] = {{0, 1}, {0, 4}, {0, 3}, {2, 1}, {2, 6}, {2, 3},
+                                        {6, 7}, {6, 5}, {4, 5}, {4, 7}, {1, 5}, {3, 7}};
+  for (const VecN<10>& box : roi.oriented_box.get()) {
+    const auto p = oriented_corners(box);
+    for (const auto& e : kEdges) push(b, p[static_cast<std::size_t>(e[0])]), push(b, p[static_cast<std::size_t>(e[1])]);
+  }
+  close_batch(list, b);
+}
+
+void add_roi(DrawList& list, const BaseROI& roi) {
+  const float size = static_cast<float>(std::max(roi.draw_size.get(), 1.0));
+  if (roi.draw_roi.get())
+    if (const auto* box = dynamic_cast<const BoxROI*>(&roi)) add_box_region(list, *box, size);
+
+  const FlatVec& x = roi.position.get();
+  const int w = x.width;
+  const std::size_t n = x.size();
+  auto point = [&](const FlatVec& v, std::size_t i) {
+    Vec3 p = Vec3::Zero();
+    for (int k = 0; k < std::min(w, 3); ++k) p[k] = v.data[i * static_cast<std::size_t>(w) + static_cast<std::size_t>(k)];
+    return p;
+  };
+  // Elements naming a point beyond the positions are skipped (a stale selection).
+  auto lines = [&](const auto& elements, auto&& emit) {
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
+    unlit(b, kSelected, size);
+    for (const auto& e : elements) {
+      bool ok = true;
+      for (unsigned v : e) ok &= v < n;
+      if (ok) emit(b, e);
+    }
+    close_batch(list, b);
+  };
+  auto segment = [&](Batch& b, unsigned i, unsigned j) { push(b, point(x, i)), push(b, point(x, j)); };
+
+  if (roi.draw_points.get()) {
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::points);
+    unlit(b, kSelected, size);
+    const FlatVec& in = roi.points_in_roi.get();
+    if (in.width == w)
+      for (std::size_t i = 0; i < in.size(); ++i) push(b, point(in, i));
+    close_batch(list, b);
+  }
+  if (roi.draw_edges.get())
+    lines(roi.edges_in_roi.get(), [&](Batch& b, const Edge& e) { segment(b, e[0], e[1]); });
+  if (roi.draw_triangles.get()) {
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::triangles);
+    unlit(b, kSelected, size);
+    for (const Triangle& t : roi.triangles_in_roi.get())
+      if (t[0] < n && t[1] < n && t[2] < n)
+        for (unsigned v : t) push(b, point(x, v));
+    close_batch(list, b);
+  }
+  if (roi.draw_quads.get())
+    lines(roi.quads_in_roi.get(), [&](Batch& b, const Quad& q) {
+      for (unsigned j = 0; j < 4; ++j) segment(b, q[j], q[(j + 1) % 4]);
+    });
+  if (roi.draw_tetrahedra.get())
+    lines(roi.tetrahedra_in_roi.get(), [&](Batch& b, const Tetra& t) {
+      for (unsigned j = 0; j < 4; ++j) segment(b, t[j], t[(j + 1) % 4]);
+      segment(b, t[0], t[2]);
+      segment(b, t[1], t[3]);
+    });
+  if (roi.draw_hexahedra.get())
+    lines(roi.hexahedra_in_roi.get(), [&](Batch& b, const Hexa& h) {
+      // SOFA's loop joins each corner j to corner (j + 1) % 4 (not within its own face for
+      // the top four), then adds four diagonals.
+      for (unsigned j = 0; j < 8; ++j) segment(b, h[j], h[(j + 1) % 4]);
+      segment(b, h[0], h[2]);
+      segment(b, h[1], h[3]);
+      segment(b, h[4], h[5]);
+      segment(b, h[6], h[7]);
+    });
+}
+
+}  // namespace
+
+void add_rois(DrawList& list, Node& node) {
+  for (const auto& o : node.objects())
+    if (const auto* roi = dynamic_cast<const BaseROI*>(o.get()))
+      if (roi->state() != ComponentState::invalid) add_roi(list, *roi);
+}
+
+}  // namespace sinew::render
