@@ -1,13 +1,18 @@
 // Region-of-interest engines as SOFA's BaseROI::draw shows them under showBehaviorModels:
-// the region itself when drawROI (drawBoxes) is on (BoxROI::roiDraw: each aligned box's
-// twelve edges and each oriented box's, in cyan), then what the engine selected, in
-// (1, 0.4, 0.4), unlit: points (drawPoints) of max(drawSize, 1) pixels, edges, quads,
-// tetrahedra and hexahedra as lines of that width, triangles filled. SphereROI's spheres and
-// cones and MeshROI's own mesh are not drawn (their selections are).
+// the region itself when drawROI is on (BoxROI's drawBoxes: each aligned and oriented box's
+// twelve edges in cyan; SphereROI's drawSphere: its spheres in wireframe and, with edgeAngle
+// or triAngle, the cones of those angles, in cyan), then what the engine selected, unlit in
+// (1, 0.4, 0.4): points (drawPoints) of max(drawSize, 1) pixels, edges, quads, tetrahedra and
+// hexahedra as lines of that width, triangles filled (their edges with showWireframe).
+// MeshROI's own mesh is not drawn (its selection is).
+#include <cmath>
+
 #include "core/node.h"
 #include "engine/base_roi.h"
 #include "engine/box_roi.h"
+#include "engine/sphere_roi.h"
 #include "render/draw_collision.h"
+#include "render/draw_shapes.h"
 
 namespace sinew::render {
 
@@ -67,10 +72,41 @@ void add_box_region(DrawList& list, const BoxROI& roi, float width) {
   close_batch(list, b);
 }
 
-void add_roi(DrawList& list, const BaseROI& roi) {
+// SphereROI::roiDraw: a centre is drawn only with its own radius (SOFA pairs the two lists
+// up to the shorter), as a wireframe sphere, with the cones of half-angle edgeAngle about
+// `direction` and triAngle about `normal` when those are positive.
+void add_sphere_region(DrawList& list, const SphereROI& roi) {
+  const auto& c = roi.centers.get();
+  const auto& r = roi.radii.get();
+  const std::size_t n = std::min(c.size(), r.size());
+  if (n == 0) return;
+  Batch& spheres = fresh_batch(list, &roi, Batch::Kind::triangles);
+  spheres.shading = Shading{{0, 0, 0, 0}, kRegion, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
+  spheres.shading_parsed = false;
+  spheres.wireframe = true;
+  for (std::size_t i = 0; i < n; ++i) append_sphere(spheres, c[i], r[i]);
+  close_batch(list, spheres);
+  const double deg = M_PI / 180.0;
+  const double edge = roi.edge_angle.get() * deg, tri = roi.tri_angle.get() * deg;
+  if (!(roi.edge_angle.get() > 0) && !(roi.tri_angle.get() > 0)) return;
+  Batch& cones = fresh_batch(list, &roi, Batch::Kind::triangles);
+  cones.shading = spheres.shading;
+  cones.shading_parsed = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (roi.edge_angle.get() > 0)
+      append_cone(cones, c[i], c[i] + roi.direction.get() * (std::cos(edge) * r[i]), 0, std::sin(edge) * r[i]);
+    if (roi.tri_angle.get() > 0)
+      append_cone(cones, c[i], c[i] + roi.normal.get() * (std::cos(tri) * r[i]), 0, std::sin(tri) * r[i]);
+  }
+  close_batch(list, cones);
+}
+
+void add_roi(DrawList& list, const BaseROI& roi, bool wireframe) {
   const float size = static_cast<float>(std::max(roi.draw_size.get(), 1.0));
-  if (roi.draw_roi.get())
+  if (roi.draw_roi.get()) {
     if (const auto* box = dynamic_cast<const BoxROI*>(&roi)) add_box_region(list, *box, size);
+    if (const auto* sphere = dynamic_cast<const SphereROI*>(&roi)) add_sphere_region(list, *sphere);
+  }
 
   const FlatVec& x = roi.position.get();
   const int w = x.width;
@@ -106,6 +142,7 @@ void add_roi(DrawList& list, const BaseROI& roi) {
   if (roi.draw_triangles.get()) {
     Batch& b = fresh_batch(list, &roi, Batch::Kind::triangles);
     unlit(b, kSelected, size);
+    b.wireframe = wireframe;  // the polygon mode showWireframe set
     for (const Triangle& t : roi.triangles_in_roi.get())
       if (t[0] < n && t[1] < n && t[2] < n)
         for (unsigned v : t) push(b, point(x, v));
@@ -135,10 +172,10 @@ void add_roi(DrawList& list, const BaseROI& roi) {
 
 }  // namespace
 
-void add_rois(DrawList& list, Node& node) {
+void add_rois(DrawList& list, Node& node, bool wireframe) {
   for (const auto& o : node.objects())
     if (const auto* roi = dynamic_cast<const BaseROI*>(o.get()))
-      if (roi->state() != ComponentState::invalid) add_roi(list, *roi);
+      if (roi->state() != ComponentState::invalid) add_roi(list, *roi, wireframe);
 }
 
 }  // namespace sinew::render

@@ -248,6 +248,28 @@ TEST_F(RenderTest, BoxRoiDrawsItsBoxAndSelectedPoints) {
   EXPECT_EQ(count_if(none, cyan) + count_if(none, salmon), 0);
 }
 
+// SphereROI's drawSphere: its sphere in wireframe cyan (lit), inside the disc it covers.
+TEST_F(RenderTest, SphereRoiDrawsItsSphereInWireframe) {
+  auto s = test::load(
+      "<Node name=\"root\"><VisualStyle displayFlags=\"showBehaviorModels\"/>"
+      "<InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+      "<MechanicalObject name=\"dofs\" position=\"0 0 0  1.5 0 0\"/>"
+      "<SphereROI centers=\"0 0 0\" radii=\"0.5\" drawSphere=\"1\"/></Node>");
+  const Image img = render(*s.root);
+  auto bluish = [](auto c) { return c[2] > 40 && c[2] >= c[0] + 20; };  // lit cyan, not the salmon point
+  const double f = 100.0 / std::tan(M_PI / 8), radius_px = 0.5 * f / std::sqrt(25 - 0.25);
+  long inside = 0, outside = 0;
+  for (int y = 0; y < 200; ++y)
+    for (int x = 0; x < 200; ++x) {
+      if (!bluish(img.rgb(x, y))) continue;
+      (std::hypot(x + 0.5 - 100, y + 0.5 - 100) <= radius_px + 1.5 ? inside : outside)++;
+    }
+  RecordProperty("inside", static_cast<int>(inside));
+  EXPECT_GT(inside, 100);   // the wire mesh's lines
+  EXPECT_EQ(outside, 0);    // nothing beyond the disc
+  EXPECT_LT(inside, static_cast<long>(0.8 * M_PI * radius_px * radius_px));  // lines, not a filled disc
+}
+
 // Without a camera, SOFA's default view frames the cube: 3 half-diagonals from its centre.
 TEST_F(RenderTest, DefaultViewFramesTheBoundingBox) {
   auto s = test::load("<Node name=\"root\">" + cube("cube", "0 1 0", 0) + "</Node>");
