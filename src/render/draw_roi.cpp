@@ -4,12 +4,14 @@
 // or triAngle, the cones of those angles, in cyan), then what the engine selected, unlit in
 // (1, 0.4, 0.4): points (drawPoints) of max(drawSize, 1) pixels, edges, quads, tetrahedra and
 // hexahedra as lines of that width, triangles filled (their edges with showWireframe).
-// MeshROI's own mesh is not drawn (its selection is).
+// MeshROI's region (drawROI): its mesh's points in (0.4, 0.4, 1), edges and triangles, and
+// its bounding box with drawBox, in (1, 0.4, 0.4) (MeshROI::roiDraw).
 #include <cmath>
 
 #include "core/node.h"
 #include "engine/base_roi.h"
 #include "engine/box_roi.h"
+#include "engine/select/mesh_roi.h"
 #include "engine/sphere_roi.h"
 #include "render/draw_collision.h"
 #include "render/draw_shapes.h"
@@ -101,11 +103,58 @@ void add_sphere_region(DrawList& list, const SphereROI& roi) {
   close_batch(list, cones);
 }
 
+// MeshROI::roiDraw, with the same switches as the selection (drawPoints, drawEdges,
+// drawTriangles) applied to the ROI mesh, and drawBox.
+void add_mesh_region(DrawList& list, const MeshROI& roi, float size, bool wireframe) {
+  const FlatVec& x = roi.roi_position.get();
+  const std::size_t n = x.size();
+  const int w = x.width;
+  auto point = [&](std::size_t i) {
+    Vec3 p = Vec3::Zero();
+    for (int k = 0; k < std::min(w, 3); ++k) p[k] = x.data[i * static_cast<std::size_t>(w) + static_cast<std::size_t>(k)];
+    return p;
+  };
+  if (roi.draw_points.get()) {
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::points);
+    unlit(b, Rgba{0.4f, 0.4f, 1.f, 1.f}, size);
+    for (std::size_t i = 0; i < n; ++i) push(b, point(i));
+    close_batch(list, b);
+  }
+  if (roi.draw_edges.get()) {
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
+    unlit(b, kSelected, size);
+    for (const Edge& e : roi.roi_edges.get())
+      if (e[0] < n && e[1] < n) push(b, point(e[0])), push(b, point(e[1]));
+    close_batch(list, b);
+  }
+  if (roi.draw_triangles.get()) {
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::triangles);
+    unlit(b, kSelected, size);
+    b.wireframe = wireframe;
+    for (const Triangle& t : roi.roi_triangles.get())
+      if (t[0] < n && t[1] < n && t[2] < n)
+        for (unsigned v : t) push(b, point(v));
+    close_batch(list, b);
+  }
+  if (roi.draw_box.get()) {
+    const VecN<6>& box = roi.box.get();
+    const Vec3 lo(box[0], box[1], box[2]), hi(box[3], box[4], box[5]);
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
+    unlit(b, kSelected, size);
+    auto corner = [&](int i) { return Vec3(i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]); };
+    for (int i = 0; i < 8; ++i)
+      for (int bit : {1, 2, 4})
+        if (!(i & bit)) push(b, corner(i)), push(b, corner(i | bit));
+    close_batch(list, b);
+  }
+}
+
 void add_roi(DrawList& list, const BaseROI& roi, bool wireframe) {
   const float size = static_cast<float>(std::max(roi.draw_size.get(), 1.0));
   if (roi.draw_roi.get()) {
     if (const auto* box = dynamic_cast<const BoxROI*>(&roi)) add_box_region(list, *box, size);
     if (const auto* sphere = dynamic_cast<const SphereROI*>(&roi)) add_sphere_region(list, *sphere);
+    if (const auto* mesh = dynamic_cast<const MeshROI*>(&roi)) add_mesh_region(list, *mesh, size, wireframe);
   }
 
   const FlatVec& x = roi.position.get();

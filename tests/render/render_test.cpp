@@ -270,6 +270,29 @@ TEST_F(RenderTest, SphereRoiDrawsItsSphereInWireframe) {
   EXPECT_LT(inside, static_cast<long>(0.8 * M_PI * radius_px * radius_px));  // lines, not a filled disc
 }
 
+// MeshROI's drawROI: its mesh's points in (0.4, 0.4, 1) and, with drawBox, its bounding box in
+// (1, 0.4, 0.4); without drawROI, neither.
+TEST_F(RenderTest, MeshRoiDrawsItsMeshPointsAndBox) {
+  auto scene = [](const std::string& draw_roi) {
+    return "<Node name=\"root\"><VisualStyle displayFlags=\"showBehaviorModels\"/>"
+           "<InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>" + cube("side", "blue", 2.5) +
+           "<MechanicalObject name=\"dofs\" position=\"3 3 3\"/>"
+           "<MeshROI ROIposition=\"-0.5 -0.5 0  0.5 -0.5 0  0 0.5 0\" ROItriangles=\"0 1 2\" drawROI=\"" +
+           draw_roi + "\" drawPoints=\"1\" drawBox=\"1\" drawSize=\"4\"/></Node>";
+  };
+  auto blue_points = [](auto c) { return c[0] > 90 && c[0] < 115 && c[1] > 90 && c[1] < 115 && c[2] > 240; };
+  auto salmon = [](auto c) { return c[0] > 240 && c[1] > 90 && c[1] < 115 && c[2] > 90 && c[2] < 115; };
+  auto on = test::load(scene("1"));
+  const Image img = render(*on.root);
+  EXPECT_GE(count_if(img, blue_points), 3 * 12);  // three 4 × 4 squares, partly under the box's lines
+  // The box [-0.5, 0.5] × [-0.5, 0.5] × [0, 0]: a square of side f / 5 pixels, four wide.
+  const double side = 100.0 / std::tan(M_PI / 8) / 5;
+  EXPECT_GT(count_if(img, salmon), static_cast<long>(4 * 3 * side));
+  auto off = test::load(scene("0"));
+  const Image none = render(*off.root);
+  EXPECT_EQ(count_if(none, blue_points) + count_if(none, salmon), 0);
+}
+
 // Without a camera, SOFA's default view frames the cube: 3 half-diagonals from its centre.
 TEST_F(RenderTest, DefaultViewFramesTheBoundingBox) {
   auto s = test::load("<Node name=\"root\">" + cube("cube", "0 1 0", 0) + "</Node>");
