@@ -155,20 +155,8 @@ void bounding_tree(DrawList& list, const CollisionModelBase& m) {
     const float f = levels.size() > 1 ? float(l) / float(levels.size() - 1) : 0.f;
     const float rgba[4] = {1 - f, 1 - f, 1, 1};
     for (const CubeTree::Cube& c : levels[l]) {
-      const Vec3& lo = c.box.min;
-      const Vec3& hi = c.box.max;
-      for (int e = 0; e < 12; ++e) {
-        // Edge e runs along axis e / 4; the other two axes take the corners of (e % 4).
-        const int axis = e / 4, u = (axis + 1) % 3, v = (axis + 2) % 3;
-        for (int end = 0; end < 2; ++end) {
-          Vec3 p;
-          p[axis] = end ? hi[axis] : lo[axis];
-          p[u] = (e & 1) ? hi[u] : lo[u];
-          p[v] = (e & 2) ? hi[v] : lo[v];
-          for (int k = 0; k < 3; ++k) b.positions.push_back(float(p[k]));
-          b.colors.insert(b.colors.end(), rgba, rgba + 4);
-        }
-      }
+      append_box_edges(b, c.box.min, c.box.max);
+      for (int k = 0; k < 24; ++k) b.colors.insert(b.colors.end(), rgba, rgba + 4);
     }
   }
   close_batch(list, b);

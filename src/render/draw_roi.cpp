@@ -31,6 +31,14 @@ void unlit(Batch& b, const Rgba& c, float size) {
   b.point_size = size;
 }
 
+// Point i of a flat coordinate list (1 to 3 coordinates per point; missing ones are 0).
+Vec3 point_of(const FlatVec& v, std::size_t i) {
+  Vec3 p = Vec3::Zero();
+  const std::size_t w = static_cast<std::size_t>(v.width);
+  for (std::size_t k = 0; k < std::min<std::size_t>(w, 3); ++k) p[static_cast<Eigen::Index>(k)] = v.data[i * w + k];
+  return p;
+}
+
 void push(Batch& b, const Vec3& p) {
   for (int k = 0; k < 3; ++k) b.positions.push_back(static_cast<float>(p[k]));
 }
@@ -58,13 +66,8 @@ std::array<Vec3, 8> oriented_corners(const VecN<10>& box) {
 void add_box_region(DrawList& list, const BoxROI& roi, float width) {
   Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
   unlit(b, kRegion, width);
-  for (const VecN<6>& box : roi.box.get()) {
-    const Vec3 lo(box[0], box[1], box[2]), hi(box[3], box[4], box[5]);
-    auto corner = [&](int i) { return Vec3(i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]); };
-    for (int i = 0; i < 8; ++i)
-      for (int bit : {1, 2, 4})
-        if (!(i & bit)) push(b, corner(i)), push(b, corner(i | bit));
-  }
+  for (const VecN<6>& box : roi.box.get())
+    append_box_edges(b, Vec3(box[0], box[1], box[2]), Vec3(box[3], box[4], box[5]));
   static constexpr int kEdges[12][2] = {{0, 1}, {0, 4}, {0, 3}, {2, 1}, {2, 6}, {2, 3},
                                         {6, 7}, {6, 5}, {4, 5}, {4, 7}, {1, 5}, {3, 7}};
   for (const VecN<10>& box : roi.oriented_box.get()) {
@@ -108,12 +111,7 @@ void add_sphere_region(DrawList& list, const SphereROI& roi) {
 void add_mesh_region(DrawList& list, const MeshROI& roi, float size, bool wireframe) {
   const FlatVec& x = roi.roi_position.get();
   const std::size_t n = x.size();
-  const int w = x.width;
-  auto point = [&](std::size_t i) {
-    Vec3 p = Vec3::Zero();
-    for (int k = 0; k < std::min(w, 3); ++k) p[k] = x.data[i * static_cast<std::size_t>(w) + static_cast<std::size_t>(k)];
-    return p;
-  };
+  auto point = [&](std::size_t i) { return point_of(x, i); };
   if (roi.draw_points.get()) {
     Batch& b = fresh_batch(list, &roi, Batch::Kind::points);
     unlit(b, Rgba{0.4f, 0.4f, 1.f, 1.f}, size);
@@ -138,13 +136,9 @@ void add_mesh_region(DrawList& list, const MeshROI& roi, float size, bool wirefr
   }
   if (roi.draw_box.get()) {
     const VecN<6>& box = roi.box.get();
-    const Vec3 lo(box[0], box[1], box[2]), hi(box[3], box[4], box[5]);
     Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
     unlit(b, kSelected, size);
-    auto corner = [&](int i) { return Vec3(i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]); };
-    for (int i = 0; i < 8; ++i)
-      for (int bit : {1, 2, 4})
-        if (!(i & bit)) push(b, corner(i)), push(b, corner(i | bit));
+    append_box_edges(b, Vec3(box[0], box[1], box[2]), Vec3(box[3], box[4], box[5]));
     close_batch(list, b);
   }
 }
@@ -158,13 +152,8 @@ void add_roi(DrawList& list, const BaseROI& roi, bool wireframe) {
   }
 
   const FlatVec& x = roi.position.get();
-  const int w = x.width;
   const std::size_t n = x.size();
-  auto point = [&](const FlatVec& v, std::size_t i) {
-    Vec3 p = Vec3::Zero();
-    for (int k = 0; k < std::min(w, 3); ++k) p[k] = v.data[i * static_cast<std::size_t>(w) + static_cast<std::size_t>(k)];
-    return p;
-  };
+  auto point = [&](const FlatVec& v, std::size_t i) { return point_of(v, i); };
   // Elements naming a point beyond the positions are skipped (a stale selection).
   auto lines = [&](const auto& elements, auto&& emit) {
     Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
@@ -182,7 +171,7 @@ void add_roi(DrawList& list, const BaseROI& roi, bool wireframe) {
     Batch& b = fresh_batch(list, &roi, Batch::Kind::points);
     unlit(b, kSelected, size);
     const FlatVec& in = roi.points_in_roi.get();
-    if (in.width == w)
+    if (in.width == x.width)
       for (std::size_t i = 0; i < in.size(); ++i) push(b, point(in, i));
     close_batch(list, b);
   }

@@ -77,6 +77,15 @@ void append_frame(Batch& b, const Vec3& origin, const Mat3& axes, double length)
   }
 }
 
+void append_box_edges(Batch& b, const Vec3& lo, const Vec3& hi) {
+  auto corner = [&](int i) { return Vec3(i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]); };
+  for (int i = 0; i < 8; ++i)
+    for (int bit : {1, 2, 4})
+      if (!(i & bit))
+        for (const Vec3& p : {corner(i), corner(i | bit)})
+          for (int c = 0; c < 3; ++c) b.positions.push_back(static_cast<float>(p[c]));
+}
+
 void append_box(Batch& b, const Vec3& lo, const Vec3& hi, const std::array<float, 4>& color) {
   for (int axis = 0; axis < 3; ++axis)
     for (int side = 0; side < 2; ++side) {

@@ -21,6 +21,10 @@ void append_cone(Batch& b, const Vec3& a, const Vec3& tip, double ra, double rb,
 // radius L/10 and length L, then a cone of length and base radius L/5; x red, y green, z blue.
 void append_frame(Batch& b, const Vec3& origin, const Mat3& axes, double length);
 
+// The twelve edges of the axis-aligned box [lo, hi], appended to a line batch (positions only):
+// each joins two corners differing in one coordinate.
+void append_box_edges(Batch& b, const Vec3& lo, const Vec3& hi);
+
 // An axis-aligned box [lo, hi] by its six faces.
 void append_box(Batch& b, const Vec3& lo, const Vec3& hi, const std::array<float, 4>& color);
 

@@ -40,17 +40,7 @@ void add_box(DrawList& list, const VisualBoundingBox& vb) {
     b.material_text = vb.color.get();
     b.shading_parsed = true;
   }
-  const Vec3& lo = box->first;
-  const Vec3& hi = box->second;
-  auto corner = [&](int i) {
-    return Vec3(i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]);
-  };
-  // Edges join corners differing in one coordinate bit.
-  for (int i = 0; i < 8; ++i)
-    for (int bit : {1, 2, 4})
-      if (!(i & bit))
-        for (const Vec3& p : {corner(i), corner(i | bit)})
-          for (int c = 0; c < 3; ++c) b.positions.push_back(static_cast<float>(p[c]));
+  append_box_edges(b, box->first, box->second);
   close_batch(list, b);
 }
 
