@@ -13,6 +13,7 @@
 #include "viewer/camera_control.h"
 #include "viewer/input_script.h"
 #include "viewer/mouse_attach.h"
+#include "viewer/step_thread.h"
 #include "viewer/viewer.h"
 
 struct GLFWwindow;
@@ -28,6 +29,7 @@ struct Timings {
   std::array<float, kHistory> frame_ms{}, step_ms{};
   int cursor = 0;
   double step_total_ms = 0, draw_total_ms = 0;
+  std::vector<float> all_step_ms;  // every step's duration, kept for --stats (its median)
   long steps = 0, frames = 0;
   double last_frame_ms = 0, last_step_ms = 0;
 };
@@ -82,7 +84,12 @@ class ViewerApp {
   bool step();
   bool load(std::string* error);
   void run_script_events(long frame);
-  void draw_frame();
+  // A frame's picture in two halves: gathered from the scene (precondition: no step running),
+  // then drawn from what was gathered (while a step may run).
+  bool gather_frame();
+  void draw_gathered();
+  void draw_frame();  // both halves
+  void finish_step();  // waits for the running step, then what follows a step
   void draw_panels();  // panels.cpp
   std::array<float, 4> background_color() const;
   int fb_width() const;
@@ -99,6 +106,10 @@ class ViewerApp {
   bool shift_ = false;
   double grab_depth_ = 0;  // distance along the ray of the grabbed point
   Vec3 bbox_min_ = Vec3::Zero(), bbox_max_ = Vec3::Zero();
+  std::array<float, 4> background_{0.f, 0.f, 0.f, 1.f};  // gathered with the picture
+  std::unique_ptr<StepThread> stepper_;  // while the window loop runs
+  std::size_t printed_ = 0;  // diagnostics printed so far
+  int exit_code_ = 0;
 };
 
 }  // namespace sinew::viewer
