@@ -1,7 +1,5 @@
-// PlaneROI: the points (and edges, triangles, tetrahedra with all their
-// points) inside one of several slabs, each given by three points p0, p1, p2
-// (a rectangle p0-p1-p2-p3 with p3 = p0 + p2 − p1) and a depth across it
-// (SOFA's PlaneROI: its own Data, not BoxROI's).
+#include "engine/plane_roi.h"
+
 #include <cmath>
 
 #include "core/engine.h"
@@ -61,143 +59,111 @@ struct Slab {
   }
 };
 
-class PlaneROI final : public Engine {
- public:
-  explicit PlaneROI(StateType type)
-      : position(this, "position", flat(state_type_info(type).coord_width),
-                 "rest positions of the points (default: the context's state rest_position, else a loader's position)",
-                 "Inputs", "length"),
-        points_in_roi(this, "pointsInROI", flat(state_type_info(type).coord_width), "points in the ROI", "Outputs",
-                      "length") {
-    position.add_alias("rest_position");
-    draw_boxes.add_alias("isVisible");
-    for (BaseField* f : std::initializer_list<BaseField*>{&position, &edges, &triangles, &tetrahedra}) add_input(f);
-    for (BaseField* f : std::initializer_list<BaseField*>{&indices, &edge_indices, &triangle_indices,
-                                                          &tetrahedron_indices, &points_in_roi, &edges_in_roi,
-                                                          &triangles_in_roi, &tetrahedra_in_roi})
-      add_output(f);
+}  // namespace
+
+PlaneROI::PlaneROI(StateType type)
+    : position(this, "position", flat(state_type_info(type).coord_width),
+               "rest positions of the points (default: the context's state rest_position, else a loader's position)",
+               "Inputs", "length"),
+      points_in_roi(this, "pointsInROI", flat(state_type_info(type).coord_width), "points in the ROI", "Outputs",
+                    "length") {
+  position.add_alias("rest_position");
+  draw_boxes.add_alias("isVisible");
+  for (BaseField* f : std::initializer_list<BaseField*>{&position, &edges, &triangles, &tetrahedra}) add_input(f);
+  for (BaseField* f : std::initializer_list<BaseField*>{&indices, &edge_indices, &triangle_indices,
+                                                        &tetrahedron_indices, &points_in_roi, &edges_in_roi,
+                                                        &triangles_in_roi, &tetrahedra_in_roi})
+    add_output(f);
+}
+
+void PlaneROI::init() {
+  if (plane.value().size() % 10 != 0) {
+    msg_error("plane needs 10 values per slab (3 points and a depth); got " + std::to_string(plane.value().size()));
+    set_state(ComponentState::invalid);
+    return;
   }
-
-  Field<std::vector<double>> plane{this, "plane", std::vector<double>(10, 0.0),
-                                   "slabs: 3 points and a depth each (10 values per slab)", "Parameters", "length"};
-  Field<FlatVec> position;
-  Field<std::vector<Edge>> edges{this, "edges", {}, "edge topology", "Inputs"};
-  Field<std::vector<Triangle>> triangles{this, "triangles", {}, "triangle topology", "Inputs"};
-  Field<std::vector<Tetra>> tetrahedra{this, "tetrahedra", {}, "tetrahedron topology", "Inputs"};
-  Field<bool> compute_edges{this, "computeEdges", true, "select the edges", "Parameters"};
-  Field<bool> compute_triangles{this, "computeTriangles", true, "select the triangles", "Parameters"};
-  Field<bool> compute_tetrahedra{this, "computeTetrahedra", true, "select the tetrahedra", "Parameters"};
-  Field<std::vector<unsigned>> indices{this, "indices", {0}, "indices of the points in the ROI", "Outputs"};
-  Field<std::vector<unsigned>> edge_indices{this, "edgeIndices", {}, "indices of the edges in the ROI", "Outputs"};
-  Field<std::vector<unsigned>> triangle_indices{this, "triangleIndices", {}, "indices of the triangles in the ROI",
-                                                "Outputs"};
-  Field<std::vector<unsigned>> tetrahedron_indices{this, "tetrahedronIndices", {},
-                                                   "indices of the tetrahedra in the ROI", "Outputs"};
-  Field<FlatVec> points_in_roi;
-  Field<std::vector<Edge>> edges_in_roi{this, "edgesInROI", {}, "edges in the ROI", "Outputs"};
-  Field<std::vector<Triangle>> triangles_in_roi{this, "trianglesInROI", {}, "triangles in the ROI", "Outputs"};
-  Field<std::vector<Tetra>> tetrahedra_in_roi{this, "tetrahedraInROI", {}, "tetrahedra in the ROI", "Outputs"};
-  Field<bool> draw_boxes{this, "drawBoxes", false, "draw the slabs (viewer)", "Visualization"};
-  Field<bool> draw_points{this, "drawPoints", false, "draw the points (viewer)", "Visualization"};
-  Field<bool> draw_edges{this, "drawEdges", false, "draw the edges (viewer)", "Visualization"};
-  Field<bool> draw_triangles{this, "drawTriangles", false, "draw the triangles (viewer)", "Visualization"};
-  Field<bool> draw_tetrahedra{this, "drawTetrahedra", false, "draw the tetrahedra (viewer)", "Visualization"};
-  Field<double> draw_size{this, "drawSize", 1.0, "size of the drawn items (viewer)", "Visualization"};
-
-  void init() override {
-    if (plane.value().size() % 10 != 0) {
-      msg_error("plane needs 10 values per slab (3 points and a depth); got " + std::to_string(plane.value().size()));
+  Node& n = *node();
+  if (!position.is_set() && !position.parent()) {
+    // The context's state (this node, then up), else a mesh loader (this node, then up).
+    if (MechanicalState* ms = n.get_mechanical_state()) {
+      if (BaseField* f = ms->find_field("rest_position")) position.set_parent(f);
+    } else if (MeshLoader* loader = n.find_up<MeshLoader>()) {
+      position.set_parent(&loader->position);
+    } else {
+      msg_error("no positions: set 'position' or put a MechanicalObject or mesh loader above the PlaneROI");
       set_state(ComponentState::invalid);
       return;
     }
-    Node& n = *node();
-    if (!position.is_set() && !position.parent()) {
-      // The context's state (this node, then up), else a mesh loader (this node, then up).
-      if (MechanicalState* ms = n.get_mechanical_state()) {
-        if (BaseField* f = ms->find_field("rest_position")) position.set_parent(f);
-      } else if (MeshLoader* loader = n.find_up<MeshLoader>()) {
-        position.set_parent(&loader->position);
-      } else {
-        msg_error("no positions: set 'position' or put a MechanicalObject or mesh loader above the PlaneROI");
-        set_state(ComponentState::invalid);
-        return;
-      }
-    }
-    if (MeshTopologyBase* topo = n.find_up<MeshTopologyBase>()) {
-      auto link = [&](auto& field, bool wanted, const char* name) {
-        if (!field.is_set() && !field.parent() && wanted)
-          if (BaseField* f = topo->find_field(name)) field.set_parent(f);
-      };
-      if (!edges.is_set() || !triangles.is_set()) {
-        link(edges, compute_edges.value(), "edges");
-        link(triangles, compute_triangles.value(), "triangles");
-        link(tetrahedra, compute_tetrahedra.value(), "tetrahedra");
-      }
-    }
-    set_dirty();
-    update();
   }
-
- private:
-  void do_update() override {
-    const std::vector<double>& p = plane.get();
-    if (p.empty() || p.size() % 10 != 0) return;
-    slabs_.clear();
-    for (std::size_t k = 0; k < p.size(); k += 10) slabs_.emplace_back(&p[k]);
-    const FlatVec& x = position.get();
-    const std::size_t n = x.size(), w = static_cast<std::size_t>(x.width);
-    auto point = [&](unsigned i) { return Vec3(x.data[i * w], x.data[i * w + 1], x.data[i * w + 2]); };
-    auto inside = [&](const Vec3& q) {
-      for (const Slab& s : slabs_)
-        if (s.contains(q)) return true;
-      return false;
+  if (MeshTopologyBase* topo = n.find_up<MeshTopologyBase>()) {
+    auto link = [&](auto& field, bool wanted, const char* name) {
+      if (!field.is_set() && !field.parent() && wanted)
+        if (BaseField* f = topo->find_field(name)) field.set_parent(f);
     };
-    auto& ids = indices.edit();
-    auto& pts = points_in_roi.edit();
-    ids.clear();
-    pts.data.clear();
-    pts.width = x.width;
-    for (unsigned i = 0; i < n; ++i)
-      if (inside(point(i))) {
-        ids.push_back(i);
-        pts.data.insert(pts.data.end(), x.data.begin() + i * w, x.data.begin() + (i + 1) * w);
+    if (!edges.is_set() || !triangles.is_set()) {
+      link(edges, compute_edges.value(), "edges");
+      link(triangles, compute_triangles.value(), "triangles");
+      link(tetrahedra, compute_tetrahedra.value(), "tetrahedra");
+    }
+  }
+  set_dirty();
+  update();
+}
+
+void PlaneROI::do_update() {
+  const std::vector<double>& p = plane.get();
+  if (p.empty() || p.size() % 10 != 0) return;
+  std::vector<Slab> slabs;
+  for (std::size_t k = 0; k < p.size(); k += 10) slabs.emplace_back(&p[k]);
+  const FlatVec& x = position.get();
+  const std::size_t n = x.size(), w = static_cast<std::size_t>(x.width);
+  auto point = [&](unsigned i) { return Vec3(x.data[i * w], x.data[i * w + 1], x.data[i * w + 2]); };
+  auto inside = [&](const Vec3& q) {
+    for (const Slab& s : slabs)
+      if (s.contains(q)) return true;
+    return false;
+  };
+  auto& ids = indices.edit();
+  auto& pts = points_in_roi.edit();
+  ids.clear();
+  pts.data.clear();
+  pts.width = x.width;
+  for (unsigned i = 0; i < n; ++i)
+    if (inside(point(i))) {
+      ids.push_back(i);
+      pts.data.insert(pts.data.end(), x.data.begin() + i * w, x.data.begin() + (i + 1) * w);
+    }
+  // An element is in when all its points are in one same slab (SOFA tests slab by slab).
+  bool bad = false;
+  auto select = [&](const auto& elems, bool wanted, auto& out_ids, auto& out_elems) {
+    auto& oi = out_ids.edit();
+    auto& oe = out_elems.edit();
+    oi.clear();
+    oe.clear();
+    if (!wanted) return;
+    for (unsigned e = 0; e < elems.size(); ++e) {
+      bool ok = true;
+      for (unsigned v : elems[e]) ok = ok && v < n;
+      if (!ok) {
+        bad = true;
+        continue;
       }
-    // An element is in when all its points are in one same slab (SOFA tests slab by slab).
-    bool bad = false;
-    auto select = [&](const auto& elems, bool wanted, auto& out_ids, auto& out_elems) {
-      auto& oi = out_ids.edit();
-      auto& oe = out_elems.edit();
-      oi.clear();
-      oe.clear();
-      if (!wanted) return;
-      for (unsigned e = 0; e < elems.size(); ++e) {
-        bool ok = true;
-        for (unsigned v : elems[e]) ok = ok && v < n;
-        if (!ok) {
-          bad = true;
-          continue;
-        }
-        for (const Slab& s : slabs_) {
-          bool all = true;
-          for (unsigned v : elems[e]) all = all && s.contains(point(v));
-          if (all) {
-            oi.push_back(e);
-            oe.push_back(elems[e]);
-            break;
-          }
+      for (const Slab& s : slabs) {
+        bool all = true;
+        for (unsigned v : elems[e]) all = all && s.contains(point(v));
+        if (all) {
+          oi.push_back(e);
+          oe.push_back(elems[e]);
+          break;
         }
       }
-    };
-    select(edges.get(), compute_edges.value(), edge_indices, edges_in_roi);
-    select(triangles.get(), compute_triangles.value(), triangle_indices, triangles_in_roi);
-    select(tetrahedra.get(), compute_tetrahedra.value(), tetrahedron_indices, tetrahedra_in_roi);
-    if (bad) msg_error("some elements refer to points beyond the " + std::to_string(n) + " positions: skipped");
-  }
-
-  std::vector<Slab> slabs_;
-};
-
-}  // namespace
+    }
+  };
+  select(edges.get(), compute_edges.value(), edge_indices, edges_in_roi);
+  select(triangles.get(), compute_triangles.value(), triangle_indices, triangles_in_roi);
+  select(tetrahedra.get(), compute_tetrahedra.value(), tetrahedron_indices, tetrahedra_in_roi);
+  if (bad) msg_error("some elements refer to points beyond the " + std::to_string(n) + " positions: skipped");
+}
 
 void register_plane_roi(Registry& r) {
   ComponentInfo info;

@@ -36,9 +36,9 @@ inline void close_batch(DrawList& list, const Batch& b) {
 // Springs (SpringForceField and the force fields built on it) of `node`: draw_springs.cpp.
 void add_springs(DrawList& list, Node& node, const DisplayFlags& flags);
 
-// The region-of-interest engines of `node` (showBehaviorModels; `wireframe`: showWireframe's
-// polygon mode): draw_roi.cpp.
-void add_rois(DrawList& list, Node& node, bool wireframe);
+// The region-of-interest engines of `node` (under showBehaviorModels, and PairBoxROI with a
+// drawSize also without; `wireframe`: showWireframe's polygon mode): draw_roi.cpp.
+void add_rois(DrawList& list, Node& node, bool behavior_models, bool wireframe);
 
 // The mappings of `node` that SOFA draws with showMappings: draw_mappings.cpp.
 void add_mappings(DrawList& list, Node& node);

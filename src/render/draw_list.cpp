@@ -330,7 +330,7 @@ void visit(Node& node, const DisplayFlags& inherited, const ClipSet& inherited_c
   if (flags.shown(DisplayFlags::force_fields) || flags.shown(DisplayFlags::interaction_force_fields))
     add_springs(list, node, flags);
   if (flags.shown(DisplayFlags::mappings)) add_mappings(list, node);
-  if (flags.shown(DisplayFlags::behavior_models)) add_rois(list, node, flags.shown(DisplayFlags::wireframe));
+  add_rois(list, node, flags.shown(DisplayFlags::behavior_models), flags.shown(DisplayFlags::wireframe));
 
   MechanicalState* state = node.mechanical_state;
   if (state && state->state() == ComponentState::valid) {

@@ -6,11 +6,20 @@
 // hexahedra as lines of that width, triangles filled (their edges with showWireframe).
 // MeshROI's region (drawROI): its mesh's points in (0.4, 0.4, 1), edges and triangles, and
 // its bounding box with drawBox, in (1, 0.4, 0.4) (MeshROI::roiDraw).
+// The engines with a draw of their own: PlaneROI (its slabs' boxes only while drawSize is 0,
+// whatever drawBoxes says, as SOFA; points of 5 pixels, edges and tetrahedra as lines,
+// triangles filled or, with showWireframe, their edges; all cyan), ProximityROI (drawSphere:
+// spheres of half the radii in wireframe; drawPoints: 5-pixel points; cyan) and PairBoxROI
+// (its two boxes and its points in (1, 0.4, 0.4), drawSize wide, 1 when 0; drawn also
+// without showBehaviorModels when drawSize is not 0).
 #include <cmath>
 
 #include "core/node.h"
 #include "engine/base_roi.h"
 #include "engine/box_roi.h"
+#include "engine/pair_box_roi.h"
+#include "engine/plane_roi.h"
+#include "engine/select/proximity_roi.h"
 #include "engine/select/mesh_roi.h"
 #include "engine/sphere_roi.h"
 #include "render/draw_collision.h"
@@ -143,6 +152,109 @@ void add_mesh_region(DrawList& list, const MeshROI& roi, float size, bool wirefr
   }
 }
 
+// PlaneROI::draw. Points and elements are taken from `position` (SOFA's f_X0).
+void add_plane_roi(DrawList& list, const PlaneROI& roi, bool wireframe) {
+  const float size = static_cast<float>(std::max(roi.draw_size.get(), 1.0));
+  if (roi.draw_size.get() == 0) {
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
+    unlit(b, kRegion, 1.f);
+    const std::vector<double>& planes = roi.plane.get();
+    for (std::size_t k = 0; k + 10 <= planes.size(); k += 10) {
+      const double* p = &planes[k];
+      const Vec3 a(p[0], p[1], p[2]), c(p[3], p[4], p[5]), d(p[6], p[7], p[8]);
+      const Vec3 u = c - a, v = d - a;
+      Vec3 n(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]);
+      if (const double len = n.norm(); len > 0) n /= len;
+      const Vec3 half = n * (p[9] / 2);
+      const std::array<Vec3, 4> face{a, c, d, a + (d - c)};
+      for (std::size_t i = 0; i < 4; ++i) {
+        const Vec3 &from = face[i], &to = face[(i + 1) % 4];
+        push(b, from - half), push(b, to - half);  // the face below
+        push(b, from + half), push(b, to + half);  // the face above
+        push(b, from - half), push(b, from + half);
+      }
+    }
+    close_batch(list, b);
+  }
+  const FlatVec& x = roi.position.get();
+  const std::size_t n = x.size();
+  if (roi.draw_points.get()) {
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::points);
+    unlit(b, kRegion, 5.f);
+    const FlatVec& in = roi.points_in_roi.get();
+    for (std::size_t i = 0; i < in.size(); ++i) push(b, point_of(in, i));
+    close_batch(list, b);
+  }
+  auto segment = [&](Batch& b, unsigned i, unsigned j) {
+    if (i < n && j < n) push(b, point_of(x, i)), push(b, point_of(x, j));
+  };
+  if (roi.draw_edges.get()) {
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
+    unlit(b, kRegion, size);
+    for (const Edge& e : roi.edges_in_roi.get()) segment(b, e[0], e[1]);
+    close_batch(list, b);
+  }
+  if (roi.draw_triangles.get()) {
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::triangles);
+    unlit(b, kRegion, size);
+    b.wireframe = wireframe;  // the polygon mode showWireframe set
+    for (const Triangle& t : roi.triangles_in_roi.get())
+      if (t[0] < n && t[1] < n && t[2] < n)
+        for (unsigned v : t) push(b, point_of(x, v));
+    close_batch(list, b);
+  }
+  if (roi.draw_tetrahedra.get()) {
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
+    unlit(b, kRegion, size);
+    for (const Tetra& t : roi.tetrahedra_in_roi.get()) {
+      for (unsigned j = 0; j < 4; ++j) segment(b, t[j], t[(j + 1) % 4]);
+      segment(b, t[0], t[2]);
+      segment(b, t[1], t[3]);
+    }
+    close_batch(list, b);
+  }
+}
+
+// ProximityROI::draw.
+void add_proximity_roi(DrawList& list, const ProximityROI& roi) {
+  if (roi.draw_sphere.get()) {
+    const auto& c = roi.centers.get();
+    const auto& r = roi.radii.get();
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::triangles);
+    b.shading = Shading{{0, 0, 0, 0}, kRegion, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
+    b.shading_parsed = false;
+    b.wireframe = true;
+    for (std::size_t i = 0; i < std::min(c.size(), r.size()); ++i) append_sphere(b, c[i], r[i] * 0.5);
+    close_batch(list, b);
+  }
+  if (roi.draw_points.get()) {
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::points);
+    unlit(b, kRegion, 5.f);
+    for (const Vec3& p : roi.points_in_roi.get()) push(b, p);
+    close_batch(list, b);
+  }
+}
+
+// PairBoxROI::draw.
+void add_pair_box_roi(DrawList& list, const PairBoxROI& roi) {
+  const float size = roi.draw_size.get() != 0 ? static_cast<float>(roi.draw_size.get()) : 1.f;
+  for (const auto* box : {roi.draw_inclusive_box.get() ? &roi.inclusive_box.get() : nullptr,
+                          roi.draw_included_box.get() ? &roi.included_box.get() : nullptr}) {
+    if (!box) continue;
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
+    unlit(b, kSelected, size);
+    append_box_edges(b, Vec3((*box)[0], (*box)[1], (*box)[2]), Vec3((*box)[3], (*box)[4], (*box)[5]));
+    close_batch(list, b);
+  }
+  if (roi.draw_points.get()) {
+    Batch& b = fresh_batch(list, &roi, Batch::Kind::points);
+    unlit(b, kSelected, size);
+    const FlatVec& in = roi.points_in_roi.get();
+    for (std::size_t i = 0; i < in.size(); ++i) push(b, point_of(in, i));
+    close_batch(list, b);
+  }
+}
+
 void add_roi(DrawList& list, const BaseROI& roi, bool wireframe) {
   const float size = static_cast<float>(std::max(roi.draw_size.get(), 1.0));
   if (roi.draw_roi.get()) {
@@ -210,10 +322,18 @@ void add_roi(DrawList& list, const BaseROI& roi, bool wireframe) {
 
 }  // namespace
 
-void add_rois(DrawList& list, Node& node, bool wireframe) {
-  for (const auto& o : node.objects())
-    if (const auto* roi = dynamic_cast<const BaseROI*>(o.get()))
-      if (roi->state() != ComponentState::invalid) add_roi(list, *roi, wireframe);
+void add_rois(DrawList& list, Node& node, bool behavior_models, bool wireframe) {
+  for (const auto& o : node.objects()) {
+    if (o->state() == ComponentState::invalid) continue;
+    if (const auto* pair = dynamic_cast<const PairBoxROI*>(o.get())) {
+      if (behavior_models || pair->draw_size.get() != 0) add_pair_box_roi(list, *pair);
+      continue;
+    }
+    if (!behavior_models) continue;
+    if (const auto* roi = dynamic_cast<const BaseROI*>(o.get())) add_roi(list, *roi, wireframe);
+    else if (const auto* plane = dynamic_cast<const PlaneROI*>(o.get())) add_plane_roi(list, *plane, wireframe);
+    else if (const auto* proximity = dynamic_cast<const ProximityROI*>(o.get())) add_proximity_roi(list, *proximity);
+  }
 }
 
 }  // namespace sinew::render

@@ -270,6 +270,89 @@ TEST_F(RenderTest, SphereRoiDrawsItsSphereInWireframe) {
   EXPECT_LT(inside, static_cast<long>(0.8 * M_PI * radius_px * radius_px));  // lines, not a filled disc
 }
 
+// PlaneROI::draw: triangles in the slab filled in cyan; the slab's box only while drawSize is 0
+// (drawBoxes is not read, as in SOFA).
+TEST_F(RenderTest, PlaneRoiFillsItsTrianglesAndDrawsItsSlabOnlyAtDrawSizeZero) {
+  auto scene = [](const std::string& extra) {
+    return "<Node name=\"root\"><VisualStyle displayFlags=\"showBehaviorModels\"/>"
+           "<InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+           "<MechanicalObject name=\"dofs\" position=\"-0.5 -0.5 0  0.5 -0.5 0  0.5 0.5 0  -0.5 0.5 0\"/>"
+           "<PlaneROI plane=\"-0.6 -0.6 0  0.6 -0.6 0  0.6 0.6 0  0.2\" position=\"@dofs.position\" "
+           "triangles=\"0 1 2  0 2 3\" drawBoxes=\"1\" " + extra + "/></Node>";
+  };
+  auto cyan = [](auto c) { return c[0] < 30 && c[1] > 200 && c[2] > 200; };
+  const double side = 100.0 / std::tan(M_PI / 8) / 5;  // the unit square's side in pixels
+  auto filled = test::load(scene("drawTriangles=\"1\""));
+  const long n_filled = count_if(render(*filled.root), cyan);
+  RecordProperty("filled", static_cast<int>(n_filled));
+  EXPECT_GT(n_filled, static_cast<long>(0.9 * side * side));
+  EXPECT_LT(n_filled, static_cast<long>(1.1 * side * side));
+  auto boxes_off = test::load(scene(""));
+  EXPECT_EQ(count_if(render(*boxes_off.root), cyan), 0);
+  auto slab = test::load(scene("drawSize=\"0\""));
+  const long n_slab = count_if(render(*slab.root), cyan);
+  RecordProperty("slab", static_cast<int>(n_slab));
+  // The slab's two 1.2-wide squares at z = ±0.1, one pixel wide: about 2 × 4 × 1.2 × side.
+  EXPECT_GT(n_slab, static_cast<long>(1.5 * 4 * 1.2 * side));
+  EXPECT_LT(n_slab, static_cast<long>(2.5 * 4 * 1.2 * side));
+}
+
+// ProximityROI::draw: its spheres at half their radii, in wireframe cyan, and the selected
+// points as 5-pixel squares.
+TEST_F(RenderTest, ProximityRoiDrawsHalfRadiusSpheresAndItsPoints) {
+  auto s = test::load(
+      "<Node name=\"root\"><VisualStyle displayFlags=\"showBehaviorModels\"/>"
+      "<InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+      "<MechanicalObject name=\"dofs\" position=\"0 0 0  1.5 0 0\"/>"
+      "<ProximityROI centers=\"0 0 0\" radii=\"1\" N=\"5\" position=\"@dofs.position\" drawSphere=\"1\"/></Node>");
+  const Image img = render(*s.root);
+  auto bluish = [](auto c) { return c[2] > 40 && c[2] >= c[0] + 20; };
+  const double f = 100.0 / std::tan(M_PI / 8), radius_px = 0.5 * f / std::sqrt(25 - 0.25);
+  long inside = 0, outside = 0;
+  for (int y = 0; y < 200; ++y)
+    for (int x = 0; x < 200; ++x) {
+      if (!bluish(img.rgb(x, y))) continue;
+      (std::hypot(x + 0.5 - 100, y + 0.5 - 100) <= radius_px + 1.5 ? inside : outside)++;
+    }
+  RecordProperty("inside", static_cast<int>(inside));
+  EXPECT_GT(inside, 100);
+  EXPECT_EQ(outside, 0);  // the radius is halved: nothing out to the full radius's disc
+  auto points = test::load(
+      "<Node name=\"root\"><VisualStyle displayFlags=\"showBehaviorModels\"/>"
+      "<InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+      "<MechanicalObject name=\"dofs\" position=\"0 0 0  0.5 0 0  3 0 0\"/>"
+      "<ProximityROI centers=\"0 0 0\" radii=\"1\" N=\"5\" position=\"@dofs.position\" drawPoints=\"1\"/></Node>");
+  auto cyan = [](auto c) { return c[0] < 30 && c[1] > 200 && c[2] > 200; };
+  EXPECT_EQ(count_if(render(*points.root), cyan), 2 * 25);  // two points in the sphere, 5 × 5 each
+}
+
+// PairBoxROI::draw: its boxes in (1, 0.4, 0.4), drawn also without showBehaviorModels when
+// drawSize is not 0, and not at all otherwise.
+TEST_F(RenderTest, PairBoxRoiDrawsItsBoxesWithADrawSizeEvenWithoutBehaviorModels) {
+  auto scene = [](const std::string& flags, const std::string& size) {
+    return "<Node name=\"root\"><VisualStyle displayFlags=\"" + flags + "\"/>"
+           "<InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+           "<MechanicalObject name=\"dofs\" position=\"0 0 0  0.8 0 0\"/>"
+           "<PairBoxROI inclusiveBox=\"-1 -1 0  1 1 0\" includedBox=\"-0.5 -0.5 0  0.5 0.5 0\" "
+           "drawInclusiveBox=\"1\" drawIncludedBox=\"1\" drawSize=\"" + size + "\"/></Node>";
+  };
+  auto salmon = [](auto c) { return c[0] > 240 && c[1] > 90 && c[1] < 115 && c[2] > 90 && c[2] < 115; };
+  const double side = 100.0 / std::tan(M_PI / 8) / 5;
+  auto hidden_sized = test::load(scene("hideBehaviorModels", "2"));
+  const long n = count_if(render(*hidden_sized.root), salmon);
+  RecordProperty("boxes", static_cast<int>(n));
+  // Two square outlines of sides 2 and 1 (× side pixels), two pixels wide.
+  EXPECT_GT(n, static_cast<long>(0.8 * 2 * 4 * 3 * side));
+  EXPECT_LT(n, static_cast<long>(1.2 * 2 * 4 * 3 * side));
+  auto hidden = test::load(scene("hideBehaviorModels", "0"));
+  Image none;
+  std::string err;
+  EXPECT_FALSE(renderer_->render(*hidden.root, none, &err));  // nothing drawn at all
+  EXPECT_NE(err.find("nothing is visible"), std::string::npos) << err;
+  auto shown = test::load(scene("showBehaviorModels", "0"));
+  EXPECT_GT(count_if(render(*shown.root), salmon), static_cast<long>(0.8 * 4 * 3 * side));
+}
+
 // MeshROI's drawROI: its mesh's points in (0.4, 0.4, 1) and, with drawBox, its bounding box in
 // (1, 0.4, 0.4); without drawROI, neither.
 TEST_F(RenderTest, MeshRoiDrawsItsMeshPointsAndBox) {
