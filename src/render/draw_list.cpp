@@ -16,6 +16,7 @@
 #include "visual/drawing/ogl_scene_frame.h"
 #include "visual/ogl_model.h"
 #include "visual/rendering2d/ogl_viewport.h"
+#include "visual/shader/ogl_shader.h"
 #include "visual/shader/order_independent_transparency.h"
 #include "visual/visual_style.h"
 
@@ -96,7 +97,69 @@ void model_vertices(const OglModel& m, std::vector<float>& out) {
   }
 }
 
-void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const ClipSet& clip, bool shadow_shader) {
+// The nearest shader of a node or above, as SOFA's getShader: an OglShadowShader (shaded by
+// render/shadow_maps.h) or an active OglShader, run as written (render/scene_shader.h).
+// A passive or turned-off shader leaves its models to the fixed-function look, as in SOFA.
+struct ShaderContext {
+  bool shadow = false;
+  const OglShader* scene = nullptr;
+};
+
+// The elements of `shader` (its node's OglShaderElements of the version in use) into the
+// list's shaders, once per frame; its index there, or -1 when it cannot run here (a
+// geometry or tessellation stage, or no vertex or fragment file).
+int scene_shader_index(DrawList& list, const OglShader& shader) {
+  for (std::size_t i = 0; i < list.shaders.size(); ++i)
+    if (list.shaders[i].source == &shader) return list.shaders[i].vertex_file.empty() ? -1 : static_cast<int>(i);
+  SceneShader& s = list.shaders.emplace_back();
+  s.source = &shader;
+  if (!shader.file_of(shader.geometry).empty() || !shader.file_of(shader.tess_control).empty() ||
+      !shader.file_of(shader.tess_eval).empty())
+    return -1;
+  s.vertex_file = shader.file_of(shader.vertex);
+  s.fragment_file = shader.file_of(shader.fragment);
+  if (s.vertex_file.empty() || s.fragment_file.empty()) {
+    s.vertex_file.clear();
+    return -1;
+  }
+  const unsigned version = shader.index_active_shader.get();
+  for (const auto& o : shader.node()->objects()) {
+    const auto* e = dynamic_cast<const ShaderElement*>(o.get());
+    if (!e || e->index_shader.get() != version || e->state() == ComponentState::invalid) continue;
+    ShaderInput in = e->input();
+    const std::string& id = e->id.get();
+    switch (in.kind) {
+      case ShaderInput::Kind::macro: s.defines.emplace_back(id, in.text); break;
+      case ShaderInput::Kind::int_uniform:
+      case ShaderInput::Kind::float_uniform:
+      case ShaderInput::Kind::matrix_uniform: s.uniforms.push_back({id, std::move(in)}); break;
+      case ShaderInput::Kind::texture: s.textures.push_back({id, std::move(in)}); break;
+      default: break;
+    }
+  }
+  return static_cast<int>(list.shaders.size() - 1);
+}
+
+// The per-vertex attributes of `shader` for a model of `n` vertices in `node`: those of the
+// shader's node and of the model's, with one item per vertex (others would be read past
+// their end).
+void add_attributes(Batch& b, const OglShader& shader, const Node& node, std::size_t n) {
+  b.attributes.clear();
+  const unsigned version = shader.index_active_shader.get();
+  const Node* nodes[2] = {shader.node(), &node};
+  for (int k = 0; k < (nodes[0] == nodes[1] ? 1 : 2); ++k)
+    for (const auto& o : nodes[k]->objects()) {
+      const auto* e = dynamic_cast<const ShaderElement*>(o.get());
+      if (!e || e->index_shader.get() != version || e->state() == ComponentState::invalid) continue;
+      ShaderInput in = e->input();
+      if (in.kind != ShaderInput::Kind::attribute || in.values.size() != n * static_cast<std::size_t>(in.width))
+        continue;
+      b.attributes.push_back({e->id.get(), in.width, std::move(in.values)});
+    }
+}
+
+void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const ClipSet& clip,
+                      const ShaderContext& shader) {
   if (!m.enable.get() || !m.is_enabled.get() || m.state() != ComponentState::valid) return;
   const auto& tris = m.triangles.get();
   const auto& quads = m.quads.get();
@@ -104,7 +167,8 @@ void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const C
   Batch& b = next_batch(list, &m, Batch::Kind::triangles);
   b.wireframe = wireframe;
   b.line_width = static_cast<float>(m.line_width.get());  // SOFA's glLineWidth(lineWidth) around the draw
-  b.shadow_shader = shadow_shader;
+  b.shadow_shader = shader.shadow;
+  b.shader = -1;
   for (int k = 0; k < Batch::kClipPlanes; ++k)
     if (const ClipPlane* c = clip[static_cast<std::size_t>(k)]) {
       // kept: (p - position)·normal <= 0, i.e. -normal·p + normal·position >= 0
@@ -173,6 +237,10 @@ void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const C
   b.dest_factor = m.dest_factor_index();
   b.depth_test = m.depth_test.get();
   b.cull = m.cull_face.get();
+  if (shader.scene) {
+    b.shader = scene_shader_index(list, *shader.scene);
+    if (b.shader >= 0) add_attributes(b, *shader.scene, *m.node(), n);
+  }
   grow_bounds(list, b.positions);
 }
 
@@ -263,7 +331,7 @@ void add_points(DrawList& list, const MechanicalState& state) {
 // SOFA's visual traversal (tree order without repetition): a node is drawn
 // once, reached through the first of its parents visited, with that parent's
 // display flags. `seen` lists the nodes with several parents already drawn.
-void visit(Node& node, const DisplayFlags& inherited, const ClipSet& inherited_clip, bool shadow_shader,
+void visit(Node& node, const DisplayFlags& inherited, const ClipSet& inherited_clip, ShaderContext shader,
            DrawList& list, std::vector<float>& scratch, std::vector<const MechanicalState*>& deferred,
            std::vector<const Node*>& seen) {
   if (!node.activated.value()) return;
@@ -286,12 +354,16 @@ void visit(Node& node, const DisplayFlags& inherited, const ClipSet& inherited_c
     }
   // SOFA draws a node's models with the nearest shader of the node or above (getShader()).
   for (const auto& o : node.objects())
-    if (o->class_name() == "OglShadowShader" && o->state() == ComponentState::valid) shadow_shader = true;
+    if (const auto* sh = dynamic_cast<const OglShader*>(o.get()); sh && sh->state() == ComponentState::valid) {
+      if (o->class_name() == "OglShadowShader") shader = {true, nullptr};
+      else if (sh->turn_on.get() && !sh->passive.get()) shader = {false, sh};
+      else shader = {};
+    }
 
   if (flags.shown(DisplayFlags::visual_models))
     for (const auto& o : node.objects())
       if (const auto* m = dynamic_cast<const OglModel*>(o.get()))
-        add_visual_model(list, *m, flags.shown(DisplayFlags::wireframe), clip, shadow_shader);
+        add_visual_model(list, *m, flags.shown(DisplayFlags::wireframe), clip, shader);
   if (flags.shown(DisplayFlags::visual_models)) add_visual_extras(list, node);
   add_texts(list, node, flags.shown(DisplayFlags::visual_models));
   add_camera_paths(list, node);
@@ -352,7 +424,7 @@ void visit(Node& node, const DisplayFlags& inherited, const ClipSet& inherited_c
       else deferred.push_back(state);
     }
   }
-  for (Node* child : node.children()) visit(*child, flags, clip, shadow_shader, list, scratch, deferred, seen);
+  for (Node* child : node.children()) visit(*child, flags, clip, shader, list, scratch, deferred, seen);
 }
 
 }  // namespace
@@ -405,13 +477,14 @@ void gather(Node& root, DrawList& out) {
   out.texts_used = 0;
   out.overlay_rects.clear();
   out.viewports.clear();
+  out.shaders.clear();
   out.has_bounds = false;
   thread_local std::vector<float> scratch;
   thread_local std::vector<const MechanicalState*> deferred;
   thread_local std::vector<const Node*> seen;
   deferred.clear();
   seen.clear();
-  visit(root, DisplayFlags::viewer_defaults(), ClipSet{}, false, out, scratch, deferred, seen);
+  visit(root, DisplayFlags::viewer_defaults(), ClipSet{}, ShaderContext{}, out, scratch, deferred, seen);
   out.frame.on = false;
   if (const OglSceneFrame* f = root.find_down<OglSceneFrame>(); f && f->draw.get() && f->state() == ComponentState::valid) {
     static const char* const kStyles[] = {"Arrows", "Cylinders", "CubeCones"};

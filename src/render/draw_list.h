@@ -26,11 +26,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/roles.h"
 #include "render/material.h"
 #include "visual/shader/light.h"
+#include "visual/shader/shader_element.h"
 
 namespace sinew {
 class Node;
@@ -87,6 +89,15 @@ struct Batch {
   // A visual model under an OglShadowShader (its node or an ancestor): shaded as SOFA's
   // shadow-mapping shaders do (Lighting::shadows adds the lights' shadow maps).
   bool shadow_shader = false;
+  // A visual model under an OglShader: the index of its program in DrawList::shaders (-1:
+  // none), and the shader's per-vertex attributes (one item of `width` floats per vertex).
+  int shader = -1;
+  struct Attribute {
+    std::string name;
+    int width = 1;
+    std::vector<float> values;
+  };
+  std::vector<Attribute> attributes;
   // The texts `shading` was parsed from (a model's material and colour, a box's colour), so
   // that it is parsed again only when they change. Texts rather than field versions: a
   // component of another scene can take a freed component's address with the same version.
@@ -141,8 +152,22 @@ struct Oit {
   float depth_scale = 0.01f;  // of the blending weights (1/length)
 };
 
+// An OglShader the visual models under it are drawn with (render/scene_shader.h): its GLSL
+// files (the version in use), and the #defines, uniforms and textures of its elements.
+struct SceneShader {
+  const Component* source = nullptr;
+  std::string vertex_file, fragment_file;
+  std::vector<std::pair<std::string, std::string>> defines;
+  struct Input {
+    std::string name;
+    ShaderInput value;
+  };
+  std::vector<Input> uniforms, textures;
+};
+
 struct DrawList {
   std::vector<Batch> batches;
+  std::vector<SceneShader> shaders;  // this frame's, by first use in graph order
   std::vector<ExtraViewport> viewports;  // OglViewports shown, in graph order
   std::vector<Text> texts;  // texts[0, texts_used) are this frame's, drawn over the models
   std::size_t texts_used = 0;

@@ -11,6 +11,8 @@
 
 #include "render/draw_shapes.h"
 #include "render/draw_text.h"
+#include "render/gl_program.h"
+#include "render/scene_shader.h"
 #include "render/image_file.h"
 #include "render/shadow_maps.h"
 
@@ -416,6 +418,14 @@ unsigned link(const char* vertex, const char* fragment, std::string* error) {
 
 }  // namespace
 
+unsigned link_program(const char* vertex, const char* fragment, std::string* error) {
+  return link(vertex, fragment, error);
+}
+
+void upload_buffer(unsigned target, unsigned buffer, const void* data, std::size_t bytes, std::size_t& capacity) {
+  upload(static_cast<GLenum>(target), buffer, data, bytes, capacity);
+}
+
 std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int samples, std::string* error) {
   std::unique_ptr<GlRenderer> r(new GlRenderer);
   GLint max_samples = 0;
@@ -634,7 +644,9 @@ GlRenderer::~GlRenderer() {
     glDeleteVertexArrays(1, &g.vao);
     glDeleteBuffers(4, g.vbo);
     glDeleteBuffers(1, &g.ebo);
+    if (!g.attribute_vbo.empty()) glDeleteBuffers(static_cast<GLsizei>(g.attribute_vbo.size()), g.attribute_vbo.data());
   }
+  scene_shaders_.reset();
   for (const auto& t : textures_)
     if (t.second) glDeleteTextures(1, &t.second);
   if (program_) glDeleteProgram(program_);
@@ -715,6 +727,8 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
 void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y, int width, int height,
                            bool shadow_maps) {
   glUseProgram(program_);
+  pass_list_ = &list;
+  pass_view_ = view;
   glUniformMatrix4fv(u_view_, 1, GL_FALSE, view.view.data());  // Eigen is column-major, as GL
   glUniformMatrix4fv(u_proj_, 1, GL_FALSE, view.projection.data());
   glUniform1f(u_half_height_, 0.5f * static_cast<float>(height));
@@ -878,6 +892,19 @@ void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {
     glUniform1i(u_lit_, b.lit ? 1 : 0);
     glPolygonMode(GL_FRONT_AND_BACK, b.wireframe ? GL_LINE : GL_FILL);
     if (b.wireframe) set_line_width(b.line_width);
+    if (b.shader >= 0 && pass_list_ && static_cast<std::size_t>(b.shader) < pass_list_->shaders.size()) {
+      if (!scene_shaders_) scene_shaders_ = std::make_unique<SceneShaders>();
+      if (scene_shaders_->bind(pass_list_->shaders[static_cast<std::size_t>(b.shader)], b, pass_view_,
+                               pass_list_->lighting, g.attribute_vbo, g.attribute_capacity)) {
+        clip_distances(false);  // SOFA's shaders write no gl_ClipDistance
+        if (!b.indices.empty()) glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.indices.size()), GL_UNSIGNED_INT, nullptr);
+        else glDrawArrays(GL_TRIANGLES, 0, n);
+        clip_distances(true);
+        glUseProgram(program_);
+        if (b.wireframe) set_line_width(1.f);
+        return;
+      }
+    }
     if (!b.indices.empty()) {
       glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.indices.size()), GL_UNSIGNED_INT, nullptr);
     } else {

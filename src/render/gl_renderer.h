@@ -20,6 +20,7 @@
 namespace sinew::render {
 
 struct LightView;
+class SceneShaders;
 
 class GlRenderer {
  public:
@@ -47,6 +48,8 @@ class GlRenderer {
   struct GpuBatch {
     unsigned vao = 0, vbo[4] = {0, 0, 0, 0}, ebo = 0;
     std::size_t capacity[5] = {0, 0, 0, 0, 0};  // bytes: positions, normals, colours, indices, texcoords
+    std::vector<unsigned> attribute_vbo;  // a scene shader's per-vertex attributes
+    std::vector<std::size_t> attribute_capacity;
   };
   int width_ = 0, height_ = 0, samples_ = 0;
   unsigned fbo_ = 0, color_rb_ = 0, depth_rb_ = 0, resolve_fbo_ = 0, resolve_rb_ = 0;
@@ -108,6 +111,11 @@ class GlRenderer {
   std::vector<float> text_vertices_;
   std::string font_;
   bool font_warned_ = false;
+  // Scene shaders (OglShader, render/scene_shader.h) for the batches under one; the list and
+  // view of the pass being drawn, which they read.
+  std::unique_ptr<SceneShaders> scene_shaders_;
+  const DrawList* pass_list_ = nullptr;
+  View pass_view_;
   // The scene's lights as uniforms, in eye space (none: the shader's headlight).
   void set_lights(const Lighting& l, const View& view);
   Eigen::Matrix4f view_ = Eigen::Matrix4f::Identity();

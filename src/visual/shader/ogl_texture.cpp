@@ -1,8 +1,8 @@
 // OglTexture and OglTexture2D (SOFA's Sofa.GL.Component.Shader): an image
-// bound to a texture unit of the node's shader (a sampler named `id`).
-// Sinew's renderer uses its own shading, so the texture is not sampled by a
-// shader; OglModel's `texturename` is what textures a model. The files named
-// are checked at init (a missing one is a warning, as SOFA's failed load).
+// bound to a texture unit of the node's shader (a sampler named `id`), read
+// by the renderer through input(). The files named are checked at init (a
+// missing one is a warning, as SOFA's failed load). Cube maps are accepted
+// and checked, not bound (no example shader samples one).
 #include "core/registry.h"
 #include "visual/shader/shader_element.h"
 
@@ -44,6 +44,21 @@ class OglTexture : public ShaderElement {
       if (f->is_set()) warn_missing_files(*this, f->name(), {f->get()});
     if (min_lod.value() > max_lod.value()) msg_warning("minLod is greater than maxLod");
   }
+  ShaderInput input() const override {
+    ShaderInput in;
+    if (!enabled.get()) return in;
+    in.kind = ShaderInput::Kind::texture;
+    in.text = filename.get();
+    in.unit = texture_unit.get();
+    in.repeat = repeat.get();
+    in.linear = linear_interpolation.get();
+    if (in.text.empty()) {  // a procedural image: one channel, `proceduralTextureNbBits` per texel
+      in.texture_width = static_cast<int>(procedural_width.get());
+      in.texture_height = static_cast<int>(procedural_height.get());
+      for (unsigned v : procedural_data.get()) in.values.push_back(static_cast<float>(v));
+    }
+    return in;
+  }
 };
 
 // Deprecated in SOFA: the file is `texture2DFilename`, copied into `filename` at init.
@@ -64,13 +79,13 @@ void register_ogl_texture(Registry& r) {
   ComponentInfo t;
   t.name = "OglTexture";
   t.category = "Visual";
-  t.description = "image bound to a texture unit of the node's shader (viewer only; file checked)";
+  t.description = "image bound to a texture unit of the node's shader (viewer only)";
   t.create = creator<OglTexture>();
   r.add(std::move(t));
   ComponentInfo t2;
   t2.name = "OglTexture2D";
   t2.category = "Visual";
-  t2.description = "deprecated form of OglTexture (viewer only; file checked)";
+  t2.description = "deprecated form of OglTexture (viewer only)";
   t2.create = creator<OglTexture2D>();
   r.add(std::move(t2));
 }

@@ -1,9 +1,10 @@
 // OglXxxVariable and OglXxxAttribute (SOFA's Sofa.GL.Component.Shader):
 // uniforms and per-vertex attributes a SOFA viewer passes to the shader of
-// the node. Sinew's renderer keeps its own shading (docs/render.md); values
-// are parsed with their SOFA types, so a bad value is a load error naming
-// the component and field, and scripts read them back as in SOFA.
+// the node (the renderer reads them through input(), render/scene_shader.h).
+// Values are parsed with their SOFA types, so a bad value is a load error
+// naming the component and field, and scripts read them back as in SOFA.
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/registry.h"
@@ -20,11 +21,42 @@ T zero_value() {
   else return T{};
 }
 
+// A value as flat floats: `width` numbers per item, `array` when it is a list.
+template <class T>
+void flatten(const T& v, ShaderInput& in) {
+  if constexpr (std::is_arithmetic_v<T>) {
+    in.values.push_back(static_cast<float>(v));
+  } else if constexpr (requires { v.size(); v.begin(); typename T::value_type; } &&
+                       !requires { T::RowsAtCompileTime; }) {
+    in.array = true;
+    for (const auto& item : v) flatten(item, in);
+    if constexpr (requires { T::value_type::RowsAtCompileTime; })
+      in.width = static_cast<int>(T::value_type::RowsAtCompileTime);
+  } else {
+    in.width = static_cast<int>(T::RowsAtCompileTime);
+    for (int k = 0; k < in.width; ++k) in.values.push_back(static_cast<float>(v[k]));
+  }
+}
+
+template <class T>
+constexpr bool integer_valued() {
+  if constexpr (std::is_integral_v<T>) return true;
+  else if constexpr (requires { typename T::Scalar; }) return std::is_integral_v<typename T::Scalar>;
+  else if constexpr (requires { typename T::value_type; }) return integer_valued<typename T::value_type>();
+  else return false;
+}
+
 template <class T>
 class OglVariable final : public ShaderElement {
  public:
   OglVariable() { value.add_alias("values"); }  // SOFA accepts both names
   Field<T> value{this, "value", zero_value<T>(), "uniform value", "Shader"};
+  ShaderInput input() const override {
+    ShaderInput in;
+    in.kind = integer_valued<T>() ? ShaderInput::Kind::int_uniform : ShaderInput::Kind::float_uniform;
+    flatten(value.get(), in);
+    return in;
+  }
 };
 
 // Values stored flat whose count must be a multiple of `width` (Mat4x4f lists,
@@ -56,6 +88,15 @@ class OglMatrix4VectorVariable final : public FlatShaderValue<16> {
     flat.add_alias("values");
   }
   Field<bool> transpose{this, "transpose", false, "transpose the matrices when sent to the shader", "Shader"};
+  ShaderInput input() const override {
+    ShaderInput in;
+    in.kind = ShaderInput::Kind::matrix_uniform;
+    in.width = 16;
+    in.array = true;
+    in.transpose = transpose.get();
+    for (double d : flat.get()) in.values.push_back(static_cast<float>(d));
+    return in;
+  }
 };
 
 template <class T>
@@ -64,6 +105,13 @@ class OglAttribute final : public ShaderElement {
   Field<T> value{this, "value", T{}, "one value per vertex", "Shader"};
   Field<bool> handle_dynamic_topology{this, "handleDynamicTopology", true,
                                       "resize the values when the topology changes", "Shader"};
+  ShaderInput input() const override {
+    ShaderInput in;
+    in.kind = ShaderInput::Kind::attribute;
+    flatten(value.get(), in);
+    in.array = false;
+    return in;
+  }
 };
 
 // Vec4i per vertex: four integers per vertex, given flat.
@@ -72,6 +120,13 @@ class OglInt4Attribute final : public FlatShaderValue<4> {
   OglInt4Attribute() : FlatShaderValue<4>("four integers per vertex") {}
   Field<bool> handle_dynamic_topology{this, "handleDynamicTopology", true,
                                       "resize the values when the topology changes", "Shader"};
+  ShaderInput input() const override {
+    ShaderInput in;
+    in.kind = ShaderInput::Kind::attribute;
+    in.width = 4;
+    for (double d : flat.get()) in.values.push_back(static_cast<float>(d));
+    return in;
+  }
   void parse(AttributeMap& attrs, Diagnostics& diag) override {
     FlatShaderValue<4>::parse(attrs, diag);
     for (double d : flat.value())
@@ -87,7 +142,7 @@ void add(Registry& r, const char* name, const char* what) {
   ComponentInfo info;
   info.name = name;
   info.category = "Visual";
-  info.description = std::string(what) + " (viewer only; Sinew's renderer uses its own shading)";
+  info.description = std::string(what) + " (viewer only)";
   info.create = creator<C>();
   r.add(std::move(info));
 }

@@ -1,0 +1,17 @@
+// Small OpenGL helpers shared by the renderer's files (defined in gl_renderer.cpp). The GL
+// context must be current.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+namespace sinew::render {
+
+// A linked program of the two GLSL sources; 0 with *error (the compiler's or linker's log).
+unsigned link_program(const char* vertex, const char* fragment, std::string* error);
+
+// Uploads `bytes` into `buffer` bound to `target`, growing its storage only when it is too
+// small (`capacity`: the storage's bytes).
+void upload_buffer(unsigned target, unsigned buffer, const void* data, std::size_t bytes, std::size_t& capacity);
+
+}  // namespace sinew::render

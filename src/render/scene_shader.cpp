@@ -1,0 +1,288 @@
+#include "render/scene_shader.h"
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <Eigen/LU>
+
+#include "render/gl_program.h"
+#include "render/image_file.h"
+#include "render/legacy_glsl.h"
+
+namespace sinew::render {
+
+namespace {
+
+bool read_text(const std::string& path, std::string& out) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  out = ss.str();
+  return true;
+}
+
+int location(unsigned program, const std::string& name) { return glGetUniformLocation(program, name.c_str()); }
+
+void set4(unsigned p, const std::string& name, const float* v) {
+  if (const int loc = location(p, name); loc >= 0) glUniform4fv(loc, 1, v);
+}
+
+// The fixed-function lights as OpenGL holds them, in eye space.
+struct GlLight {
+  float ambient[4] = {0, 0, 0, 1}, diffuse[4] = {0, 0, 0, 1}, specular[4] = {0, 0, 0, 1};
+  float position[4] = {0, 0, 1, 0}, spot[3] = {0, 0, -1};
+  float exponent = 0, cutoff = 180, constant = 1, linear = 0, quadratic = 0;
+};
+
+}  // namespace
+
+SceneShaders::~SceneShaders() {
+  for (const Program& p : programs_)
+    if (p.id) glDeleteProgram(p.id);
+  for (const auto& t : textures_)
+    if (t.second) glDeleteTextures(1, &t.second);
+}
+
+unsigned SceneShaders::program_for(const SceneShader& s) {
+  std::string key = s.vertex_file + '\n' + s.fragment_file;
+  for (const auto& [name, value] : s.defines) key += '\n' + name + '=' + value;
+  for (const Program& p : programs_)
+    if (p.key == key) return p.id;
+  Program& p = programs_.emplace_back();
+  p.key = key;
+  const std::string who = s.source ? s.source->describe() : std::string("OglShader");
+  std::string vs, fs;
+  if (!read_text(s.vertex_file, vs) || !read_text(s.fragment_file, fs)) {
+    std::fprintf(stderr, "sinew: %s: cannot read %s: its models are drawn with Sinew's shading\n", who.c_str(),
+                 read_text(s.vertex_file, vs) ? s.fragment_file.c_str() : s.vertex_file.c_str());
+    return 0;
+  }
+  const std::string v = translate_glsl(vs, GlslStage::vertex, s.defines);
+  const std::string f = translate_glsl(fs, GlslStage::fragment, s.defines);
+  std::string err;
+  p.id = link_program(v.c_str(), f.c_str(), &err);
+  if (!p.id)
+    std::fprintf(stderr, "sinew: %s (%s, %s) does not run here: %s; its models are drawn with Sinew's shading\n",
+                 who.c_str(), s.vertex_file.c_str(), s.fragment_file.c_str(), err.c_str());
+  return p.id;
+}
+
+unsigned SceneShaders::texture_for(const ShaderInput& t) {
+  std::string key = t.text;
+  if (key.empty()) {  // procedural: its size and texels
+    key = "procedural " + std::to_string(t.texture_width) + "x" + std::to_string(t.texture_height);
+    for (float v : t.values) key += ' ' + std::to_string(static_cast<int>(v));
+  }
+  key += t.repeat ? " repeat" : " clamp";
+  key += t.linear ? " linear" : " nearest";
+  for (const auto& [k, id] : textures_)
+    if (k == key) return id;
+  unsigned id = 0;
+  glGenTextures(1, &id);
+  glBindTexture(GL_TEXTURE_2D, id);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  bool ok = false;
+  if (!t.text.empty()) {
+    std::string err;
+    if (auto img = read_image(t.text, &err)) {
+      // OpenGL's first row is the bottom one: the picture's last row goes first.
+      const std::size_t row = static_cast<std::size_t>(img->width) * 4;
+      std::vector<std::uint8_t> flipped(img->rgba.size());
+      for (int y = 0; y < img->height; ++y)
+        std::memcpy(&flipped[y * row], &img->rgba[(img->height - 1 - y) * row], row);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img->width, img->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
+      ok = true;
+    } else {
+      std::fprintf(stderr, "sinew: shader texture not bound: %s\n", err.c_str());
+    }
+  } else if (t.texture_width > 0 && t.texture_height > 0 &&
+             t.values.size() == static_cast<std::size_t>(t.texture_width) * t.texture_height) {
+    // One channel, read as luminance (r = g = b, a = 1), as SOFA's procedural images.
+    std::vector<std::uint8_t> texels(t.values.size());
+    for (std::size_t i = 0; i < texels.size(); ++i)
+      texels[i] = static_cast<std::uint8_t>(std::clamp(t.values[i], 0.f, 255.f));
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, t.texture_width, t.texture_height, 0, GL_RED, GL_UNSIGNED_BYTE,
+                 texels.data());
+    const GLint swizzle[4] = {GL_RED, GL_RED, GL_RED, GL_ONE};
+    glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+    ok = true;
+  } else {
+    std::fprintf(stderr, "sinew: procedural shader texture not bound: %d x %d texels expected, %zu given\n",
+                 t.texture_width, t.texture_height, t.values.size());
+  }
+  if (ok) {
+    if (t.linear) glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, t.linear ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, t.linear ? GL_LINEAR : GL_NEAREST);
+    const GLint wrap = t.repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+  } else {
+    glDeleteTextures(1, &id);
+    id = 0;
+  }
+  textures_.emplace_back(key, id);
+  return id;
+}
+
+bool SceneShaders::bind(const SceneShader& s, const Batch& b, const View& view, const Lighting& lighting,
+                        std::vector<unsigned>& buffers, std::vector<std::size_t>& capacity) {
+  const unsigned p = program_for(s);
+  if (!p) return false;
+  glUseProgram(p);
+
+  // Matrices: the modelview is the camera's (visual models are in world coordinates).
+  const Eigen::Matrix4f& mv = view.view;
+  const Eigen::Matrix4f& pr = view.projection;
+  const Eigen::Matrix4f mvp = pr * mv;
+  const Eigen::Matrix4f mv_inv = mv.inverse();
+  const Eigen::Matrix3f normal = mv.topLeftCorner<3, 3>().inverse().transpose();
+  auto mat4 = [&](const char* name, const Eigen::Matrix4f& m) {
+    if (const int loc = location(p, name); loc >= 0) glUniformMatrix4fv(loc, 1, GL_FALSE, m.data());
+  };
+  mat4("sinew_ModelViewMatrix", mv);
+  mat4("sinew_ProjectionMatrix", pr);
+  mat4("sinew_ModelViewProjectionMatrix", mvp);
+  mat4("sinew_ModelViewMatrixInverse", mv_inv);
+  mat4("sinew_ModelViewMatrixTranspose", mv.transpose());
+  mat4("sinew_ModelViewMatrixInverseTranspose", mv_inv.transpose());
+  mat4("sinew_ProjectionMatrixInverse", pr.inverse());
+  if (const int loc = location(p, "sinew_NormalMatrix"); loc >= 0) glUniformMatrix3fv(loc, 1, GL_FALSE, normal.data());
+  if (const int loc = location(p, "sinew_TextureMatrix[0]"); loc >= 0) {
+    Eigen::Matrix4f id[4];
+    for (auto& m : id) m.setIdentity();
+    glUniformMatrix4fv(loc, 4, GL_FALSE, id[0].data());
+  }
+
+  // Lights, in eye space as OpenGL stores them.
+  GlLight lights[kGlslMaxLights];
+  float model_ambient[4] = {0, 0, 0, 1};
+  int n = 0;
+  if (lighting.from_scene) {
+    const Eigen::Matrix4d v = mv.cast<double>();
+    n = static_cast<int>(std::min<std::size_t>(lighting.lights.size(), kGlslMaxLights));
+    for (int i = 0; i < n; ++i) {
+      const LightSource& src = lighting.lights[static_cast<std::size_t>(i)];
+      GlLight& l = lights[i];
+      const Eigen::Vector4d pos = v * Eigen::Vector4d(src.position[0], src.position[1], src.position[2], src.position[3]);
+      const Eigen::Vector3d dir =
+          v.topLeftCorner<3, 3>() * Eigen::Vector3d(src.spot_direction[0], src.spot_direction[1], src.spot_direction[2]);
+      for (int k = 0; k < 4; ++k) l.position[k] = static_cast<float>(pos[k]);
+      for (int k = 0; k < 3; ++k) l.diffuse[k] = l.specular[k] = src.color[k], l.spot[k] = static_cast<float>(dir[k]);
+      l.cutoff = src.cutoff, l.exponent = src.exponent, l.linear = src.linear_attenuation;
+    }
+    for (int k = 0; k < 4; ++k) model_ambient[k] = lighting.ambient[k];
+  } else {
+    n = 1;
+    GlLight& l = lights[0];
+    const float ambient[4] = {0.5f, 0.5f, 0.5f, 1}, diffuse[4] = {0.9f, 0.9f, 0.9f, 1}, position[4] = {-0.7f, 0.3f, 0, 1};
+    std::memcpy(l.ambient, ambient, sizeof ambient);
+    std::memcpy(l.diffuse, diffuse, sizeof diffuse);
+    for (float& c : l.specular) c = 1;
+    std::memcpy(l.position, position, sizeof position);
+    model_ambient[3] = 0;
+  }
+  const Shading& m = b.shading;
+  for (int i = 0; i < n; ++i) {
+    const GlLight& l = lights[i];
+    const std::string at = "sinew_LightSource[" + std::to_string(i) + "].";
+    set4(p, at + "ambient", l.ambient);
+    set4(p, at + "diffuse", l.diffuse);
+    set4(p, at + "specular", l.specular);
+    set4(p, at + "position", l.position);
+    // OpenGL's half vector: between the light's direction and the eye's (0, 0, 1).
+    Eigen::Vector3f half = Eigen::Vector3f(l.position[0], l.position[1], l.position[2]);
+    if (half.norm() > 0) half.normalize();
+    half += Eigen::Vector3f(0, 0, 1);
+    if (half.norm() > 0) half.normalize();
+    const float h[4] = {half[0], half[1], half[2], 1};
+    set4(p, at + "halfVector", h);
+    if (const int loc = location(p, at + "spotDirection"); loc >= 0) glUniform3fv(loc, 1, l.spot);
+    const float cos_cutoff = l.cutoff >= 180 ? -1.f : std::cos(l.cutoff * static_cast<float>(M_PI) / 180.f);
+    const std::pair<const char*, float> scalars[] = {{"spotExponent", l.exponent}, {"spotCutoff", l.cutoff},
+                                                      {"spotCosCutoff", cos_cutoff}, {"constantAttenuation", l.constant},
+                                                      {"linearAttenuation", l.linear}, {"quadraticAttenuation", l.quadratic}};
+    for (const auto& [name, value] : scalars)
+      if (const int loc = location(p, at + name); loc >= 0) glUniform1f(loc, value);
+    float prod[3][4];
+    for (int k = 0; k < 4; ++k) {
+      prod[0][k] = l.ambient[k] * m.ambient[k];
+      prod[1][k] = l.diffuse[k] * m.diffuse[k];
+      prod[2][k] = l.specular[k] * m.specular[k];
+    }
+    const std::string pp = "sinew_FrontLightProduct[" + std::to_string(i) + "].";
+    set4(p, pp + "ambient", prod[0]);
+    set4(p, pp + "diffuse", prod[1]);
+    set4(p, pp + "specular", prod[2]);
+  }
+  set4(p, "sinew_FrontMaterial.emission", m.emissive.data());
+  set4(p, "sinew_FrontMaterial.ambient", m.ambient.data());
+  set4(p, "sinew_FrontMaterial.diffuse", m.diffuse.data());
+  set4(p, "sinew_FrontMaterial.specular", m.specular.data());
+  if (const int loc = location(p, "sinew_FrontMaterial.shininess"); loc >= 0) glUniform1f(loc, m.shininess);
+  set4(p, "sinew_LightModel.ambient", model_ambient);
+  float scene_color[4];
+  for (int k = 0; k < 3; ++k) scene_color[k] = m.emissive[k] + m.ambient[k] * model_ambient[k];
+  scene_color[3] = m.diffuse[3];  // OpenGL: the alpha of the material's diffuse colour
+  set4(p, "sinew_FrontLightModelProduct.sceneColor", scene_color);
+
+  // The scene's uniforms: a name that is not in the program is skipped, as by OpenGL.
+  for (const SceneShader::Input& u : s.uniforms) {
+    const ShaderInput& in = u.value;
+    const int loc = location(p, in.array ? u.name + "[0]" : u.name);
+    if (loc < 0 || in.values.empty() || in.width < 1) continue;
+    const GLsizei count = static_cast<GLsizei>(in.values.size() / static_cast<std::size_t>(in.width));
+    if (count == 0) continue;
+    if (in.kind == ShaderInput::Kind::matrix_uniform) {
+      // Given row by row, and passed to OpenGL (which reads column by column) with `transpose`
+      // as its flag, as SOFA's setMatrix4: without it the shader sees each matrix transposed.
+      glUniformMatrix4fv(loc, count, in.transpose ? GL_TRUE : GL_FALSE, in.values.data());
+    } else if (in.kind == ShaderInput::Kind::int_uniform) {
+      std::vector<int> iv(in.values.begin(), in.values.end());
+      static void (*const kSet[])(GLint, GLsizei, const GLint*) = {glUniform1iv, glUniform2iv, glUniform3iv, glUniform4iv};
+      if (in.width <= 4) kSet[in.width - 1](loc, count, iv.data());
+    } else {
+      static void (*const kSet[])(GLint, GLsizei, const GLfloat*) = {glUniform1fv, glUniform2fv, glUniform3fv,
+                                                                      glUniform4fv};
+      if (in.width <= 4) kSet[in.width - 1](loc, count, in.values.data());
+    }
+  }
+  for (const SceneShader::Input& t : s.textures) {
+    const int loc = location(p, t.name);
+    if (loc < 0 || t.value.unit >= static_cast<unsigned>(kUnits)) continue;
+    const unsigned id = texture_for(t.value);
+    if (!id) continue;
+    glActiveTexture(GL_TEXTURE0 + kFirstUnit + t.value.unit);
+    glBindTexture(GL_TEXTURE_2D, id);
+    glUniform1i(loc, kFirstUnit + static_cast<int>(t.value.unit));
+  }
+  glActiveTexture(GL_TEXTURE0);
+
+  // Per-vertex attributes, into the batch's vertex array (bound by the caller).
+  if (buffers.size() < b.attributes.size()) {
+    const std::size_t old = buffers.size();
+    buffers.resize(b.attributes.size());
+    capacity.resize(b.attributes.size(), 0);
+    glGenBuffers(static_cast<GLsizei>(buffers.size() - old), buffers.data() + old);
+  }
+  for (std::size_t k = 0; k < b.attributes.size(); ++k) {
+    const Batch::Attribute& a = b.attributes[k];
+    const int loc = glGetAttribLocation(p, a.name.c_str());
+    if (loc < 0 || a.width < 1 || a.width > 4) continue;
+    upload_buffer(GL_ARRAY_BUFFER, buffers[k], a.values.data(), a.values.size() * sizeof(float), capacity[k]);
+    glVertexAttribPointer(static_cast<GLuint>(loc), a.width, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(static_cast<GLuint>(loc));
+  }
+  return true;
+}
+
+}  // namespace sinew::render

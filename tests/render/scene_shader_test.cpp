@@ -1,0 +1,189 @@
+// Scene shaders (OglShader): SOFA's GLSL 1.x translated to 3.30 (render/legacy_glsl.h), and
+// run for the models under the shader with the fixed-function state, the uniforms, textures
+// and attributes of the scene (render/scene_shader.h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "render/gl_program.h"
+#include "render/legacy_glsl.h"
+#include "render/offscreen.h"
+#include "gl_skip.h"
+#include "test_paths.h"
+#include "test_scene.h"
+
+namespace sinew {
+namespace {
+
+using render::GlslStage;
+using render::translate_glsl;
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(TranslateGlsl, RenamesTheFixedFunctionNamesPerStage) {
+  const std::string vs = translate_glsl(
+      "#version 120\nattribute vec4 w;\nvarying vec3 n;\nvoid main() { n = gl_NormalMatrix * gl_Normal;\n"
+      "  gl_FrontColor = gl_Color; gl_Position = ftransform(); }\n",
+      GlslStage::vertex, {});
+  EXPECT_EQ(vs.rfind("#version 330 core\n", 0), 0u);
+  EXPECT_FALSE(has(vs, "#version 120"));
+  EXPECT_TRUE(has(vs, "in vec4 w;"));
+  EXPECT_TRUE(has(vs, "out vec3 n;"));
+  EXPECT_TRUE(has(vs, "n = sinew_NormalMatrix * sinew_Normal;"));
+  EXPECT_TRUE(has(vs, "sinew_FrontColor = sinew_Color; gl_Position = sinew_ftransform();"));
+  const std::string fs = translate_glsl(
+      "varying vec3 n;\nuniform sampler2D t;\nvoid main() { gl_FragColor = gl_Color * texture2D(t, vec2(1e-3)); }\n",
+      GlslStage::fragment, {});
+  EXPECT_TRUE(has(fs, "in vec3 n;"));
+  EXPECT_TRUE(has(fs, "sinew_FragColor = sinew_FrontColor * texture(t, vec2(1e-3));"));
+}
+
+TEST(TranslateGlsl, LeavesLongerNamesAloneAndPutsDefinesAndExtensionsFirst) {
+  const std::string out = translate_glsl(
+      "uniform float my_gl_Vertex;\nfloat gl_VertexCount2;\n#extension GL_EXT_gpu_shader4 : enable\nvoid main() {}\n",
+      GlslStage::vertex, {{"PHONG", ""}, {"LEVEL", "3"}});
+  EXPECT_TRUE(has(out, "uniform float my_gl_Vertex;"));
+  EXPECT_TRUE(has(out, "float gl_VertexCount2;"));
+  const std::size_t ext = out.find("#extension GL_EXT_gpu_shader4 : enable");
+  const std::size_t phong = out.find("#define PHONG\n"), level = out.find("#define LEVEL 3\n");
+  ASSERT_NE(ext, std::string::npos);
+  ASSERT_NE(phong, std::string::npos);
+  ASSERT_NE(level, std::string::npos);
+  EXPECT_LT(ext, phong);  // extensions before anything else but #version
+  EXPECT_LT(phong, out.find("uniform sinew_LightSourceParameters"));
+  EXPECT_EQ(out.find("#extension", ext + 1), std::string::npos);  // moved, not copied
+}
+
+std::string temp_file(const std::string& name, const std::string& text) {
+  const auto path = std::filesystem::temp_directory_path() / ("sinew_scene_shader_" + name);
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+class SceneShaderTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string err;
+    render::RenderOptions o;
+    o.width = 200, o.height = 200, o.samples = 0;
+    renderer_ = render::OffscreenRenderer::create(o, &err);
+    if (!renderer_) {
+      ASSERT_TRUE(test::no_gl_context(err)) << "the renderer fails: " << err;
+      GTEST_SKIP() << "no off-screen OpenGL here (" << err << "); install Mesa (scripts/setup)";
+    }
+  }
+  // A 2 × 2 quad facing the camera at distance 3 (±80.5 pixels about the centre), under
+  // `shader` (components written in its node).
+  render::Image draw(const std::string& shader, const std::string& model_extra = "") {
+    auto s = test::load(
+        "<Node name=\"root\"><InteractiveCamera position=\"0 0 3\" lookAt=\"0 0 0\"/><Node name=\"n\">" + shader +
+        "<OglModel name=\"m\" position=\"-1 -1 0  1 -1 0  1 1 0  -1 1 0\" quads=\"0 1 2 3\" "
+        "material=\"Default Diffuse 1 0.5 0.4 0.2 1 Ambient 1 0 0 0 1 Specular 0 0 0 0 1 Emissive 0 0 0 0 1 "
+        "Shininess 0 45\" " + model_extra + "/></Node></Node>");
+    render::Image img;
+    std::string err;
+    EXPECT_TRUE(renderer_->render(*s.root, img, &err)) << err;
+    return img;
+  }
+  std::string shader(const std::string& vertex, const std::string& fragment, const std::string& extra = "") {
+    return "<OglShader fileVertexShaders=\"['" + temp_file("v.vert", vertex) + "']\" fileFragmentShaders=\"['" +
+           temp_file("f.frag", fragment) + "']\" " + extra + "/>";
+  }
+  std::unique_ptr<render::OffscreenRenderer> renderer_;
+};
+
+const char* kPlainVertex = "void main() { gl_Position = ftransform(); }\n";
+
+TEST_F(SceneShaderTest, AUniformOfTheSceneColoursTheModel) {
+  const render::Image img =
+      draw(shader(kPlainVertex, "uniform vec4 tint;\nvoid main() { gl_FragColor = tint; }\n") +
+           "<OglFloat4Variable id=\"tint\" value=\"0 1 0.5 1\"/>");
+  const auto c = img.rgb(100, 100);
+  EXPECT_EQ(c[0], 0);
+  EXPECT_EQ(c[1], 255);
+  EXPECT_NEAR(c[2], 128, 1);
+  EXPECT_EQ(img.rgb(5, 5)[1], 0);  // the background outside the quad
+}
+
+// gl_FrontLightProduct[0].diffuse: the material's diffuse times SOFA's viewer light 0 (0.9).
+TEST_F(SceneShaderTest, TheFixedFunctionLightProductIsTheMaterialTimesSofasViewerLight) {
+  const render::Image img = draw(shader(kPlainVertex, "void main() { gl_FragColor = gl_FrontLightProduct[0].diffuse; }\n"));
+  const auto c = img.rgb(100, 100);
+  EXPECT_NEAR(c[0], 0.9 * 0.5 * 255, 1.0);
+  EXPECT_NEAR(c[1], 0.9 * 0.4 * 255, 1.0);
+  EXPECT_NEAR(c[2], 0.9 * 0.2 * 255, 1.0);
+}
+
+// OglMatrix4VectorVariable, rows given, transpose="1" (SOFA's skinning scenes): the second
+// matrix moves the quad −0.1 along x, 8 pixels (the quad stays inside the picture).
+TEST_F(SceneShaderTest, AMatrixArrayUniformMovesTheModel) {
+  const std::string vs =
+      "uniform mat4 bones[2];\nvoid main() { gl_Position = gl_ModelViewProjectionMatrix * (bones[1] * gl_Vertex); }\n";
+  const render::Image img = draw(shader(vs, "void main() { gl_FragColor = vec4(0.0, 1.0, 0.0, 1.0); }\n") +
+                                 "<OglMatrix4VectorVariable id=\"bones\" transpose=\"1\" value=\"1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1  "
+                                 "1 0 0 -0.1 0 1 0 0 0 0 1 0 0 0 0 1\"/>");
+  double sum = 0;
+  long count = 0;
+  for (int y = 0; y < 200; ++y)
+    for (int x = 0; x < 200; ++x)
+      if (img.rgb(x, y)[1] > 200) sum += x + 0.5, ++count;
+  ASSERT_GT(count, 100);
+  const double f = 100.0 / std::tan(M_PI / 8) / 3;  // pixels per unit at distance 3
+  EXPECT_NEAR(sum / count, 100 - 0.1 * f, 0.5);
+}
+
+// OglFloat3Attribute: one colour per vertex, left vertices red, right ones blue.
+TEST_F(SceneShaderTest, AVertexAttributeReachesTheShaderPerVertex) {
+  const std::string vs = "attribute vec3 col;\nvarying vec3 c;\nvoid main() { c = col; gl_Position = ftransform(); }\n";
+  const std::string fs = "varying vec3 c;\nvoid main() { gl_FragColor = vec4(c, 1.0); }\n";
+  const render::Image img = draw(shader(vs, fs) + "<OglFloat3Attribute id=\"col\" value=\"1 0 0  0 0 1  0 0 1  1 0 0\"/>");
+  const auto left = img.rgb(30, 100), right = img.rgb(170, 100);
+  EXPECT_GT(left[0], 200);
+  EXPECT_LT(left[2], 60);
+  EXPECT_GT(right[2], 200);
+  EXPECT_LT(right[0], 60);
+}
+
+// A shader that does not compile, or a passive one: the model is drawn as without a shader.
+TEST_F(SceneShaderTest, ABrokenOrPassiveShaderLeavesTheModelToSinewsShading) {
+  const render::Image plain = draw("");
+  const render::Image broken = draw(shader(kPlainVertex, "void main() { gl_FragColor = vec4(1.0 }\n"));
+  const render::Image passive =
+      draw(shader(kPlainVertex, "void main() { gl_FragColor = vec4(0.0, 1.0, 0.0, 1.0); }\n", "passive=\"1\""));
+  EXPECT_EQ(broken.rgba, plain.rgba);
+  EXPECT_EQ(passive.rgba, plain.rgba);
+  EXPECT_NE(plain.rgb(100, 100)[0], 0);  // lit by Sinew's shading
+}
+
+// SOFA's own shaders of its example scenes translate, compile and link here.
+TEST_F(SceneShaderTest, SofasExampleShadersCompileAndLink) {
+  const std::filesystem::path dir = std::filesystem::path(SINEW_DATA_DIR) / "share/shaders";
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "SOFA's data are absent: " << dir;
+  struct Pair {
+    const char* vertex;
+    const char* fragment;
+    std::vector<std::pair<std::string, std::string>> defines;
+  };
+  const Pair pairs[] = {{"toonShading.vert", "toonShading.frag", {}},
+                        {"linearBlendSkinning.vert", "linearBlendSkinning.frag", {}},
+                        {"skybox.vert", "skybox.frag", {}},
+                        {"generalRenderingShader.vert", "generalRenderingShader.frag",
+                         {{"PERLIN_NOISE_COLOR", ""}, {"PERLIN_NOISE_BUMP", ""}, {"PHONG", ""}}},
+                        {"phong.vert", "phong.frag", {}}};
+  auto read = [&](const char* name) {
+    std::ifstream in(dir / name);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  for (const Pair& p : pairs) {
+    const std::string vs = translate_glsl(read(p.vertex), GlslStage::vertex, p.defines);
+    const std::string fs = translate_glsl(read(p.fragment), GlslStage::fragment, p.defines);
+    std::string err;
+    const unsigned program = render::link_program(vs.c_str(), fs.c_str(), &err);
+    EXPECT_NE(program, 0u) << p.vertex << ", " << p.fragment << ": " << err;
+  }
+}
+
+}  // namespace
+}  // namespace sinew
