@@ -52,6 +52,45 @@ void push(Batch& b, const Vec3& p) {
   for (int k = 0; k < 3; ++k) b.positions.push_back(static_cast<float>(p[k]));
 }
 
+// A lines batch of `elements` over the points `x`, in `color`, `width` pixels: `emit(b, e, segment)`
+// draws element e with segment(b, i, j). An element naming a point beyond `x` is skipped (a
+// stale selection).
+template <class Elements, class Emit>
+void add_element_lines(DrawList& list, const Component& source, const FlatVec& x, const Elements& elements,
+                       const Rgba& color, float width, Emit&& emit) {
+  const std::size_t n = x.size();
+  auto segment = [&](Batch& b, unsigned i, unsigned j) { push(b, point_of(x, i)), push(b, point_of(x, j)); };
+  Batch& b = fresh_batch(list, &source, Batch::Kind::lines);
+  unlit(b, color, width);
+  for (const auto& e : elements) {
+    bool ok = true;
+    for (unsigned v : e) ok &= v < n;
+    if (ok) emit(b, e, segment);
+  }
+  close_batch(list, b);
+}
+
+// Triangles over the points `x` filled in `color` (their edges with showWireframe).
+void add_filled_triangles(DrawList& list, const Component& source, const FlatVec& x,
+                          const std::vector<Triangle>& triangles, const Rgba& color, float size, bool wireframe) {
+  const std::size_t n = x.size();
+  Batch& b = fresh_batch(list, &source, Batch::Kind::triangles);
+  unlit(b, color, size);
+  b.wireframe = wireframe;  // the polygon mode showWireframe set
+  for (const Triangle& t : triangles)
+    if (t[0] < n && t[1] < n && t[2] < n)
+      for (unsigned v : t) push(b, point_of(x, v));
+  close_batch(list, b);
+}
+
+// SOFA's tetrahedron outline in the ROIs' draws: the cycle 0-1-2-3 and the diagonals 0-2, 1-3.
+constexpr auto kTetraEdges = [](Batch& b, const Tetra& t, auto& segment) {
+  for (unsigned j = 0; j < 4; ++j) segment(b, t[j], t[(j + 1) % 4]);
+  segment(b, t[0], t[2]);
+  segment(b, t[1], t[3]);
+};
+constexpr auto kEdge = [](Batch& b, const Edge& e, auto& segment) { segment(b, e[0], e[1]); };
+
 // BoxROI::getPointsFromOrientedBox: the parallelogram p0 p1 p2 (p3 = p0 + p2 − p1) moved by
 // depth/2 along its normal, and its copy depth below.
 std::array<Vec3, 8> oriented_corners(const VecN<10>& box) {
@@ -119,30 +158,14 @@ void add_sphere_region(DrawList& list, const SphereROI& roi) {
 // drawTriangles) applied to the ROI mesh, and drawBox.
 void add_mesh_region(DrawList& list, const MeshROI& roi, float size, bool wireframe) {
   const FlatVec& x = roi.roi_position.get();
-  const std::size_t n = x.size();
-  auto point = [&](std::size_t i) { return point_of(x, i); };
   if (roi.draw_points.get()) {
     Batch& b = fresh_batch(list, &roi, Batch::Kind::points);
     unlit(b, Rgba{0.4f, 0.4f, 1.f, 1.f}, size);
-    for (std::size_t i = 0; i < n; ++i) push(b, point(i));
+    for (std::size_t i = 0; i < x.size(); ++i) push(b, point_of(x, i));
     close_batch(list, b);
   }
-  if (roi.draw_edges.get()) {
-    Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
-    unlit(b, kSelected, size);
-    for (const Edge& e : roi.roi_edges.get())
-      if (e[0] < n && e[1] < n) push(b, point(e[0])), push(b, point(e[1]));
-    close_batch(list, b);
-  }
-  if (roi.draw_triangles.get()) {
-    Batch& b = fresh_batch(list, &roi, Batch::Kind::triangles);
-    unlit(b, kSelected, size);
-    b.wireframe = wireframe;
-    for (const Triangle& t : roi.roi_triangles.get())
-      if (t[0] < n && t[1] < n && t[2] < n)
-        for (unsigned v : t) push(b, point(v));
-    close_batch(list, b);
-  }
+  if (roi.draw_edges.get()) add_element_lines(list, roi, x, roi.roi_edges.get(), kSelected, size, kEdge);
+  if (roi.draw_triangles.get()) add_filled_triangles(list, roi, x, roi.roi_triangles.get(), kSelected, size, wireframe);
   if (roi.draw_box.get()) {
     const VecN<6>& box = roi.box.get();
     Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
@@ -177,7 +200,6 @@ void add_plane_roi(DrawList& list, const PlaneROI& roi, bool wireframe) {
     close_batch(list, b);
   }
   const FlatVec& x = roi.position.get();
-  const std::size_t n = x.size();
   if (roi.draw_points.get()) {
     Batch& b = fresh_batch(list, &roi, Batch::Kind::points);
     unlit(b, kRegion, 5.f);
@@ -185,34 +207,11 @@ void add_plane_roi(DrawList& list, const PlaneROI& roi, bool wireframe) {
     for (std::size_t i = 0; i < in.size(); ++i) push(b, point_of(in, i));
     close_batch(list, b);
   }
-  auto segment = [&](Batch& b, unsigned i, unsigned j) {
-    if (i < n && j < n) push(b, point_of(x, i)), push(b, point_of(x, j));
-  };
-  if (roi.draw_edges.get()) {
-    Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
-    unlit(b, kRegion, size);
-    for (const Edge& e : roi.edges_in_roi.get()) segment(b, e[0], e[1]);
-    close_batch(list, b);
-  }
-  if (roi.draw_triangles.get()) {
-    Batch& b = fresh_batch(list, &roi, Batch::Kind::triangles);
-    unlit(b, kRegion, size);
-    b.wireframe = wireframe;  // the polygon mode showWireframe set
-    for (const Triangle& t : roi.triangles_in_roi.get())
-      if (t[0] < n && t[1] < n && t[2] < n)
-        for (unsigned v : t) push(b, point_of(x, v));
-    close_batch(list, b);
-  }
-  if (roi.draw_tetrahedra.get()) {
-    Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
-    unlit(b, kRegion, size);
-    for (const Tetra& t : roi.tetrahedra_in_roi.get()) {
-      for (unsigned j = 0; j < 4; ++j) segment(b, t[j], t[(j + 1) % 4]);
-      segment(b, t[0], t[2]);
-      segment(b, t[1], t[3]);
-    }
-    close_batch(list, b);
-  }
+  if (roi.draw_edges.get()) add_element_lines(list, roi, x, roi.edges_in_roi.get(), kRegion, size, kEdge);
+  if (roi.draw_triangles.get())
+    add_filled_triangles(list, roi, x, roi.triangles_in_roi.get(), kRegion, size, wireframe);
+  if (roi.draw_tetrahedra.get())
+    add_element_lines(list, roi, x, roi.tetrahedra_in_roi.get(), kRegion, size, kTetraEdges);
 }
 
 // ProximityROI::draw.
@@ -264,52 +263,25 @@ void add_roi(DrawList& list, const BaseROI& roi, bool wireframe) {
   }
 
   const FlatVec& x = roi.position.get();
-  const std::size_t n = x.size();
-  auto point = [&](const FlatVec& v, std::size_t i) { return point_of(v, i); };
-  // Elements naming a point beyond the positions are skipped (a stale selection).
-  auto lines = [&](const auto& elements, auto&& emit) {
-    Batch& b = fresh_batch(list, &roi, Batch::Kind::lines);
-    unlit(b, kSelected, size);
-    for (const auto& e : elements) {
-      bool ok = true;
-      for (unsigned v : e) ok &= v < n;
-      if (ok) emit(b, e);
-    }
-    close_batch(list, b);
-  };
-  auto segment = [&](Batch& b, unsigned i, unsigned j) { push(b, point(x, i)), push(b, point(x, j)); };
-
   if (roi.draw_points.get()) {
     Batch& b = fresh_batch(list, &roi, Batch::Kind::points);
     unlit(b, kSelected, size);
     const FlatVec& in = roi.points_in_roi.get();
     if (in.width == x.width)
-      for (std::size_t i = 0; i < in.size(); ++i) push(b, point(in, i));
+      for (std::size_t i = 0; i < in.size(); ++i) push(b, point_of(in, i));
     close_batch(list, b);
   }
-  if (roi.draw_edges.get())
-    lines(roi.edges_in_roi.get(), [&](Batch& b, const Edge& e) { segment(b, e[0], e[1]); });
-  if (roi.draw_triangles.get()) {
-    Batch& b = fresh_batch(list, &roi, Batch::Kind::triangles);
-    unlit(b, kSelected, size);
-    b.wireframe = wireframe;  // the polygon mode showWireframe set
-    for (const Triangle& t : roi.triangles_in_roi.get())
-      if (t[0] < n && t[1] < n && t[2] < n)
-        for (unsigned v : t) push(b, point(x, v));
-    close_batch(list, b);
-  }
+  if (roi.draw_edges.get()) add_element_lines(list, roi, x, roi.edges_in_roi.get(), kSelected, size, kEdge);
+  if (roi.draw_triangles.get())
+    add_filled_triangles(list, roi, x, roi.triangles_in_roi.get(), kSelected, size, wireframe);
   if (roi.draw_quads.get())
-    lines(roi.quads_in_roi.get(), [&](Batch& b, const Quad& q) {
+    add_element_lines(list, roi, x, roi.quads_in_roi.get(), kSelected, size, [](Batch& b, const Quad& q, auto& segment) {
       for (unsigned j = 0; j < 4; ++j) segment(b, q[j], q[(j + 1) % 4]);
     });
   if (roi.draw_tetrahedra.get())
-    lines(roi.tetrahedra_in_roi.get(), [&](Batch& b, const Tetra& t) {
-      for (unsigned j = 0; j < 4; ++j) segment(b, t[j], t[(j + 1) % 4]);
-      segment(b, t[0], t[2]);
-      segment(b, t[1], t[3]);
-    });
+    add_element_lines(list, roi, x, roi.tetrahedra_in_roi.get(), kSelected, size, kTetraEdges);
   if (roi.draw_hexahedra.get())
-    lines(roi.hexahedra_in_roi.get(), [&](Batch& b, const Hexa& h) {
+    add_element_lines(list, roi, x, roi.hexahedra_in_roi.get(), kSelected, size, [](Batch& b, const Hexa& h, auto& segment) {
       // SOFA's loop joins each corner j to corner (j + 1) % 4 (not within its own face for
       // the top four), then adds four diagonals.
       for (unsigned j = 0; j < 8; ++j) segment(b, h[j], h[(j + 1) % 4]);

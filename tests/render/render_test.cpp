@@ -248,6 +248,19 @@ TEST_F(RenderTest, BoxRoiDrawsItsBoxAndSelectedPoints) {
   EXPECT_EQ(count_if(none, cyan) + count_if(none, salmon), 0);
 }
 
+// Pixels of a lit cyan wireframe (not a salmon point) inside and outside the disc of `radius_px`
+// (plus 1.5) about the picture's centre.
+std::pair<long, long> bluish_in_disc(const Image& img, double radius_px) {
+  long inside = 0, outside = 0;
+  for (int y = 0; y < 200; ++y)
+    for (int x = 0; x < 200; ++x) {
+      const auto c = img.rgb(x, y);
+      if (!(c[2] > 40 && c[2] >= c[0] + 20)) continue;
+      (std::hypot(x + 0.5 - 100, y + 0.5 - 100) <= radius_px + 1.5 ? inside : outside)++;
+    }
+  return {inside, outside};
+}
+
 // SphereROI's drawSphere: its sphere in wireframe cyan (lit), inside the disc it covers.
 TEST_F(RenderTest, SphereRoiDrawsItsSphereInWireframe) {
   auto s = test::load(
@@ -256,14 +269,8 @@ TEST_F(RenderTest, SphereRoiDrawsItsSphereInWireframe) {
       "<MechanicalObject name=\"dofs\" position=\"0 0 0  1.5 0 0\"/>"
       "<SphereROI centers=\"0 0 0\" radii=\"0.5\" drawSphere=\"1\"/></Node>");
   const Image img = render(*s.root);
-  auto bluish = [](auto c) { return c[2] > 40 && c[2] >= c[0] + 20; };  // lit cyan, not the salmon point
   const double f = 100.0 / std::tan(M_PI / 8), radius_px = 0.5 * f / std::sqrt(25 - 0.25);
-  long inside = 0, outside = 0;
-  for (int y = 0; y < 200; ++y)
-    for (int x = 0; x < 200; ++x) {
-      if (!bluish(img.rgb(x, y))) continue;
-      (std::hypot(x + 0.5 - 100, y + 0.5 - 100) <= radius_px + 1.5 ? inside : outside)++;
-    }
+  const auto [inside, outside] = bluish_in_disc(img, radius_px);
   RecordProperty("inside", static_cast<int>(inside));
   EXPECT_GT(inside, 100);   // the wire mesh's lines
   EXPECT_EQ(outside, 0);    // nothing beyond the disc
@@ -306,14 +313,8 @@ TEST_F(RenderTest, ProximityRoiDrawsHalfRadiusSpheresAndItsPoints) {
       "<MechanicalObject name=\"dofs\" position=\"0 0 0  1.5 0 0\"/>"
       "<ProximityROI centers=\"0 0 0\" radii=\"1\" N=\"5\" position=\"@dofs.position\" drawSphere=\"1\"/></Node>");
   const Image img = render(*s.root);
-  auto bluish = [](auto c) { return c[2] > 40 && c[2] >= c[0] + 20; };
   const double f = 100.0 / std::tan(M_PI / 8), radius_px = 0.5 * f / std::sqrt(25 - 0.25);
-  long inside = 0, outside = 0;
-  for (int y = 0; y < 200; ++y)
-    for (int x = 0; x < 200; ++x) {
-      if (!bluish(img.rgb(x, y))) continue;
-      (std::hypot(x + 0.5 - 100, y + 0.5 - 100) <= radius_px + 1.5 ? inside : outside)++;
-    }
+  const auto [inside, outside] = bluish_in_disc(img, radius_px);
   RecordProperty("inside", static_cast<int>(inside));
   EXPECT_GT(inside, 100);
   EXPECT_EQ(outside, 0);  // the radius is halved: nothing out to the full radius's disc
