@@ -45,6 +45,22 @@ Registry& registry() {
   return *r;
 }
 
+// Sleeps until shortly before `deadline`, then spins to it. A sleeping thread wakes on a timer
+// interrupt, which a virtual machine delivers late by tens of microseconds now and then; the
+// spin absorbs that (it costs the servo's CPU a tenth of each period, the simulation runs on
+// another). With no second CPU the thread only sleeps: spinning would take the simulation's.
+void wait_until(std::chrono::steady_clock::time_point deadline, std::chrono::steady_clock::duration period) {
+  using clock = std::chrono::steady_clock;
+  static const bool spin = std::thread::hardware_concurrency() > 1;
+  if (!spin) {
+    std::this_thread::sleep_until(deadline);
+    return;
+  }
+  std::this_thread::sleep_until(deadline - period / 8);
+  while (clock::now() < deadline) {
+  }
+}
+
 }  // namespace
 
 void ServoThread::run() {
@@ -67,7 +83,7 @@ void ServoThread::run() {
     next += period;
     const auto now = clock::now();
     if (now - next > 20 * period) next = now;
-    std::this_thread::sleep_until(next);
+    wait_until(next, period);
   }
 }
 
