@@ -40,6 +40,14 @@ class Node;
 
 namespace sinew::render {
 
+// An OglFluidModel's Data as its surface's passes use them (render/fluid_surface.h).
+struct FluidLook {
+  float radius = 1.f, thickness = 0.01f;
+  float blur_radius = 10.f, blur_scale = 0.1f, blur_falloff = 1.f;
+  Rgba color{0, 0, 1, 1};
+  unsigned debug = 9;  // debugFBO
+};
+
 struct Batch {
   enum class Kind { triangles, points, lines };
   Kind kind = Kind::triangles;
@@ -72,11 +80,12 @@ struct Batch {
   int blend_equation = 0, source_factor = 2, dest_factor = 3, cull = 0;
   // Points drawn as camera-facing discs of `splat_radius` (world units; 0: plain points of
   // point_size pixels): `soft` discs fade as cos(π/2·r/R)·splat_alpha and are blended "over",
-  // back to front, in the translucent pass (PointSplatModel); otherwise they are lit sphere
-  // impostors (OglFluidModel's sprites).
-  enum class Splat { none, soft, sphere };
+  // back to front, in the translucent pass (PointSplatModel). `fluid`: the particles of an
+  // OglFluidModel, drawn as the screen-space surface `fluid` describes (render/fluid_surface.h).
+  enum class Splat { none, soft, fluid };
   Splat splat = Splat::none;
   float splat_radius = 0.f, splat_alpha = 1.f;
+  FluidLook fluid;
   // ClipPlanes over the model (visual models only), by OpenGL id: a vertex p is kept where
   // clip[k]·(p, 1) >= 0 for every k (gl_ClipDistance[k]); (0, 0, 0, 1) keeps everything.
   static constexpr int kClipPlanes = 8;  // GL_MAX_CLIP_DISTANCES is at least 8

@@ -218,8 +218,7 @@ void add_point_splats(DrawList& list, const PointSplatModel& ps, Node& node) {
   close_batch(list, b);
 }
 
-// OglFluidModel, its first pass only (see its header): each particle a lit sphere impostor of
-// spriteRadius in spriteDiffuseColor.
+// OglFluidModel: its particles and the Data of its screen-space surface (render/fluid_surface.h).
 void add_fluid(DrawList& list, const OglFluidModel& fm) {
   if (fm.state() != ComponentState::valid) return;
   const std::vector<Vec3>& x = fm.position.get();
@@ -227,9 +226,17 @@ void add_fluid(DrawList& list, const OglFluidModel& fm) {
   Batch& b = fresh_batch(list, &fm, Batch::Kind::points);
   for (const Vec3& p : x)
     for (int k = 0; k < 3; ++k) b.positions.push_back(static_cast<float>(p[k]));
-  set_color(b, fm.sprite_diffuse_color.get(), true);
-  b.splat = Batch::Splat::sphere;
+  set_color(b, fm.sprite_diffuse_color.get(), false);
+  b.splat = Batch::Splat::fluid;
   b.splat_radius = static_cast<float>(fm.sprite_radius.get());
+  FluidLook& f = b.fluid;
+  f.radius = b.splat_radius;
+  f.thickness = static_cast<float>(fm.sprite_thickness.get());
+  f.blur_radius = static_cast<float>(fm.sprite_blur_radius.get());
+  f.blur_scale = static_cast<float>(fm.sprite_blur_scale.get());
+  f.blur_falloff = static_cast<float>(fm.sprite_blur_depth_falloff.get());
+  f.color = b.shading.diffuse;
+  f.debug = fm.debug_fbo.get();
   close_batch(list, b);
 }
 

@@ -11,6 +11,7 @@
 
 #include "render/draw_shapes.h"
 #include "render/draw_text.h"
+#include "render/fluid_surface.h"
 #include "render/gl_program.h"
 #include "render/scene_shader.h"
 #include "render/image_file.h"
@@ -71,7 +72,7 @@ uniform float u_color_ambient;
 uniform bool u_lit;
 uniform bool u_textured;
 uniform bool u_translucent;
-uniform int u_splat;  // 0: none, 1: soft disc (PointSplatModel), 2: lit sphere impostor
+uniform int u_splat;  // 0: none, 1: soft disc (PointSplatModel)
 // The scene's lights (LightManager), in eye space; without a LightManager, the headlight.
 const int kMaxLights = 8;
 uniform bool u_scene_lights;
@@ -184,14 +185,8 @@ void main() {
     vec2 q = gl_PointCoord * 2.0 - 1.0;
     float r2 = dot(q, q);
     if (r2 >= 1.0) discard;
-    if (u_splat == 1) {  // SOFA's billboard texture: alpha·cos(π/2·r), the colour as is
-      frag_color = vec4(v_color.rgb, u_splat_alpha * cos(1.5707963 * sqrt(r2)));
-      return;
-    }
-    // A sphere facing the eye (gl_PointCoord's y grows downwards), lit by the headlight.
-    float nz = sqrt(1.0 - r2);
-    vec3 c = u_ambient.rgb + v_color.rgb * nz + u_specular.rgb * pow(nz, u_shininess);
-    frag_color = vec4(min(c, vec3(1.0)), 1.0);
+    // SOFA's billboard texture: alpha·cos(π/2·r), the colour as is.
+    frag_color = vec4(v_color.rgb, u_splat_alpha * cos(1.5707963 * sqrt(r2)));
     return;
   }
   if (u_oit) {
@@ -647,6 +642,7 @@ GlRenderer::~GlRenderer() {
     if (!g.attribute_vbo.empty()) glDeleteBuffers(static_cast<GLsizei>(g.attribute_vbo.size()), g.attribute_vbo.data());
   }
   scene_shaders_.reset();
+  fluids_.clear();
   for (const auto& t : textures_)
     if (t.second) glDeleteTextures(1, &t.second);
   if (program_) glDeleteProgram(program_);
@@ -738,8 +734,11 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glViewport(x, y, width, height);
   // SOFA's two visual passes: opaque models in graph order, then translucent ones.
+  std::size_t fluids = 0;
   for (std::size_t i = 0; i < list.used; ++i)
-    if (!list.batches[i].translucent) {
+    if (list.batches[i].splat == Batch::Splat::fluid) {
+      draw_fluid(list.batches[i], gpu_[i], fluids++, view, x, y, width, height);
+    } else if (!list.batches[i].translucent) {
       begin_model_state(list.batches[i]);
       draw_batch(list.batches[i], gpu_[i]);
       end_model_state(list.batches[i]);
@@ -750,8 +749,19 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   // Without float targets the manager's models are blended in drawing order (one message).
   const bool oit = list.oit.on && oit_buffers();
+  fluids = 0;
   for (std::size_t i = 0; i < list.used; ++i) {
     const Batch& b = list.batches[i];
+    if (b.splat == Batch::Splat::fluid) {  // OglFluidModel::drawTransparent: its surface over the picture
+      FluidSurface& f = *fluids_[fluids++];
+      if (b.fluid.debug > 7) {
+        clip_distances(false);
+        f.composite();
+        glUseProgram(program_);
+        clip_distances(true);
+      }
+      continue;
+    }
     if (!b.translucent || (oit && oit_batch(b))) continue;
     if (b.splat == Batch::Splat::soft) {  // PointSplatModel::drawTransparent: "over", back to front
       glEnable(GL_BLEND);
@@ -783,6 +793,30 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
   if (oit) draw_oit(list, x, y, width, height);  // OrderIndependentTransparencyManager's models
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glUniform1i(u_translucent_, 0);
+}
+
+void GlRenderer::draw_fluid(const Batch& b, GpuBatch& g, std::size_t k, const View& view, int x, int y, int width,
+                            int height) {
+  while (fluids_.size() <= k) fluids_.push_back(std::make_unique<FluidSurface>());
+  glBindVertexArray(g.vao);
+  upload(GL_ARRAY_BUFFER, g.vbo[0], b.positions.data(), b.positions.size() * sizeof(float), g.capacity[0]);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glEnableVertexAttribArray(0);
+  // The passes change the framebuffer, viewport, scissor, clear colour and program.
+  const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+  float clear[4];
+  glGetFloatv(GL_COLOR_CLEAR_VALUE, clear);
+  clip_distances(false);  // the passes' shaders write no gl_ClipDistance
+  FluidSurface& f = *fluids_[k];
+  const bool drawn = f.render(g.vao, static_cast<int>(b.vertex_count()), b.fluid, view, width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glViewport(x, y, width, height);
+  if (scissor) glEnable(GL_SCISSOR_TEST);
+  glClearColor(clear[0], clear[1], clear[2], clear[3]);
+  if (drawn) f.draw_debug(b.fluid.debug);  // OglFluidModel::doDrawVisual's debugFBO 0 to 6
+  glEnable(GL_DEPTH_TEST);
+  glUseProgram(program_);
+  clip_distances(true);
 }
 
 void GlRenderer::begin_model_state(const Batch& b) {

@@ -21,6 +21,7 @@ namespace sinew::render {
 
 struct LightView;
 class SceneShaders;
+class FluidSurface;
 
 class GlRenderer {
  public:
@@ -104,6 +105,11 @@ class GlRenderer {
   unsigned oit_fbo_ = 0, oit_textures_[2] = {0, 0}, oit_depth_rb_ = 0, oit_program_ = 0, oit_vao_ = 0;
   int u_oit_ = -1, u_oit_depth_scale_ = -1;
   bool oit_warned_ = false;
+  // OglFluidModel's surfaces (render/fluid_surface.h), one per fluid batch of a pass in graph
+  // order: batch `b` (the k-th) rendered into its targets, and its debugFBO view drawn, for the
+  // rectangle (x, y, width, height); the translucent pass lays them over the picture.
+  void draw_fluid(const Batch& b, GpuBatch& g, std::size_t k, const View& view, int x, int y, int width, int height);
+  std::vector<std::unique_ptr<FluidSurface>> fluids_;
   // The list's texts over the models (depth-tested ones first), blended, alpha kept.
   void draw_texts(const DrawList& list, const View& view);
   unsigned text_program_ = 0, text_vao_ = 0, text_vbo_ = 0;

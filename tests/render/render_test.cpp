@@ -755,17 +755,47 @@ TEST_F(RenderTest, PointSplatModelBlendsSoftDiscsBackToFront) {
   EXPECT_NEAR(c[1], 128, 3);  // lime's green 1 · 0.5
 }
 
-// OglFluidModel's sprites: each particle a lit sphere impostor of spriteRadius.
-TEST_F(RenderTest, OglFluidModelDrawsSphereSprites) {
-  auto s = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
-                      "<OglFluidModel position=\"0 0 0\" spriteRadius=\"0.5\" spriteDiffuseColor=\"0 0 1 1\"/></Node>");
-  const Image img = render(*s.root);
-  const double r_px = 0.5 * 100.0 / (5 * std::tan(M_PI / 8));
+// OglFluidModel's screen-space surface (render/fluid_surface.h). One particle 5 in front of the
+// camera (45°, 200 px high): SOFA's sprite is spriteRadius · 200 / tan(32.5°) / |(eye, 1)| = 30.8 px
+// across whatever the field of view. Blur radius 0 (one sample: no blur) keeps the thickness
+// exact. Over black, red = thickness · (1 − thickness) for a blue fluid (its white part), away
+// from the centre's highlight; two particles at one place add their thicknesses.
+TEST_F(RenderTest, OglFluidModelDrawsSofasScreenSpaceSurface) {
+  const std::string camera = "<InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>";
+  auto fluid = [&](const std::string& points, const std::string& more = "spriteThickness=\"0.2\"") {
+    return "<Node name=\"f\"><OglFluidModel position=\"" + points + "\" spriteRadius=\"0.5\" spriteBlurRadius=\"0\" " +
+           more + "/></Node>";
+  };
+  auto one = test::load("<Node name=\"root\">" + camera + fluid("0 0 0", "spriteThickness=\"1\"") + "</Node>");
+  const Image img = render(*one.root);
+  const double r_px = 0.5 * 0.5 * 200.0 / std::tan(65.0 * M_PI / 360.0) / std::sqrt(26.0);  // 15.4 px
   const long area = count_if(img, [](auto c) { return !is_background(c); });
   EXPECT_NEAR(area, M_PI * r_px * r_px, 0.1 * M_PI * r_px * r_px);
-  EXPECT_EQ(img.rgb(100, 100), (std::array<int, 3>{0, 0, 255}));
-  // Darker towards the rim (the normal turns away from the headlight).
-  EXPECT_LT(img.rgb(100 + static_cast<int>(0.9 * r_px), 100)[2], 200);
+  EXPECT_EQ(img.rgb(100, 100)[2], 255);  // thick: the fluid's blue, lit head-on
+  EXPECT_TRUE(is_background(img.rgb(100 + static_cast<int>(1.2 * r_px), 100)));
+
+  const int off = 100 + static_cast<int>(0.5 * r_px);
+  auto thin = test::load("<Node name=\"root\">" + camera + fluid("0 0 0") + "</Node>");
+  EXPECT_NEAR(render(*thin.root).rgb(off, 100)[0], 255 * 0.2 * 0.8, 2);
+  auto two = test::load("<Node name=\"root\">" + camera + fluid("0 0 0  0 0 0") + "</Node>");
+  EXPECT_NEAR(render(*two.root).rgb(off, 100)[0], 255 * 0.4 * 0.6, 2);
+
+  // Depth-tested against the scene: an opaque square in front hides it, one behind shows through
+  // (alpha = thickness 0.2: 0.8 of the square plus 0.2 of the fluid's 0.8 white in red and green).
+  const std::string red = "color=\"1 0 0 1\"";
+  auto alone = test::load("<Node name=\"root\">" + camera + square("sq", red, 1.0) + "</Node>");
+  auto front = test::load("<Node name=\"root\">" + camera + fluid("0 0 0") + square("sq", red, 1.0) + "</Node>");
+  EXPECT_EQ(render(*front.root).rgb(off, 100), render(*alone.root).rgb(off, 100));
+  auto under = test::load("<Node name=\"root\">" + camera + square("sq", red, -1.0) + "</Node>");
+  auto back = test::load("<Node name=\"root\">" + camera + fluid("0 0 0") + square("sq", red, -1.0) + "</Node>");
+  const auto square_only = render(*under.root).rgb(off, 100), behind = render(*back.root).rgb(off, 100);
+  for (int c : {0, 1}) EXPECT_NEAR(behind[c], 0.8 * square_only[c] + 255 * 0.2 * 0.8, 3) << c;
+
+  // debugFBO 0: the thickness target over the whole view (cleared to (0, 1, 1) where empty).
+  auto debug = test::load("<Node name=\"root\">" + camera + fluid("0 0 0", "spriteThickness=\"0.2\" debugFBO=\"0\"") + "</Node>");
+  const Image d = render(*debug.root);
+  EXPECT_EQ(d.rgb(5, 5), (std::array<int, 3>{0, 255, 255}));
+  EXPECT_EQ(d.rgb(100, 100), (std::array<int, 3>{51, 255, 255}));
 }
 
 // A LightManager's lights replace the headlight with fixed-function OpenGL lighting: per light

@@ -1,8 +1,7 @@
 // OglFluidModel (SofaSphFluid's screen-space fluid rendering): SOFA splats each particle as a
-// sphere sprite to depth and thickness buffers, blurs them and shades the result as a surface.
-// Sinew draws the first stage only: each particle a lit sphere impostor of spriteRadius in
-// spriteDiffuseColor (src/render); the thickness, blur and surface shading are not done. A
-// visual component, so it lives in src/visual although it comes with the SPH plugin.
+// sphere sprite to depth and thickness buffers, blurs them and shades the result as a surface;
+// src/render/fluid_surface.h draws it so. A visual component, so it lives in src/visual although
+// it comes with the SPH plugin.
 #pragma once
 
 #include <string>
