@@ -18,6 +18,7 @@
 #include "visual/rendering2d/ogl_viewport.h"
 #include "visual/shader/ogl_shader.h"
 #include "visual/shader/order_independent_transparency.h"
+#include "visual/shader/post_process_manager.h"
 #include "visual/visual_style.h"
 
 namespace sinew::render {
@@ -500,6 +501,15 @@ void gather(Node& root, DrawList& out) {
   const auto* oit = root.find_local<OrderIndependentTransparencyManager>();
   out.oit.on = oit && oit->state() == ComponentState::valid;
   out.oit.depth_scale = oit ? static_cast<float>(oit->depth_scale.get()) : 0.01f;
+  const auto* post = root.find_local<PostProcessManager>();
+  out.post = PostProcess{};
+  if (post && post->state() == ComponentState::valid && post->shader() &&
+      post->shader()->state() == ComponentState::valid && post->shader()->turn_on.get()) {
+    out.post.shader = scene_shader_index(out, *post->shader());
+    out.post.on = out.post.shader >= 0;
+    out.post.z_near = static_cast<float>(post->z_near.get());
+    out.post.z_far = static_cast<float>(post->z_far.get());
+  }
   Lighting& l = out.lighting;
   l.lights.clear();
   const LightManager* lm = root.find_down<LightManager>();

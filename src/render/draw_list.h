@@ -161,6 +161,15 @@ struct Oit {
   float depth_scale = 0.01f;  // of the blending weights (1/length)
 };
 
+// PostProcessManager in the root node with an OglShader: the scene is drawn off screen through
+// a 60° perspective of aspect 1 between z_near and z_far, then the picture is covered by a quad
+// drawn by list.shaders[shader] reading that picture's colour and depth (render/gl_renderer.h).
+struct PostProcess {
+  bool on = false;
+  int shader = -1;
+  float z_near = 1.f, z_far = 100.f;
+};
+
 // An OglShader the visual models under it are drawn with (render/scene_shader.h): its GLSL
 // files (the version in use), and the #defines, uniforms and textures of its elements.
 struct SceneShader {
@@ -185,6 +194,7 @@ struct DrawList {
   std::vector<float> overlay_rects;
   Lighting lighting;
   Oit oit;
+  PostProcess post;
   SceneFrame frame;
   std::size_t used = 0;  // batches[0, used) are this frame's
   // Bounding box of what is drawn (valid when has_bounds).

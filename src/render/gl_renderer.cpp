@@ -516,11 +516,115 @@ bool GlRenderer::allocate(int width, int height, std::string* error) {
 void GlRenderer::release_framebuffers() {
   const unsigned rbs[] = {color_rb_, depth_rb_, resolve_rb_, oit_depth_rb_};
   glDeleteRenderbuffers(4, rbs);
-  const unsigned fbos[] = {fbo_, resolve_fbo_, oit_fbo_};
-  glDeleteFramebuffers(3, fbos);
+  const unsigned fbos[] = {fbo_, resolve_fbo_, oit_fbo_, post_fbo_};
+  glDeleteFramebuffers(4, fbos);
   glDeleteTextures(2, oit_textures_);
+  glDeleteTextures(2, post_textures_);
   color_rb_ = depth_rb_ = resolve_rb_ = fbo_ = resolve_fbo_ = 0;
   oit_fbo_ = oit_depth_rb_ = oit_textures_[0] = oit_textures_[1] = 0;
+  post_fbo_ = post_textures_[0] = post_textures_[1] = 0;
+  pass_fbo_ = 0;
+}
+
+bool GlRenderer::post_buffers() {
+  if (post_fbo_) return true;
+  if (post_failed_) return false;
+  glGenFramebuffers(1, &post_fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, post_fbo_);
+  glGenTextures(2, post_textures_);
+  for (int k = 0; k < 2; ++k) {
+    glBindTexture(GL_TEXTURE_2D, post_textures_[k]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    if (k == 0) glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width_, height_, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    else glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, width_, height_, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, post_textures_[0], 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, post_textures_[1], 0);
+  const bool ok = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  if (!ok) {
+    std::fprintf(stderr, "sinew: PostProcessManager's pass not applied: its %dx%d picture is incomplete\n", width_,
+                 height_);
+    post_failed_ = true;
+    const unsigned fbo = post_fbo_;
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(2, post_textures_);
+    post_fbo_ = post_textures_[0] = post_textures_[1] = 0;
+  }
+  return ok;
+}
+
+Eigen::Matrix4f GlRenderer::post_projection(const PostProcess& p) {
+  // gluPerspective(60, 1, zNear, zFar), as PostProcessManager::preDrawScene loads it.
+  const float f = 1.f / std::tan(static_cast<float>(M_PI) / 6.f), n = p.z_near, far = p.z_far;
+  Eigen::Matrix4f m = Eigen::Matrix4f::Zero();
+  m(0, 0) = f;
+  m(1, 1) = f;
+  m(2, 2) = (far + n) / (n - far);
+  m(2, 3) = 2.f * far * n / (n - far);
+  m(3, 2) = -1.f;
+  return m;
+}
+
+void GlRenderer::draw_post(const DrawList& list) {
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glViewport(0, 0, width_, height_);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (!post_vao_) {
+    // The quad of PostProcessManager::drawScene: (±1, ±1, 0) with texture coordinates (0/1, 0/1).
+    const float data[] = {-1, -1, 0, 1, -1, 0, -1, 1, 0, 1, 1, 0, 0, 0, 1, 0, 0, 1, 1, 1};
+    glGenVertexArrays(1, &post_vao_);
+    glGenBuffers(1, &post_vbo_);
+    glBindVertexArray(post_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, post_vbo_);
+    glBufferData(GL_ARRAY_BUFFER, sizeof data, data, GL_STATIC_DRAW);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 0, reinterpret_cast<const void*>(12 * sizeof(float)));
+    glEnableVertexAttribArray(3);
+  }
+  glBindVertexArray(post_vao_);
+  if (!scene_shaders_) scene_shaders_ = std::make_unique<SceneShaders>();
+  // Identity modelview and projection, as drawScene loads them for its quad.
+  std::vector<unsigned> no_buffers;
+  std::vector<std::size_t> no_capacity;
+  const Batch quad;
+  const bool bound = scene_shaders_->bind(list.shaders[static_cast<std::size_t>(list.post.shader)], quad, View{},
+                                          list.lighting, no_buffers, no_capacity);
+  if (!bound) {  // the shader does not run here (said once): the picture as drawn
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, post_fbo_);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  } else {
+    GLint program = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+    const unsigned p = static_cast<unsigned>(program);
+    if (const int loc = glGetUniformLocation(p, "colorTexture"); loc >= 0) glUniform1i(loc, kPostUnit);
+    if (const int loc = glGetUniformLocation(p, "depthTexture"); loc >= 0) glUniform1i(loc, kPostUnit + 1);
+    if (const int loc = glGetUniformLocation(p, "pixelSize"); loc >= 0)
+      glUniform2f(loc, 1.f / static_cast<float>(width_), 1.f / static_cast<float>(height_));
+    for (int k = 0; k < 2; ++k) {
+      glActiveTexture(GL_TEXTURE0 + kPostUnit + k);
+      glBindTexture(GL_TEXTURE_2D, post_textures_[k]);
+    }
+    glDisable(GL_DEPTH_TEST);
+    clip_distances(false);  // SOFA's shaders write no gl_ClipDistance
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    clip_distances(true);
+    glEnable(GL_DEPTH_TEST);
+    for (int k = 0; k < 2; ++k) {
+      glActiveTexture(GL_TEXTURE0 + kPostUnit + k);
+      glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    glUseProgram(program_);
+  }
+  glBindVertexArray(0);
+  pass_fbo_ = fbo_;
 }
 
 bool GlRenderer::oit_buffers() {
@@ -543,7 +647,7 @@ bool GlRenderer::oit_buffers() {
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width_, height_);  // the picture's format: blitted
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, oit_depth_rb_);
   const bool ok = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, pass_fbo_);
   if (!ok) {
     if (!oit_warned_)
       std::fprintf(stderr, "sinew: order-independent transparency unavailable (float render targets): translucent "
@@ -567,7 +671,7 @@ void GlRenderer::draw_oit(const DrawList& list, int x, int y, int width, int hei
   for (std::size_t i = 0; i < list.used && !any; ++i) any = oit_batch(list.batches[i]);
   if (!any) return;
   // The opaque models' depth, so that they hide what is behind them.
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, pass_fbo_);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, oit_fbo_);
   glBlitFramebuffer(x, y, x + width, y + height, x, y, x + width, y + height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, oit_fbo_);
@@ -592,7 +696,7 @@ void GlRenderer::draw_oit(const DrawList& list, int x, int y, int width, int hei
   glUniform1i(u_oit_, 0);
   glDepthMask(GL_TRUE);
   // Composition over the picture (its alpha kept).
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, pass_fbo_);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glDisable(GL_DEPTH_TEST);
@@ -650,6 +754,8 @@ GlRenderer::~GlRenderer() {
   if (shadow_program_) glDeleteProgram(shadow_program_);
   if (oit_program_) glDeleteProgram(oit_program_);
   if (oit_vao_) glDeleteVertexArrays(1, &oit_vao_);
+  if (post_vao_) glDeleteVertexArrays(1, &post_vao_);
+  if (post_vbo_) glDeleteBuffers(1, &post_vbo_);
   for (ShadowMap& m : shadow_maps_) {
     if (m.fbo) glDeleteFramebuffers(1, &m.fbo);
     if (m.texture) glDeleteTextures(1, &m.texture);
@@ -661,7 +767,12 @@ GlRenderer::~GlRenderer() {
 }
 
 void GlRenderer::draw(const DrawList& list, const View& view, const std::array<float, 4>& background) {
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  // PostProcessManager: the scene goes into the pass's picture first (its own projection).
+  const bool post = list.post.on && post_buffers();
+  pass_fbo_ = post ? post_fbo_ : fbo_;
+  View scene_view = view;
+  if (post) scene_view.projection = post_projection(list.post);
+  glBindFramebuffer(GL_FRAMEBUFFER, pass_fbo_);
   glViewport(0, 0, width_, height_);
   glClearColor(background[0], background[1], background[2], background[3]);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -684,7 +795,8 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
   const double aspect = static_cast<double>(width_) / std::max(height_, 1);
   // The lights' shadow maps do not depend on the view: drawn by the first pass only.
   if (swapped) draw_pass(list, viewport_view(*swapped, list.min, list.max, aspect), 0, 0, width_, height_, true);
-  else draw_pass(list, view, 0, 0, width_, height_, true);
+  else draw_pass(list, scene_view, 0, 0, width_, height_, true);
+  if (post) draw_post(list);
   // OglViewports, over the picture (SOFA's postDrawScene), each cleared to the background.
   for (const ExtraViewport& e : list.viewports) {
     const int x = e.x >= 0 ? e.x : width_ + e.x, y = e.y >= 0 ? e.y : height_ + e.y;
@@ -731,7 +843,7 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
   view_ = view.view;
   set_lights(list.lighting, view);
   set_shadows(list, view, shadow_maps);  // may draw the lights' maps: the picture's framebuffer is bound after
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, pass_fbo_);
   glViewport(x, y, width, height);
   // SOFA's two visual passes: opaque models in graph order, then translucent ones.
   std::size_t fluids = 0;
@@ -809,7 +921,7 @@ void GlRenderer::draw_fluid(const Batch& b, GpuBatch& g, std::size_t k, const Vi
   clip_distances(false);  // the passes' shaders write no gl_ClipDistance
   FluidSurface& f = *fluids_[k];
   const bool drawn = f.render(g.vao, static_cast<int>(b.vertex_count()), b.fluid, view, width, height);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, pass_fbo_);
   glViewport(x, y, width, height);
   if (scissor) glEnable(GL_SCISSOR_TEST);
   glClearColor(clear[0], clear[1], clear[2], clear[3]);
@@ -1066,7 +1178,7 @@ void GlRenderer::set_shadows(const DrawList& list, const View& view, bool render
     std::copy(lv->view_projection.data(), lv->view_projection.data() + 16, vp + 16 * i);
   }
   // Back to the picture.
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, pass_fbo_);
   glViewport(0, 0, width_, height_);
   glUseProgram(program_);
   const auto loc = [this](const char* name) { return glGetUniformLocation(program_, name); };

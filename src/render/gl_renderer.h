@@ -105,6 +105,17 @@ class GlRenderer {
   unsigned oit_fbo_ = 0, oit_textures_[2] = {0, 0}, oit_depth_rb_ = 0, oit_program_ = 0, oit_vao_ = 0;
   int u_oit_ = -1, u_oit_depth_scale_ = -1;
   bool oit_warned_ = false;
+  // PostProcessManager (list.post): the scene drawn into a picture of colour and depth
+  // textures (post_fbo_, single-sampled, made at first use at the picture's size) through the
+  // manager's projection, then the picture covered by the manager's shader reading them.
+  bool post_buffers();
+  static Eigen::Matrix4f post_projection(const PostProcess& p);
+  void draw_post(const DrawList& list);
+  static constexpr int kPostUnit = 26;  // units 26 and 27: colour and depth (past the scene shaders')
+  unsigned post_fbo_ = 0, post_textures_[2] = {0, 0}, post_vao_ = 0, post_vbo_ = 0;
+  bool post_failed_ = false;
+  // The framebuffer a pass draws into: the picture's, or the post-process pass's.
+  unsigned pass_fbo_ = 0;
   // OglFluidModel's surfaces (render/fluid_surface.h), one per fluid batch of a pass in graph
   // order: batch `b` (the k-th) rendered into its targets, and its debugFBO view drawn, for the
   // rectangle (x, y, width, height); the translucent pass lays them over the picture.

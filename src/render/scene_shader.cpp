@@ -53,8 +53,13 @@ SceneShaders::~SceneShaders() {
 }
 
 unsigned SceneShaders::program_for(const SceneShader& s) {
+  // The uniforms and samplers the scene sets are part of the key: one it does not set keeps the
+  // value the program was linked with (its GLSL initialiser or 0), never one set for another
+  // scene drawn by this renderer before.
   std::string key = s.vertex_file + '\n' + s.fragment_file;
   for (const auto& [name, value] : s.defines) key += '\n' + name + '=' + value;
+  for (const SceneShader::Input& u : s.uniforms) key += "\nuniform " + u.name;
+  for (const SceneShader::Input& t : s.textures) key += "\nsampler " + t.name;
   for (const Program& p : programs_)
     if (p.key == key) return p.id;
   Program& p = programs_.emplace_back();

@@ -798,6 +798,46 @@ TEST_F(RenderTest, OglFluidModelDrawsSofasScreenSpaceSurface) {
   EXPECT_EQ(d.rgb(100, 100), (std::array<int, 3>{51, 255, 255}));
 }
 
+// PostProcessManager with SOFA's depth-of-field shader: the scene is drawn through the manager's
+// gluPerspective(60°, 1, zNear, zFar) (a unit square 5 ahead: 0.1 · cot 30° · 100 = 17.3 px half
+// width instead of the camera's 45°: 24.1 px), and the shader reads that picture's depth
+// (showDepthMap: the square's window depth 0.808 with near 1, far 100; 1 around it) and colour
+// (no blur when blurIntensity is 0: the square's own colour).
+TEST_F(RenderTest, PostProcessManagerRunsItsShaderOverTheScenesPicture) {
+  const std::string shaders = std::string(SINEW_DATA_DIR) + "/share/shaders/";
+  if (!std::filesystem::exists(shaders + "depthOfField.frag"))
+    GTEST_SKIP() << "SOFA data not found at " << SINEW_DATA_DIR;
+  auto scene = [&](const std::string& variables) {
+    return "<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>" +
+           square("sq", "color=\"0 1 0 1\"", 0.0) + "<OglShader passive=\"true\" fileVertexShaders=\"['" + shaders +
+           "depthOfField.vert']\" fileFragmentShaders=\"['" + shaders + "depthOfField.frag']\"/>" + variables +
+           "<PostProcessManager zNear=\"1\" zFar=\"100\"/></Node>";
+  };
+  auto width_of = [](const Image& img, auto is_square) {
+    int n = 0;
+    for (int x = 0; x < 200; ++x) n += is_square(img.rgb(x, 100)) ? 1 : 0;
+    return n;
+  };
+  auto depth = test::load(scene("<OglIntVariable id=\"showDepthMap\" value=\"1\"/>"));
+  const Image d = render(*depth.root);
+  const double window_depth = 0.5 * ((101.0 / -99.0 * -5.0 + 200.0 / -99.0) / 5.0 + 1.0);  // 0.808
+  EXPECT_NEAR(d.rgb(100, 100)[0], 255 * window_depth, 1);
+  EXPECT_EQ(d.rgb(100, 100)[1], d.rgb(100, 100)[0]);
+  EXPECT_EQ(d.rgb(3, 3)[0], 255);
+  EXPECT_NEAR(width_of(d, [](auto c) { return c[0] < 250; }), 2 * 17.3, 2);
+
+  auto sharp = test::load(scene("<OglFloatVariable id=\"blurIntensity\" value=\"0\"/>"));
+  const Image c = render(*sharp.root);
+  EXPECT_GT(c.rgb(100, 100)[1], 100);
+  EXPECT_EQ(c.rgb(100, 100)[0], 0);
+  EXPECT_TRUE(is_background(c.rgb(3, 3)));
+  EXPECT_NEAR(width_of(c, [](auto p) { return !is_background(p); }), 2 * 17.3, 2);
+  // Without the manager, the camera's own 45°.
+  auto plain = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>" +
+                          square("sq", "color=\"0 1 0 1\"", 0.0) + "</Node>");
+  EXPECT_NEAR(width_of(render(*plain.root), [](auto p) { return !is_background(p); }), 2 * 24.1, 2);
+}
+
 // A LightManager's lights replace the headlight with fixed-function OpenGL lighting: per light
 // attenuation · spot · colour · (ambient + diffuse·max(n·L, 0)), plus the manager's ambient. A
 // square facing the camera, colour 0.5 red (ambient 0.1, diffuse 0.5, no specular).

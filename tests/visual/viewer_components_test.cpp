@@ -11,6 +11,8 @@
 #include "visual/color.h"
 #include "visual/drawing/visual_bounding_box.h"
 #include "visual/ogl_model.h"
+#include "visual/shader/ogl_shader.h"
+#include "visual/shader/post_process_manager.h"
 
 namespace sinew::test {
 namespace {
@@ -132,6 +134,15 @@ TEST(ViewerComponents, RenderPasses) {
   const Outcome o = run_xml(dir, R"(<Node name="root"><OglViewport screenSize="-1 4" fovy="200"/></Node>)", 1);
   EXPECT_TRUE(any_contains_all(o.errors, {"OglViewport", "screenSize"})) << o.all();
   EXPECT_TRUE(any_contains_all(o.errors, {"OglViewport", "fovy"})) << o.all();
+  // PostProcessManager draws with the OglShader of its node or above; without one, no pass.
+  const Outcome lone = run_xml(dir, R"(<Node name="root"><PostProcessManager/></Node>)", 1);
+  EXPECT_TRUE(lone.init_ok) << lone.all();
+  EXPECT_TRUE(any_contains_all(lone.warnings, {"PostProcessManager", "no OglShader", "no post-process"})) << lone.all();
+  auto with = load(R"(<Node name="root"><OglShader name="sh" passive="1"/><Node name="c"><PostProcessManager name="p"/></Node></Node>)");
+  ASSERT_TRUE(with.root);
+  const auto* p = get<PostProcessManager>(*with.root->children().front(), "p");
+  ASSERT_TRUE(p);
+  EXPECT_EQ(p->shader(), get<OglShader>(*with.root, "sh"));
 }
 
 TEST(ViewerComponents, ClipPlaneHalfSpace) {
