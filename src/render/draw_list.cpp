@@ -51,19 +51,35 @@ Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind) {
   return b;
 }
 
-void grow_bounds(DrawList& list, const std::vector<float>& x) {
-  for (std::size_t i = 0; i + 2 < x.size(); i += 3) {
-    const Vec3 p(x[i], x[i + 1], x[i + 2]);
-    if (!p.allFinite()) continue;
-    if (!list.has_bounds) {
-      list.min = list.max = p;
-      list.has_bounds = true;
-    } else {
-      list.min = list.min.cwiseMin(p);
-      list.max = list.max.cwiseMax(p);
-    }
+void include_point(DrawList& list, const Vec3& p) {
+  if (!p.allFinite()) return;
+  if (!list.has_bounds) {
+    list.min = list.max = p;
+    list.has_bounds = true;
+  } else {
+    list.min = list.min.cwiseMin(p);
+    list.max = list.max.cwiseMax(p);
   }
 }
+
+void grow_bounds(DrawList& list, const std::vector<float>& x) {
+  for (std::size_t i = 0; i + 2 < x.size(); i += 3) include_point(list, Vec3(x[i], x[i + 1], x[i + 2]));
+}
+
+// A node's `bbox` given as min then max (SOFA's Node::bboxIsFixed: set in the scene file).
+bool fixed_box(const Node& node, Vec3& min, Vec3& max) {
+  const std::vector<double>& b = node.bbox.get();
+  if (b.size() != 6 || !(b[0] <= b[3] && b[1] <= b[4] && b[2] <= b[5])) return false;
+  min = Vec3(b[0], b[1], b[2]), max = Vec3(b[3], b[4], b[5]);
+  return min.allFinite() && max.allFinite();
+}
+
+// A state whose points are drawn only when nothing else is (see gather); `boxed`: under a node
+// with a fixed bbox, so its points do not grow the scene's box.
+struct Deferred {
+  const MechanicalState* state = nullptr;
+  bool boxed = false;
+};
 
 // Positions of a state as floats (the first three coordinates of each DoF).
 bool state_positions(const MechanicalState& s, std::vector<float>& out) {
@@ -333,13 +349,20 @@ void add_points(DrawList& list, const MechanicalState& state) {
 // once, reached through the first of its parents visited, with that parent's
 // display flags. `seen` lists the nodes with several parents already drawn.
 void visit(Node& node, const DisplayFlags& inherited, const ClipSet& inherited_clip, ShaderContext shader,
-           DrawList& list, std::vector<float>& scratch, std::vector<const MechanicalState*>& deferred,
+           DrawList& list, std::vector<float>& scratch, std::vector<Deferred>& deferred,
            std::vector<const Node*>& seen) {
   if (!node.activated.value()) return;
   if (node.parents().size() > 1) {
     if (std::find(seen.begin(), seen.end(), &node) != seen.end()) return;
     seen.push_back(&node);
   }
+  Vec3 box_min, box_max;
+  const bool boxed = !node.parents().empty() && fixed_box(node, box_min, box_max);
+  struct {
+    bool has_bounds;
+    Vec3 min, max;
+  } saved{list.has_bounds, list.min, list.max};
+  const std::size_t deferred_before = deferred.size();
   DisplayFlags flags = inherited;
   for (const auto& o : node.objects())
     if (const auto* s = dynamic_cast<const VisualStyle*>(o.get())) flags = flags.merged(s->flags());
@@ -422,10 +445,18 @@ void visit(Node& node, const DisplayFlags& inherited, const ClipSet& inherited_c
     if (flags.shown(DisplayFlags::behavior_models) && !node.mechanical_mapping) {
       const auto* show = dynamic_cast<const Field<bool>*>(state->find_field("showObject"));
       if (show && show->get()) add_points(list, *state);
-      else deferred.push_back(state);
+      else deferred.push_back({state, false});
     }
   }
   for (Node* child : node.children()) visit(*child, flags, clip, shader, list, scratch, deferred, seen);
+  if (boxed) {
+    // SOFA's UpdateBoundingBoxVisitor: a node whose bbox is fixed gives its parent that box, not
+    // what its subtree holds (the root's own is applied where the view is framed).
+    list.has_bounds = saved.has_bounds, list.min = saved.min, list.max = saved.max;
+    include_point(list, box_min);
+    include_point(list, box_max);
+    for (std::size_t i = deferred_before; i < deferred.size(); ++i) deferred[i].boxed = true;
+  }
 }
 
 }  // namespace
@@ -481,7 +512,7 @@ void gather(Node& root, DrawList& out) {
   out.shaders.clear();
   out.has_bounds = false;
   thread_local std::vector<float> scratch;
-  thread_local std::vector<const MechanicalState*> deferred;
+  thread_local std::vector<Deferred> deferred;
   thread_local std::vector<const Node*> seen;
   deferred.clear();
   seen.clear();
@@ -528,7 +559,12 @@ void gather(Node& root, DrawList& out) {
   bool surfaces = false;
   for (std::size_t i = 0; i < out.used; ++i) surfaces |= out.batches[i].kind == Batch::Kind::triangles;
   if (!surfaces)
-    for (const MechanicalState* s : deferred) add_points(out, *s);
+    for (const Deferred& d : deferred) {
+      const bool had = out.has_bounds;
+      const Vec3 min = out.min, max = out.max;
+      add_points(out, *d.state);
+      if (d.boxed) out.has_bounds = had, out.min = min, out.max = max;
+    }
   // The root's display flags (lights live at the root in SOFA's scenes).
   DisplayFlags root_flags = DisplayFlags::viewer_defaults();
   for (const auto& o : root.objects())

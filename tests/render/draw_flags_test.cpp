@@ -269,5 +269,33 @@ TEST(CameraPathDraw, RotationCircleAndTranslationSegments) {
     EXPECT_TRUE(!list.batches[i].source || list.batches[i].source->name.get() != "cam");
 }
 
+// The scene's box as SOFA's UpdateBoundingBoxVisitor builds it: a child node with a fixed bbox
+// gives its parent that box, not what its subtree holds (its points, however far); nodes
+// without one give what they draw.
+TEST(SceneBounds, ChildNodeWithFixedBboxGivesItsBoxNotItsContent) {
+  const std::string square = R"(<OglModel position="-0.5 -0.5 0  0.5 -0.5 0  0.5 0.5 0  -0.5 0.5 0" quads="0 1 2 3"/>)";
+  auto s = test::load(R"(<Node name="root"><Node name="a">)" + square + R"(</Node>
+      <Node name="boxed" bbox="-3 -2 -1 3 2 1"><OglModel position="40 0 0  41 0 0  41 1 0" triangles="0 1 2"/></Node>
+    </Node>)");
+  render::DrawList list;
+  render::gather(*s.root, list);
+  ASSERT_TRUE(list.has_bounds);
+  EXPECT_EQ(list.used, 2u);  // both models are drawn
+  EXPECT_TRUE(list.min.isApprox(Vec3(-3, -2, -1))) << list.min.transpose();
+  EXPECT_TRUE(list.max.isApprox(Vec3(3, 2, 1))) << list.max.transpose();
+  // Without the bbox, the far triangle counts.
+  auto open = test::load(R"(<Node name="root"><Node name="a">)" + square + R"(</Node>
+      <Node name="free"><OglModel position="40 0 0  41 0 0  41 1 0" triangles="0 1 2"/></Node></Node>)");
+  render::gather(*open.root, list);
+  EXPECT_FLOAT_EQ(list.max[0], 41.f);
+  // Points drawn only for want of anything else (no visual model) under a fixed box do not grow it.
+  auto points = test::load(R"(<Node name="root"><VisualStyle displayFlags="showBehaviorModels"/>
+      <Node name="boxed" bbox="0 0 0 1 1 1">
+      <MechanicalObject position="0.5 0.5 0.5  90 0 0"/></Node></Node>)");
+  render::gather(*points.root, list);
+  ASSERT_EQ(list.used, 1u);
+  EXPECT_TRUE(list.max.isApprox(Vec3(1, 1, 1))) << list.max.transpose();
+}
+
 }  // namespace
 }  // namespace sinew
