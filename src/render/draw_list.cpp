@@ -44,6 +44,7 @@ Batch& next_batch(DrawList& list, const Component* source, Batch::Kind kind) {
   b.wireframe = false;
   b.lit = true;
   b.splat = Batch::Splat::none;
+  b.primitive = Batch::Primitive::triangles;
   b.clip = Batch::no_clip();
   b.alpha_blend = false;
   b.depth_test = true;
@@ -123,18 +124,18 @@ struct ShaderContext {
 };
 
 // The elements of `shader` (its node's OglShaderElements of the version in use) into the
-// list's shaders, once per frame; its index there, or -1 when it cannot run here (a
-// geometry or tessellation stage, or no vertex or fragment file).
+// list's shaders, once per frame; its index there, or -1 when it cannot run here (no vertex
+// or fragment file).
 int scene_shader_index(DrawList& list, const OglShader& shader) {
   for (std::size_t i = 0; i < list.shaders.size(); ++i)
     if (list.shaders[i].source == &shader) return list.shaders[i].vertex_file.empty() ? -1 : static_cast<int>(i);
   SceneShader& s = list.shaders.emplace_back();
   s.source = &shader;
-  if (!shader.file_of(shader.geometry).empty() || !shader.file_of(shader.tess_control).empty() ||
-      !shader.file_of(shader.tess_eval).empty())
-    return -1;
   s.vertex_file = shader.file_of(shader.vertex);
   s.fragment_file = shader.file_of(shader.fragment);
+  s.tess_control_file = shader.file_of(shader.tess_control);
+  s.tess_eval_file = shader.file_of(shader.tess_eval);
+  s.geometry_file = shader.file_of(shader.geometry);
   if (s.vertex_file.empty() || s.fragment_file.empty()) {
     s.vertex_file.clear();
     return -1;
@@ -234,6 +235,12 @@ void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const C
     --list.used;
     return;
   }
+  b.triangle_count = tris.size();
+  b.primitive = static_cast<Batch::Primitive>(m.primitive_index());
+  b.quad_indices.clear();
+  if (b.primitive == Batch::Primitive::patches || b.primitive == Batch::Primitive::lines_adjacency)
+    for (const Quad& q : quads) b.quad_indices.insert(b.quad_indices.end(), q.begin(), q.end());
+  if (b.primitive == Batch::Primitive::points) b.point_size = static_cast<float>(m.point_size.get());
   // The material is parsed again only when its text changed (parsing allocates).
   if (!b.shading_parsed || b.material_text != m.material.get() || b.color_text != m.color()) {
     const Material mat = material_of(m);

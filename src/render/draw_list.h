@@ -98,6 +98,16 @@ struct Batch {
   // A visual model under an OglShadowShader (its node or an ancestor): shaded as SOFA's
   // shadow-mapping shaders do (Lighting::shadows adds the lights' shadow maps).
   bool shadow_shader = false;
+  // OglModel's primitiveType, for the stages of its shader: DEFAULT triangles (quads split);
+  // PATCHES its triangles as patches of 3 and its quads as patches of 4 (a tessellation
+  // shader's input); LINES_ADJACENCY its quads as lines with adjacency (its triangles stay
+  // triangles, as SOFA warns); POINTS every vertex as a point of point_size pixels (with or
+  // without a shader). indices[0, 3·triangle_count) are the model's own triangles;
+  // quad_indices, four per quad, are filled for PATCHES and LINES_ADJACENCY.
+  enum class Primitive { triangles, lines_adjacency, patches, points };
+  Primitive primitive = Primitive::triangles;
+  std::size_t triangle_count = 0;
+  std::vector<unsigned> quad_indices;
   // A visual model under an OglShader: the index of its program in DrawList::shaders (-1:
   // none), and the shader's per-vertex attributes (one item of `width` floats per vertex).
   int shader = -1;
@@ -171,10 +181,11 @@ struct PostProcess {
 };
 
 // An OglShader the visual models under it are drawn with (render/scene_shader.h): its GLSL
-// files (the version in use), and the #defines, uniforms and textures of its elements.
+// files (the version in use; tessellation and geometry stages optional), and the #defines, uniforms and textures of its elements.
 struct SceneShader {
   const Component* source = nullptr;
   std::string vertex_file, fragment_file;
+  std::string tess_control_file, tess_eval_file, geometry_file;  // empty: no such stage
   std::vector<std::pair<std::string, std::string>> defines;
   struct Input {
     std::string name;

@@ -4,11 +4,17 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace sinew::render {
 
 // A linked program of the two GLSL sources; 0 with *error (the compiler's or linker's log).
 unsigned link_program(const char* vertex, const char* fragment, std::string* error);
+
+// A linked program of the given stages (GL shader type, GLSL source), any number of them; 0
+// with *error.
+unsigned link_program_stages(const std::vector<std::pair<unsigned, std::string>>& stages, std::string* error);
 
 // Uploads `bytes` into `buffer` bound to `target`, growing its storage only when it is too
 // small (`capacity`: the storage's bytes).

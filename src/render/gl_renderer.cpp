@@ -417,6 +417,35 @@ unsigned link_program(const char* vertex, const char* fragment, std::string* err
   return link(vertex, fragment, error);
 }
 
+unsigned link_program_stages(const std::vector<std::pair<unsigned, std::string>>& stages, std::string* error) {
+  std::vector<GLuint> shaders;
+  auto drop = [&] {
+    for (GLuint sh : shaders) glDeleteShader(sh);
+  };
+  for (const auto& [type, source] : stages) {
+    const unsigned sh = compile(static_cast<GLenum>(type), source.c_str(), error);
+    if (!sh) {
+      drop();
+      return 0;
+    }
+    shaders.push_back(sh);
+  }
+  const unsigned p = glCreateProgram();
+  for (GLuint sh : shaders) glAttachShader(p, sh);
+  glLinkProgram(p);
+  drop();
+  GLint ok = 0;
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[1024] = {};
+    glGetProgramInfoLog(p, sizeof log, nullptr, log);
+    if (error) *error = std::string("shader link failed: ") + log;
+    glDeleteProgram(p);
+    return 0;
+  }
+  return p;
+}
+
 void upload_buffer(unsigned target, unsigned buffer, const void* data, std::size_t bytes, std::size_t& capacity) {
   upload(static_cast<GLenum>(target), buffer, data, bytes, capacity);
 }
@@ -744,6 +773,7 @@ GlRenderer::~GlRenderer() {
     glDeleteBuffers(4, g.vbo);
     glDeleteBuffers(1, &g.ebo);
     if (!g.attribute_vbo.empty()) glDeleteBuffers(static_cast<GLsizei>(g.attribute_vbo.size()), g.attribute_vbo.data());
+    if (g.quad_ebo) glDeleteBuffers(1, &g.quad_ebo);
   }
   scene_shaders_.reset();
   fluids_.clear();
@@ -1008,6 +1038,11 @@ void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {
       glDisableVertexAttribArray(3);
       glUniform1i(u_textured_, 0);
     }
+    if (!b.quad_indices.empty()) {  // patches or lines with adjacency of four: their own buffer
+      if (!g.quad_ebo) glGenBuffers(1, &g.quad_ebo);
+      upload(GL_ELEMENT_ARRAY_BUFFER, g.quad_ebo, b.quad_indices.data(), b.quad_indices.size() * sizeof(unsigned),
+             g.quad_capacity);
+    }
     if (b.kind == Batch::Kind::triangles && !b.indices.empty())
       upload(GL_ELEMENT_ARRAY_BUFFER, g.ebo, b.indices.data(), b.indices.size() * sizeof(unsigned), g.capacity[3]);
   }
@@ -1043,21 +1078,57 @@ void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {
       if (scene_shaders_->bind(pass_list_->shaders[static_cast<std::size_t>(b.shader)], b, pass_view_,
                                pass_list_->lighting, g.attribute_vbo, g.attribute_capacity)) {
         clip_distances(false);  // SOFA's shaders write no gl_ClipDistance
-        if (!b.indices.empty()) glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.indices.size()), GL_UNSIGNED_INT, nullptr);
-        else glDrawArrays(GL_TRIANGLES, 0, n);
+        draw_shaded_elements(b, g);
         clip_distances(true);
         glUseProgram(program_);
         if (b.wireframe) set_line_width(1.f);
         return;
       }
     }
-    if (!b.indices.empty()) {
+    if (b.primitive == Batch::Primitive::points) {  // OglModel's POINTS: every vertex, shaded or not
+      glDrawArrays(GL_POINTS, 0, n);
+    } else if (!b.indices.empty()) {
       glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.indices.size()), GL_UNSIGNED_INT, nullptr);
     } else {
       glDrawArrays(GL_TRIANGLES, 0, n);
     }
     if (b.wireframe) set_line_width(1.f);
   }
+}
+
+void GlRenderer::draw_shaded_elements(const Batch& b, GpuBatch& g) {
+  const GLsizei n = static_cast<GLsizei>(b.vertex_count());
+  const GLsizei triangles = static_cast<GLsizei>(b.triangle_count * 3);
+  switch (b.primitive) {
+    case Batch::Primitive::points:
+      glDrawArrays(GL_POINTS, 0, n);
+      return;
+    case Batch::Primitive::triangles:
+      if (!b.indices.empty()) glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(b.indices.size()), GL_UNSIGNED_INT, nullptr);
+      else glDrawArrays(GL_TRIANGLES, 0, n);
+      return;
+    case Batch::Primitive::patches:
+      // OglModel::internalDraw: triangles as patches of 3, quads as patches of 4.
+      if (triangles > 0) {
+        glPatchParameteri(GL_PATCH_VERTICES, 3);
+        glDrawElements(GL_PATCHES, triangles, GL_UNSIGNED_INT, nullptr);
+      }
+      break;
+    case Batch::Primitive::lines_adjacency:
+      // Triangles cannot be lines with adjacency: drawn as triangles (SOFA warns so).
+      if (triangles > 0) glDrawElements(GL_TRIANGLES, triangles, GL_UNSIGNED_INT, nullptr);
+      break;
+  }
+  if (b.quad_indices.empty() || !g.quad_ebo) return;
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.quad_ebo);
+  const GLsizei quads = static_cast<GLsizei>(b.quad_indices.size());
+  if (b.primitive == Batch::Primitive::patches) {
+    glPatchParameteri(GL_PATCH_VERTICES, 4);
+    glDrawElements(GL_PATCHES, quads, GL_UNSIGNED_INT, nullptr);
+  } else {
+    glDrawElements(GL_LINES_ADJACENCY, quads, GL_UNSIGNED_INT, nullptr);
+  }
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.ebo);  // the vertex array's own element buffer again
 }
 
 void GlRenderer::draw_scene_frame(const SceneFrame& f, const View& view) {

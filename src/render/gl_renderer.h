@@ -51,6 +51,8 @@ class GlRenderer {
     std::size_t capacity[5] = {0, 0, 0, 0, 0};  // bytes: positions, normals, colours, indices, texcoords
     std::vector<unsigned> attribute_vbo;  // a scene shader's per-vertex attributes
     std::vector<std::size_t> attribute_capacity;
+    unsigned quad_ebo = 0;  // Batch::quad_indices (made at first use)
+    std::size_t quad_capacity = 0;
   };
   int width_ = 0, height_ = 0, samples_ = 0;
   unsigned fbo_ = 0, color_rb_ = 0, depth_rb_ = 0, resolve_fbo_ = 0, resolve_rb_ = 0;
@@ -69,6 +71,9 @@ class GlRenderer {
   // the second pass of a translucent model).
   void draw_batch(const Batch& b, GpuBatch& g, bool upload = true);
   void set_line_width(float w);
+  // A shaded model's elements as its primitiveType asks (Batch::Primitive); its vertex array
+  // and program bound.
+  static void draw_shaded_elements(const Batch& b, GpuBatch& g);
   float line_width_range_[2] = {0.f, 0.f};  // GL_ALIASED_LINE_WIDTH_RANGE, read once
   // OglModel's alphaBlend, depthTest and cullFace set before a draw of `b`, and undone after.
   static void begin_model_state(const Batch& b);

@@ -56,7 +56,8 @@ unsigned SceneShaders::program_for(const SceneShader& s) {
   // The uniforms and samplers the scene sets are part of the key: one it does not set keeps the
   // value the program was linked with (its GLSL initialiser or 0), never one set for another
   // scene drawn by this renderer before.
-  std::string key = s.vertex_file + '\n' + s.fragment_file;
+  std::string key = s.vertex_file + '\n' + s.tess_control_file + '\n' + s.tess_eval_file + '\n' + s.geometry_file +
+                    '\n' + s.fragment_file;
   for (const auto& [name, value] : s.defines) key += '\n' + name + '=' + value;
   for (const SceneShader::Input& u : s.uniforms) key += "\nuniform " + u.name;
   for (const SceneShader::Input& t : s.textures) key += "\nsampler " + t.name;
@@ -65,16 +66,35 @@ unsigned SceneShaders::program_for(const SceneShader& s) {
   Program& p = programs_.emplace_back();
   p.key = key;
   const std::string who = s.source ? s.source->describe() : std::string("OglShader");
-  std::string vs, fs;
-  if (!read_text(s.vertex_file, vs) || !read_text(s.fragment_file, fs)) {
-    std::fprintf(stderr, "sinew: %s: cannot read %s: its models are drawn with Sinew's shading\n", who.c_str(),
-                 read_text(s.vertex_file, vs) ? s.fragment_file.c_str() : s.vertex_file.c_str());
-    return 0;
+  struct Stage {
+    const std::string* file;
+    GlslStage stage;
+    unsigned type;
+    std::string source;
+  };
+  Stage stages[] = {{&s.vertex_file, GlslStage::vertex, GL_VERTEX_SHADER, {}},
+                    {&s.tess_control_file, GlslStage::tess_control, GL_TESS_CONTROL_SHADER, {}},
+                    {&s.tess_eval_file, GlslStage::tess_eval, GL_TESS_EVALUATION_SHADER, {}},
+                    {&s.geometry_file, GlslStage::geometry, GL_GEOMETRY_SHADER, {}},
+                    {&s.fragment_file, GlslStage::fragment, GL_FRAGMENT_SHADER, {}}};
+  std::vector<std::string> sources;
+  bool tessellation = false;
+  for (Stage& st : stages) {
+    if (st.file->empty()) continue;
+    if (!read_text(*st.file, st.source)) {
+      std::fprintf(stderr, "sinew: %s: cannot read %s: its models are drawn with Sinew's shading\n", who.c_str(),
+                   st.file->c_str());
+      return 0;
+    }
+    sources.push_back(st.source);
+    tessellation |= st.stage == GlslStage::tess_control || st.stage == GlslStage::tess_eval;
   }
-  const std::string v = translate_glsl(vs, GlslStage::vertex, s.defines);
-  const std::string f = translate_glsl(fs, GlslStage::fragment, s.defines);
+  const int version = glsl_program_version(sources, tessellation);
+  std::vector<std::pair<unsigned, std::string>> translated;
+  for (const Stage& st : stages)
+    if (!st.file->empty()) translated.emplace_back(st.type, translate_glsl(st.source, st.stage, s.defines, version));
   std::string err;
-  p.id = link_program(v.c_str(), f.c_str(), &err);
+  p.id = link_program_stages(translated, &err);
   if (!p.id)
     std::fprintf(stderr, "sinew: %s (%s, %s) does not run here: %s; its models are drawn with Sinew's shading\n",
                  who.c_str(), s.vertex_file.c_str(), s.fragment_file.c_str(), err.c_str());

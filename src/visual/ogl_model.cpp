@@ -213,6 +213,7 @@ namespace {
 
 constexpr const char* kBlendEquations[] = {"GL_FUNC_ADD", "GL_FUNC_SUBTRACT", "GL_MIN", "GL_MAX"};
 constexpr const char* kBlendFactors[] = {"GL_ZERO", "GL_ONE", "GL_SRC_ALPHA", "GL_ONE_MINUS_SRC_ALPHA"};
+constexpr const char* kPrimitives[] = {"DEFAULT", "LINES_ADJACENCY", "PATCHES", "POINTS"};
 
 // The index of `value` in `options`, -1 when absent.
 template <std::size_t N>
@@ -236,6 +237,10 @@ int OglModel::dest_factor_index() const {
   const int i = option_index(dest_factor.get(), kBlendFactors);
   return i < 0 ? 3 : i;
 }
+int OglModel::primitive_index() const {
+  const int i = option_index(primitive_type.get(), kPrimitives);
+  return i < 0 ? 0 : i;
+}
 
 void OglModel::init() {
   // SOFA's option lists for alpha blending: another value keeps the default.
@@ -248,6 +253,9 @@ void OglModel::init() {
   if (option_index(dest_factor.get(), kBlendFactors) < 0)
     msg_warning("dfactor '" + dest_factor.get() +
                 "' is not one of GL_ZERO, GL_ONE, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA: GL_ONE_MINUS_SRC_ALPHA is used");
+  if (option_index(primitive_type.get(), kPrimitives) < 0)
+    msg_warning("primitiveType '" + primitive_type.get() +
+                "' is not one of DEFAULT, LINES_ADJACENCY, PATCHES, POINTS: DEFAULT is used");
   if (cull_face.get() < 0 || cull_face.get() > 2)
     msg_warning("cullFace " + std::to_string(cull_face.get()) + " is not 0, 1 or 2: no culling");
   if (!filename.get().empty()) {

@@ -97,6 +97,9 @@ class OglModel : public VisualState {
   int blend_equation_index() const;
   int source_factor_index() const;
   int dest_factor_index() const;
+  // primitiveType's index in SOFA's list DEFAULT, LINES_ADJACENCY, PATCHES, POINTS (another
+  // value: DEFAULT, warned at init).
+  int primitive_index() const;
 
   // Pseudo-attribute `color` (SOFA's setColor): kept as written.
   const std::string& color() const { return color_; }

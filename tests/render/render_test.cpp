@@ -838,6 +838,18 @@ TEST_F(RenderTest, PostProcessManagerRunsItsShaderOverTheScenesPicture) {
   EXPECT_NEAR(width_of(render(*plain.root), [](auto p) { return !is_background(p); }), 2 * 24.1, 2);
 }
 
+// OglModel primitiveType POINTS: its vertices as points of pointSize pixels, not its triangles.
+TEST_F(RenderTest, OglModelPrimitiveTypePointsDrawsItsVertices) {
+  auto s = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>" +
+                      square("sq", "color=\"1 1 1 1\" primitiveType=\"POINTS\" pointSize=\"5\"", 0.0) + "</Node>");
+  const Image img = render(*s.root);
+  const long lit = count_if(img, [](auto c) { return !is_background(c); });
+  EXPECT_NEAR(lit, 4 * 25, 12);  // four 5 × 5 points (a corner may fall between pixels)
+  EXPECT_TRUE(is_background(img.rgb(100, 100)));  // no face between them
+  auto bad = test::load("<Node name=\"root\">" + square("sq", "primitiveType=\"QUADS\"", 0.0) + "</Node>");
+  EXPECT_TRUE(test::any_contains(test::messages(bad.root->diagnostics(), Severity::warning), "primitiveType 'QUADS'"));
+}
+
 // A LightManager's lights replace the headlight with fixed-function OpenGL lighting: per light
 // attenuation · spot · colour · (ambient + diffuse·max(n·L, 0)), plus the manager's ambient. A
 // square facing the camera, colour 0.5 red (ambient 0.1, diffuse 0.5, no specular).

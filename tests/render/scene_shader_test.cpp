@@ -56,6 +56,33 @@ TEST(TranslateGlsl, LeavesLongerNamesAloneAndPutsDefinesAndExtensionsFirst) {
   EXPECT_EQ(out.find("#extension", ext + 1), std::string::npos);  // moved, not copied
 }
 
+// Each stage gets SOFA's stage define; 4.x sources keep their version (core); tessellation
+// asks for 4.00. In the control stage the levels go through arrays of its own, copied to the
+// built-ins at the end of the main the preprocessor keeps (not the vertex stage's of one file).
+TEST(TranslateGlsl, StagesVersionsAndTheTessellationLevelCopies) {
+  EXPECT_EQ(render::glsl_version("// none\nvoid main() {}\n"), 110);
+  EXPECT_EQ(render::glsl_version("  #version 420 compatibility\n"), 420);
+  EXPECT_EQ(render::glsl_program_version({"#version 120\n"}, false), 330);
+  EXPECT_EQ(render::glsl_program_version({"#version 120\n"}, true), 400);
+  EXPECT_EQ(render::glsl_program_version({"#version 120\n", "#version 420 compatibility\n"}, true), 420);
+  const std::string file =
+      "#version 420 compatibility\n#ifdef VertexShader\nvoid main() { gl_Position = gl_Vertex; }\n#endif\n"
+      "#ifdef TessellationControlShader\nlayout(vertices = 3) out;\n#define I gl_InvocationID\n"
+      "void main() { /* } */ gl_TessLevelOuter[I] = 2.0; if (I == 0) { gl_TessLevelInner[0] = 2.0; } }\n#undef I\n#endif\n";
+  const std::string tcs = translate_glsl(file, GlslStage::tess_control, {}, 420);
+  EXPECT_EQ(tcs.rfind("#version 420 core\n", 0), 0u);
+  EXPECT_TRUE(has(tcs, "#define TessellationControlShader\n"));
+  EXPECT_TRUE(has(tcs, "sinew_TessLevelOuter[I] = 2.0;"));
+  const std::size_t copy = tcs.find("gl_TessLevelOuter[0] = sinew_TessLevelOuter[0]");
+  ASSERT_NE(copy, std::string::npos);
+  EXPECT_GT(copy, tcs.find("sinew_TessLevelInner[0] = 2.0; }"));  // after the body, inside the tess main
+  EXPECT_EQ(tcs.find("}", copy), tcs.rfind("}"));                  // before its closing brace
+  EXPECT_LT(tcs.find("= -3.0e38"), tcs.find("sinew_TessLevelOuter[I]"));
+  const std::string vs = translate_glsl(file, GlslStage::vertex, {}, 420);
+  EXPECT_TRUE(has(vs, "#define VertexShader\n"));
+  EXPECT_FALSE(has(vs, "sinew_TessLevel"));
+}
+
 std::string temp_file(const std::string& name, const std::string& text) {
   const auto path = std::filesystem::temp_directory_path() / ("sinew_scene_shader_" + name);
   std::ofstream(path) << text;
@@ -185,5 +212,65 @@ TEST_F(SceneShaderTest, SofasExampleShadersCompileAndLink) {
   }
 }
 
+}  // namespace
+}  // namespace sinew
+
+namespace sinew {
+namespace {
+// A tessellation program in one file (SOFA defines the stage's name in each), the model's
+// triangles sent as patches of 3 (primitiveType PATCHES): the evaluation stage places each
+// generated vertex by its barycentric coordinates, the geometry stage passes triangles on.
+TEST_F(SceneShaderTest, TessellationAndGeometryStagesRunOnPatches) {
+  const std::string file = temp_file("tess.glsl", R"(#version 400 compatibility
+#ifdef VertexShader
+out vec3 p;
+void main() { p = gl_Vertex.xyz; }
+#endif
+#ifdef TessellationControlShader
+layout(vertices = 3) out;
+uniform float level;
+in vec3 p[];
+out vec3 q[];
+void main() {
+  q[gl_InvocationID] = p[gl_InvocationID];
+  gl_TessLevelOuter[gl_InvocationID] = level;
+  if (gl_InvocationID == 0) gl_TessLevelInner[0] = level;
+}
+#endif
+#ifdef TessellationEvaluationShader
+layout(triangles, equal_spacing, cw) in;
+in vec3 q[];
+void main() {
+  vec3 x = gl_TessCoord.x * q[0] + gl_TessCoord.y * q[1] + gl_TessCoord.z * q[2];
+  gl_Position = gl_ModelViewProjectionMatrix * vec4(x, 1.0);
+}
+#endif
+#ifdef GeometryShader
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+void main() {
+  for (int i = 0; i < 3; ++i) { gl_Position = gl_in[i].gl_Position; EmitVertex(); }
+  EndPrimitive();
+}
+#endif
+#ifdef FragmentShader
+void main() { gl_FragColor = vec4(0.0, 1.0, 0.0, 1.0); }
+#endif
+)");
+  const std::string all = "['" + file + "']";
+  const std::string sh = "<OglShader fileVertexShaders=\"" + all + "\" fileTessellationControlShaders=\"" + all +
+                         "\" fileTessellationEvaluationShaders=\"" + all + "\" fileGeometryShaders=\"" + all +
+                         "\" fileFragmentShaders=\"" + all + "\"/><OglFloatVariable name=\"level\" value=\"4\"/>";
+  auto s = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 3\" lookAt=\"0 0 0\"/><Node name=\"n\">" + sh +
+                      "<OglModel position=\"-1 -1 0  1 -1 0  1 1 0  -1 1 0\" triangles=\"0 1 2  0 2 3\" "
+                      "primitiveType=\"PATCHES\"/></Node></Node>");
+  render::Image img;
+  std::string err;
+  ASSERT_TRUE(renderer_->render(*s.root, img, &err)) << err;
+  long green = 0;
+  for (int y = 0; y < 200; ++y)
+    for (int x = 0; x < 200; ++x) green += img.rgb(x, y)[1] == 255 && img.rgb(x, y)[0] == 0;
+  EXPECT_NEAR(green, 161 * 161, 2 * 161 * 2);  // the 2 × 2 square, ±80.5 px
+}
 }  // namespace
 }  // namespace sinew
