@@ -11,6 +11,7 @@
 #include "render/draw_shapes.h"
 #include "render/draw_text.h"
 #include "render/draw_visual.h"
+#include "visual/background_setting.h"
 #include "visual/clip_plane.h"
 #include "visual/color.h"
 #include "visual/drawing/ogl_scene_frame.h"
@@ -539,6 +540,9 @@ void gather(Node& root, DrawList& out) {
   const auto* oit = root.find_local<OrderIndependentTransparencyManager>();
   out.oit.on = oit && oit->state() == ComponentState::valid;
   out.oit.depth_scale = oit ? static_cast<float>(oit->depth_scale.get()) : 0.01f;
+  out.background_image.clear();
+  if (const auto* bg = root.find_down<BackgroundSetting>(); bg && bg->image_found())
+    out.background_image = bg->image.get();
   const auto* post = root.find_local<PostProcessManager>();
   out.post = PostProcess{};
   if (post && post->state() == ComponentState::valid && post->shader() &&

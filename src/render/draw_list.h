@@ -204,6 +204,8 @@ struct DrawList {
   // x0 y0 x1 y1 (y down from the top) then r g b a, 8 floats each.
   std::vector<float> overlay_rects;
   Lighting lighting;
+  // BackgroundSetting's image (a readable file), drawn tiled under the scene; empty: none.
+  std::string background_image;
   Oit oit;
   PostProcess post;
   SceneFrame frame;

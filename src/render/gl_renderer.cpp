@@ -352,6 +352,26 @@ void main() {
 }
 )";
 
+// BackgroundSetting's image as SofaGLFWWindow::drawBackgroundImage lays it: tiled at its own
+// pixel size from the bottom-left, through glOrtho(-0.5, width, -0.5, height), repeated.
+const char* kBackgroundVertexShader = R"(#version 330 core
+void main() {
+  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
+  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+}
+)";
+const char* kBackgroundFragmentShader = R"(#version 330 core
+uniform sampler2D u_image;
+uniform vec2 u_viewport;  // pixels
+uniform vec2 u_origin;    // the viewport's bottom-left corner in the framebuffer
+uniform vec2 u_size;      // the image's pixels
+out vec4 frag_color;
+void main() {
+  vec2 at = -0.5 + (gl_FragCoord.xy - u_origin) * (u_viewport + 0.5) / u_viewport;
+  frag_color = vec4(texture(u_image, at / u_size).rgb, 1.0);
+}
+)";
+
 unsigned compile(GLenum type, const char* src, std::string* error) {
   const GLuint s = glCreateShader(type);
   glShaderSource(s, 1, &src, nullptr);
@@ -784,6 +804,7 @@ GlRenderer::~GlRenderer() {
   if (shadow_program_) glDeleteProgram(shadow_program_);
   if (oit_program_) glDeleteProgram(oit_program_);
   if (oit_vao_) glDeleteVertexArrays(1, &oit_vao_);
+  if (background_program_) glDeleteProgram(background_program_);
   if (post_vao_) glDeleteVertexArrays(1, &post_vao_);
   if (post_vbo_) glDeleteBuffers(1, &post_vbo_);
   for (ShadowMap& m : shadow_maps_) {
@@ -806,6 +827,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
   glViewport(0, 0, width_, height_);
   glClearColor(background[0], background[1], background[2], background[3]);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (!list.background_image.empty()) draw_background_image(list.background_image, 0, 0, width_, height_);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
@@ -959,6 +981,39 @@ void GlRenderer::draw_fluid(const Batch& b, GpuBatch& g, std::size_t k, const Vi
   glEnable(GL_DEPTH_TEST);
   glUseProgram(program_);
   clip_distances(true);
+}
+
+void GlRenderer::draw_background_image(const std::string& file, int x, int y, int width, int height) {
+  const unsigned texture = texture_for(file);
+  if (!texture) return;  // unreadable (said once): the colour stays
+  if (!background_program_) {
+    std::string err;
+    background_program_ = link(kBackgroundVertexShader, kBackgroundFragmentShader, &err);
+    if (!background_program_) {
+      std::fprintf(stderr, "sinew: the background image cannot be drawn: %s\n", err.c_str());
+      return;
+    }
+  }
+  GLint w = 0, h = 0;
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
+  if (w <= 0 || h <= 0) return;
+  glUseProgram(background_program_);
+  glUniform1i(glGetUniformLocation(background_program_, "u_image"), 0);
+  glUniform2f(glGetUniformLocation(background_program_, "u_viewport"), static_cast<float>(width),
+              static_cast<float>(height));
+  glUniform2f(glGetUniformLocation(background_program_, "u_origin"), static_cast<float>(x), static_cast<float>(y));
+  glUniform2f(glGetUniformLocation(background_program_, "u_size"), static_cast<float>(w), static_cast<float>(h));
+  glDisable(GL_DEPTH_TEST);  // under everything, writing no depth
+  clip_distances(false);
+  glBindVertexArray(oit_vao_);  // an empty vertex array: the triangle comes from gl_VertexID
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  clip_distances(true);
+  glEnable(GL_DEPTH_TEST);
+  glUseProgram(program_);
 }
 
 void GlRenderer::begin_model_state(const Batch& b) {

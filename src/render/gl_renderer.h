@@ -126,6 +126,9 @@ class GlRenderer {
   // rectangle (x, y, width, height); the translucent pass lays them over the picture.
   void draw_fluid(const Batch& b, GpuBatch& g, std::size_t k, const View& view, int x, int y, int width, int height);
   std::vector<std::unique_ptr<FluidSurface>> fluids_;
+  // BackgroundSetting's image over the rectangle (x, y, width, height), under the scene.
+  void draw_background_image(const std::string& file, int x, int y, int width, int height);
+  unsigned background_program_ = 0;
   // The list's texts over the models (depth-tested ones first), blended, alpha kept.
   void draw_texts(const DrawList& list, const View& view);
   unsigned text_program_ = 0, text_vao_ = 0, text_vbo_ = 0;

@@ -491,6 +491,7 @@ bool ViewerApp::gather_frame() {
   if (list.has_bounds) min = min.cwiseMin(list.min), max = max.cwiseMax(list.max);
   view = render::view_of(camera.frame(), root, min, max, w, h);
   background_ = background_color();
+  if (background != 0) list.background_image.clear();  // B chose a plain colour over the scene's image
   return true;
 }
 

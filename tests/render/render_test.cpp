@@ -850,6 +850,36 @@ TEST_F(RenderTest, OglModelPrimitiveTypePointsDrawsItsVertices) {
   EXPECT_TRUE(test::any_contains(test::messages(bad.root->diagnostics(), Severity::warning), "primitiveType 'QUADS'"));
 }
 
+// BackgroundSetting's image, tiled at its own size from the bottom-left under the scene (as
+// SofaGLFW): a 4 × 4 picture, two red columns then two blue ones, repeats every 4 pixels; a
+// missing image warns and leaves the colour.
+TEST_F(RenderTest, BackgroundImageIsTiledUnderTheScene) {
+  Image tile;
+  tile.width = tile.height = 4;
+  tile.rgba.assign(4 * 4 * 4, 255);
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) {
+      std::uint8_t* p = &tile.rgba[static_cast<std::size_t>((y * 4 + x) * 4)];
+      p[0] = x < 2 ? 255 : 0, p[1] = 0, p[2] = x < 2 ? 0 : 255;
+    }
+  const std::string file = (std::filesystem::temp_directory_path() / "sinew_background_tile.png").string();
+  std::string err;
+  ASSERT_TRUE(render::write_png(file, tile, &err)) << err;
+  auto s = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+                      "<BackgroundSetting color=\"0 1 0\" image=\"" + file + "\"/>" +
+                      square("sq", "color=\"1 1 1 1\"", 0.0) + "</Node>");
+  const Image img = render(*s.root);
+  for (int x : {1, 5, 101, 197}) EXPECT_EQ(img.rgb(x, 198), (std::array<int, 3>{255, 0, 0})) << x;
+  for (int x : {3, 7, 103}) EXPECT_EQ(img.rgb(x, 198), (std::array<int, 3>{0, 0, 255})) << x;
+  EXPECT_EQ(img.rgb(100, 100)[1], img.rgb(100, 100)[0]);  // the white square over it (lit grey)
+  EXPECT_GT(img.rgb(100, 100)[1], 100);
+  auto missing = test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>"
+                            "<BackgroundSetting color=\"0 1 0\" image=\"no/such/sky.png\"/>" +
+                            square("sq", "color=\"1 1 1 1\"", 0.0) + "</Node>");
+  EXPECT_TRUE(test::any_contains(test::messages(missing.root->diagnostics(), Severity::warning), "no/such/sky.png"));
+  EXPECT_EQ(render(*missing.root).rgb(1, 198), (std::array<int, 3>{0, 255, 0}));
+}
+
 // A LightManager's lights replace the headlight with fixed-function OpenGL lighting: per light
 // attenuation · spot · colour · (ambient + diffuse·max(n·L, 0)), plus the manager's ambient. A
 // square facing the camera, colour 0.5 red (ambient 0.1, diffuse 0.5, no specular).
