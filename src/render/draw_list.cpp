@@ -126,55 +126,86 @@ struct ShaderContext {
 
 // The elements of `shader` (its node's OglShaderElements of the version in use) into the
 // list's shaders, once per frame; its index there, or -1 when it cannot run here (no vertex
-// or fragment file).
+// or fragment file). The list's entries are reused from frame to frame (their strings and
+// vectors keep their storage), so a stable scene allocates nothing here.
 int scene_shader_index(DrawList& list, const OglShader& shader) {
-  for (std::size_t i = 0; i < list.shaders.size(); ++i)
+  for (std::size_t i = 0; i < list.shaders_used; ++i)
     if (list.shaders[i].source == &shader) return list.shaders[i].vertex_file.empty() ? -1 : static_cast<int>(i);
-  SceneShader& s = list.shaders.emplace_back();
+  if (list.shaders_used == list.shaders.size()) list.shaders.emplace_back();
+  SceneShader& s = list.shaders[list.shaders_used++];
   s.source = &shader;
   s.vertex_file = shader.file_of(shader.vertex);
   s.fragment_file = shader.file_of(shader.fragment);
   s.tess_control_file = shader.file_of(shader.tess_control);
   s.tess_eval_file = shader.file_of(shader.tess_eval);
   s.geometry_file = shader.file_of(shader.geometry);
+  std::size_t defines = 0, uniforms = 0, textures = 0;
   if (s.vertex_file.empty() || s.fragment_file.empty()) {
     s.vertex_file.clear();
-    return -1;
-  }
-  const unsigned version = shader.index_active_shader.get();
-  for (const auto& o : shader.node()->objects()) {
-    const auto* e = dynamic_cast<const ShaderElement*>(o.get());
-    if (!e || e->index_shader.get() != version || e->state() == ComponentState::invalid) continue;
-    ShaderInput in = e->input();
-    const std::string& id = e->id.get();
-    switch (in.kind) {
-      case ShaderInput::Kind::macro: s.defines.emplace_back(id, in.text); break;
-      case ShaderInput::Kind::int_uniform:
-      case ShaderInput::Kind::float_uniform:
-      case ShaderInput::Kind::matrix_uniform: s.uniforms.push_back({id, std::move(in)}); break;
-      case ShaderInput::Kind::texture: s.textures.push_back({id, std::move(in)}); break;
-      default: break;
+  } else {
+    thread_local ShaderInput in;
+    const unsigned version = shader.index_active_shader.get();
+    auto slot = [](std::vector<SceneShader::Input>& v, std::size_t& n) -> SceneShader::Input& {
+      if (n == v.size()) v.emplace_back();
+      return v[n++];
+    };
+    for (const auto& o : shader.node()->objects()) {
+      const auto* e = dynamic_cast<const ShaderElement*>(o.get());
+      if (!e || e->index_shader.get() != version || e->state() == ComponentState::invalid) continue;
+      e->input(in);
+      const std::string& id = e->id.get();
+      switch (in.kind) {
+        case ShaderInput::Kind::macro:
+          if (defines == s.defines.size()) s.defines.emplace_back();
+          s.defines[defines].first = id;
+          s.defines[defines++].second = in.text;
+          break;
+        case ShaderInput::Kind::int_uniform:
+        case ShaderInput::Kind::float_uniform:
+        case ShaderInput::Kind::matrix_uniform: {
+          SceneShader::Input& u = slot(s.uniforms, uniforms);
+          u.name = id;
+          u.value = in;  // copy-assignment: the slot's storage is reused
+          break;
+        }
+        case ShaderInput::Kind::texture: {
+          SceneShader::Input& t = slot(s.textures, textures);
+          t.name = id;
+          t.value = in;
+          break;
+        }
+        default: break;
+      }
     }
   }
-  return static_cast<int>(list.shaders.size() - 1);
+  s.defines.resize(defines);
+  s.uniforms.resize(uniforms);
+  s.textures.resize(textures);
+  return s.vertex_file.empty() ? -1 : static_cast<int>(list.shaders_used - 1);
 }
 
 // The per-vertex attributes of `shader` for a model of `n` vertices in `node`: those of the
 // shader's node and of the model's, with one item per vertex (others would be read past
-// their end).
+// their end). The batch's attribute slots keep their storage.
 void add_attributes(Batch& b, const OglShader& shader, const Node& node, std::size_t n) {
-  b.attributes.clear();
+  thread_local ShaderInput in;
+  std::size_t used = 0;
   const unsigned version = shader.index_active_shader.get();
   const Node* nodes[2] = {shader.node(), &node};
   for (int k = 0; k < (nodes[0] == nodes[1] ? 1 : 2); ++k)
     for (const auto& o : nodes[k]->objects()) {
       const auto* e = dynamic_cast<const ShaderElement*>(o.get());
       if (!e || e->index_shader.get() != version || e->state() == ComponentState::invalid) continue;
-      ShaderInput in = e->input();
+      e->input(in);
       if (in.kind != ShaderInput::Kind::attribute || in.values.size() != n * static_cast<std::size_t>(in.width))
         continue;
-      b.attributes.push_back({e->id.get(), in.width, std::move(in.values)});
+      if (used == b.attributes.size()) b.attributes.emplace_back();
+      Batch::Attribute& a = b.attributes[used++];
+      a.name = e->id.get();
+      a.width = in.width;
+      a.values = in.values;
     }
+  b.attributes.resize(used);
 }
 
 void add_visual_model(DrawList& list, const OglModel& m, bool wireframe, const ClipSet& clip,
@@ -517,7 +548,7 @@ void gather(Node& root, DrawList& out) {
   out.texts_used = 0;
   out.overlay_rects.clear();
   out.viewports.clear();
-  out.shaders.clear();
+  out.shaders_used = 0;
   out.has_bounds = false;
   thread_local std::vector<float> scratch;
   thread_local std::vector<Deferred> deferred;

@@ -196,7 +196,8 @@ struct SceneShader {
 
 struct DrawList {
   std::vector<Batch> batches;
-  std::vector<SceneShader> shaders;  // this frame's, by first use in graph order
+  std::vector<SceneShader> shaders;  // shaders[0, shaders_used) are this frame's, by first use in graph order
+  std::size_t shaders_used = 0;
   std::vector<ExtraViewport> viewports;  // OglViewports shown, in graph order
   std::vector<Text> texts;  // texts[0, texts_used) are this frame's, drawn over the models
   std::size_t texts_used = 0;

@@ -1128,7 +1128,7 @@ void GlRenderer::draw_batch(const Batch& b, GpuBatch& g, bool upload_data) {
     glUniform1i(u_lit_, b.lit ? 1 : 0);
     glPolygonMode(GL_FRONT_AND_BACK, b.wireframe ? GL_LINE : GL_FILL);
     if (b.wireframe) set_line_width(b.line_width);
-    if (b.shader >= 0 && pass_list_ && static_cast<std::size_t>(b.shader) < pass_list_->shaders.size()) {
+    if (b.shader >= 0 && pass_list_ && static_cast<std::size_t>(b.shader) < pass_list_->shaders_used) {
       if (!scene_shaders_) scene_shaders_ = std::make_unique<SceneShaders>();
       if (scene_shaders_->bind(pass_list_->shaders[static_cast<std::size_t>(b.shader)], b, pass_view_,
                                pass_list_->lighting, g.attribute_vbo, g.attribute_capacity)) {

@@ -32,8 +32,53 @@ bool read_text(const std::string& path, std::string& out) {
 
 int location(unsigned program, const std::string& name) { return glGetUniformLocation(program, name.c_str()); }
 
-void set4(unsigned p, const std::string& name, const float* v) {
-  if (const int loc = location(p, name); loc >= 0) glUniform4fv(loc, 1, v);
+void set4(int loc, const float* v) {
+  if (loc >= 0) glUniform4fv(loc, 1, v);
+}
+
+// FNV-1a, fed piece by piece: the identity of a program or texture without building a key.
+struct Hash {
+  std::uint64_t h = 1469598103934665603ull;
+  void bytes(const void* data, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  }
+  void text(const std::string& s) {
+    bytes(s.data(), s.size());
+    const char end = '\0';  // "ab" + "c" differs from "a" + "bc"
+    bytes(&end, 1);
+  }
+  template <class T>
+  void value(const T& v) {
+    bytes(&v, sizeof v);
+  }
+};
+
+// The uniforms and samplers the scene sets are part of a program's identity: one it does not
+// set keeps the value the program was linked with (its GLSL initialiser or 0), never one set
+// for another scene drawn by this renderer before.
+std::uint64_t program_key(const SceneShader& s) {
+  Hash k;
+  for (const std::string* f : {&s.vertex_file, &s.tess_control_file, &s.tess_eval_file, &s.geometry_file,
+                               &s.fragment_file})
+    k.text(*f);
+  for (const auto& [name, value] : s.defines) k.text(name), k.text(value);
+  k.value('u');
+  for (const SceneShader::Input& u : s.uniforms) k.text(u.name), k.value(u.value.array);
+  k.value('s');
+  for (const SceneShader::Input& t : s.textures) k.text(t.name);
+  return k.h;
+}
+
+std::uint64_t texture_key(const ShaderInput& t) {
+  Hash k;
+  k.text(t.text);
+  if (t.text.empty()) {  // procedural: its size and texels
+    k.value(t.texture_width), k.value(t.texture_height);
+    k.bytes(t.values.data(), t.values.size() * sizeof(float));
+  }
+  k.value(t.repeat), k.value(t.linear);
+  return k.h;
 }
 
 // The fixed-function lights as OpenGL holds them, in eye space.
@@ -52,17 +97,10 @@ SceneShaders::~SceneShaders() {
     if (t.second) glDeleteTextures(1, &t.second);
 }
 
-unsigned SceneShaders::program_for(const SceneShader& s) {
-  // The uniforms and samplers the scene sets are part of the key: one it does not set keeps the
-  // value the program was linked with (its GLSL initialiser or 0), never one set for another
-  // scene drawn by this renderer before.
-  std::string key = s.vertex_file + '\n' + s.tess_control_file + '\n' + s.tess_eval_file + '\n' + s.geometry_file +
-                    '\n' + s.fragment_file;
-  for (const auto& [name, value] : s.defines) key += '\n' + name + '=' + value;
-  for (const SceneShader::Input& u : s.uniforms) key += "\nuniform " + u.name;
-  for (const SceneShader::Input& t : s.textures) key += "\nsampler " + t.name;
-  for (const Program& p : programs_)
-    if (p.key == key) return p.id;
+SceneShaders::Program* SceneShaders::program_for(const SceneShader& s) {
+  const std::uint64_t key = program_key(s);
+  for (Program& p : programs_)
+    if (p.key == key) return p.id ? &p : nullptr;
   Program& p = programs_.emplace_back();
   p.key = key;
   const std::string who = s.source ? s.source->describe() : std::string("OglShader");
@@ -84,7 +122,7 @@ unsigned SceneShaders::program_for(const SceneShader& s) {
     if (!read_text(*st.file, st.source)) {
       std::fprintf(stderr, "sinew: %s: cannot read %s: its models are drawn with Sinew's shading\n", who.c_str(),
                    st.file->c_str());
-      return 0;
+      return nullptr;
     }
     sources.push_back(st.source);
     tessellation |= st.stage == GlslStage::tess_control || st.stage == GlslStage::tess_eval;
@@ -95,20 +133,53 @@ unsigned SceneShaders::program_for(const SceneShader& s) {
     if (!st.file->empty()) translated.emplace_back(st.type, translate_glsl(st.source, st.stage, s.defines, version));
   std::string err;
   p.id = link_program_stages(translated, &err);
-  if (!p.id)
+  if (!p.id) {
     std::fprintf(stderr, "sinew: %s (%s, %s) does not run here: %s; its models are drawn with Sinew's shading\n",
                  who.c_str(), s.vertex_file.c_str(), s.fragment_file.c_str(), err.c_str());
-  return p.id;
+    return nullptr;
+  }
+  locate(p, s);
+  return &p;
 }
 
-unsigned SceneShaders::texture_for(const ShaderInput& t) {
-  std::string key = t.text;
-  if (key.empty()) {  // procedural: its size and texels
-    key = "procedural " + std::to_string(t.texture_width) + "x" + std::to_string(t.texture_height);
-    for (float v : t.values) key += ' ' + std::to_string(static_cast<int>(v));
+void SceneShaders::locate(Program& p, const SceneShader& s) {
+  const unsigned id = p.id;
+  const char* const matrices[7] = {"sinew_ModelViewMatrix",          "sinew_ProjectionMatrix",
+                                   "sinew_ModelViewProjectionMatrix", "sinew_ModelViewMatrixInverse",
+                                   "sinew_ModelViewMatrixTranspose",  "sinew_ModelViewMatrixInverseTranspose",
+                                   "sinew_ProjectionMatrixInverse"};
+  for (int k = 0; k < 7; ++k) p.matrices[k] = glGetUniformLocation(id, matrices[k]);
+  p.normal_matrix = glGetUniformLocation(id, "sinew_NormalMatrix");
+  p.texture_matrix = glGetUniformLocation(id, "sinew_TextureMatrix[0]");
+  for (int i = 0; i < kGlslMaxLights; ++i) {
+    Light& l = p.lights[i];
+    const std::string at = "sinew_LightSource[" + std::to_string(i) + "].";
+    l.ambient = location(id, at + "ambient");
+    l.diffuse = location(id, at + "diffuse");
+    l.specular = location(id, at + "specular");
+    l.position = location(id, at + "position");
+    l.half = location(id, at + "halfVector");
+    l.spot_direction = location(id, at + "spotDirection");
+    const char* const scalars[6] = {"spotExponent",        "spotCutoff",        "spotCosCutoff",
+                                    "constantAttenuation", "linearAttenuation", "quadraticAttenuation"};
+    for (int k = 0; k < 6; ++k) l.scalars[k] = location(id, at + scalars[k]);
+    const std::string pp = "sinew_FrontLightProduct[" + std::to_string(i) + "].";
+    l.products[0] = location(id, pp + "ambient");
+    l.products[1] = location(id, pp + "diffuse");
+    l.products[2] = location(id, pp + "specular");
   }
-  key += t.repeat ? " repeat" : " clamp";
-  key += t.linear ? " linear" : " nearest";
+  const char* const material[5] = {"emission", "ambient", "diffuse", "specular", "shininess"};
+  for (int k = 0; k < 5; ++k) p.material[k] = location(id, std::string("sinew_FrontMaterial.") + material[k]);
+  p.model_ambient = glGetUniformLocation(id, "sinew_LightModel.ambient");
+  p.scene_color = glGetUniformLocation(id, "sinew_FrontLightModelProduct.sceneColor");
+  // The scene's uniforms and samplers: a name that is not in the program gets -1 (skipped, as by OpenGL).
+  for (const SceneShader::Input& u : s.uniforms)
+    p.uniforms.push_back(location(id, u.value.array ? u.name + "[0]" : u.name));
+  for (const SceneShader::Input& t : s.textures) p.samplers.push_back(location(id, t.name));
+  p.textures.assign(s.textures.size(), {0, 0});
+}
+
+unsigned SceneShaders::texture_for(const ShaderInput& t, std::uint64_t key) {
   for (const auto& [k, id] : textures_)
     if (k == key) return id;
   unsigned id = 0;
@@ -161,31 +232,27 @@ unsigned SceneShaders::texture_for(const ShaderInput& t) {
 
 bool SceneShaders::bind(const SceneShader& s, const Batch& b, const View& view, const Lighting& lighting,
                         std::vector<unsigned>& buffers, std::vector<std::size_t>& capacity) {
-  const unsigned p = program_for(s);
-  if (!p) return false;
+  Program* found = program_for(s);  // valid until the next program is made
+  if (!found) return false;
+  Program& prog = *found;
+  const unsigned p = prog.id;
   glUseProgram(p);
 
   // Matrices: the modelview is the camera's (visual models are in world coordinates).
   const Eigen::Matrix4f& mv = view.view;
   const Eigen::Matrix4f& pr = view.projection;
-  const Eigen::Matrix4f mvp = pr * mv;
   const Eigen::Matrix4f mv_inv = mv.inverse();
-  const Eigen::Matrix3f normal = mv.topLeftCorner<3, 3>().inverse().transpose();
-  auto mat4 = [&](const char* name, const Eigen::Matrix4f& m) {
-    if (const int loc = location(p, name); loc >= 0) glUniformMatrix4fv(loc, 1, GL_FALSE, m.data());
-  };
-  mat4("sinew_ModelViewMatrix", mv);
-  mat4("sinew_ProjectionMatrix", pr);
-  mat4("sinew_ModelViewProjectionMatrix", mvp);
-  mat4("sinew_ModelViewMatrixInverse", mv_inv);
-  mat4("sinew_ModelViewMatrixTranspose", mv.transpose());
-  mat4("sinew_ModelViewMatrixInverseTranspose", mv_inv.transpose());
-  mat4("sinew_ProjectionMatrixInverse", pr.inverse());
-  if (const int loc = location(p, "sinew_NormalMatrix"); loc >= 0) glUniformMatrix3fv(loc, 1, GL_FALSE, normal.data());
-  if (const int loc = location(p, "sinew_TextureMatrix[0]"); loc >= 0) {
+  const Eigen::Matrix4f matrices[7] = {mv, pr, pr * mv, mv_inv, mv.transpose(), mv_inv.transpose(), pr.inverse()};
+  for (int k = 0; k < 7; ++k)
+    if (prog.matrices[k] >= 0) glUniformMatrix4fv(prog.matrices[k], 1, GL_FALSE, matrices[k].data());
+  if (prog.normal_matrix >= 0) {
+    const Eigen::Matrix3f normal = mv.topLeftCorner<3, 3>().inverse().transpose();
+    glUniformMatrix3fv(prog.normal_matrix, 1, GL_FALSE, normal.data());
+  }
+  if (prog.texture_matrix >= 0) {
     Eigen::Matrix4f id[4];
     for (auto& m : id) m.setIdentity();
-    glUniformMatrix4fv(loc, 4, GL_FALSE, id[0].data());
+    glUniformMatrix4fv(prog.texture_matrix, 4, GL_FALSE, id[0].data());
   }
 
   // Lights, in eye space as OpenGL stores them.
@@ -219,51 +286,47 @@ bool SceneShaders::bind(const SceneShader& s, const Batch& b, const View& view, 
   const Shading& m = b.shading;
   for (int i = 0; i < n; ++i) {
     const GlLight& l = lights[i];
-    const std::string at = "sinew_LightSource[" + std::to_string(i) + "].";
-    set4(p, at + "ambient", l.ambient);
-    set4(p, at + "diffuse", l.diffuse);
-    set4(p, at + "specular", l.specular);
-    set4(p, at + "position", l.position);
+    const Light& at = prog.lights[i];
+    set4(at.ambient, l.ambient);
+    set4(at.diffuse, l.diffuse);
+    set4(at.specular, l.specular);
+    set4(at.position, l.position);
     // OpenGL's half vector: between the light's direction and the eye's (0, 0, 1).
     Eigen::Vector3f half = Eigen::Vector3f(l.position[0], l.position[1], l.position[2]);
     if (half.norm() > 0) half.normalize();
     half += Eigen::Vector3f(0, 0, 1);
     if (half.norm() > 0) half.normalize();
     const float h[4] = {half[0], half[1], half[2], 1};
-    set4(p, at + "halfVector", h);
-    if (const int loc = location(p, at + "spotDirection"); loc >= 0) glUniform3fv(loc, 1, l.spot);
+    set4(at.half, h);
+    if (at.spot_direction >= 0) glUniform3fv(at.spot_direction, 1, l.spot);
     const float cos_cutoff = l.cutoff >= 180 ? -1.f : std::cos(l.cutoff * static_cast<float>(M_PI) / 180.f);
-    const std::pair<const char*, float> scalars[] = {{"spotExponent", l.exponent}, {"spotCutoff", l.cutoff},
-                                                      {"spotCosCutoff", cos_cutoff}, {"constantAttenuation", l.constant},
-                                                      {"linearAttenuation", l.linear}, {"quadraticAttenuation", l.quadratic}};
-    for (const auto& [name, value] : scalars)
-      if (const int loc = location(p, at + name); loc >= 0) glUniform1f(loc, value);
+    const float scalars[6] = {l.exponent, l.cutoff, cos_cutoff, l.constant, l.linear, l.quadratic};
+    for (int k = 0; k < 6; ++k)
+      if (at.scalars[k] >= 0) glUniform1f(at.scalars[k], scalars[k]);
     float prod[3][4];
     for (int k = 0; k < 4; ++k) {
       prod[0][k] = l.ambient[k] * m.ambient[k];
       prod[1][k] = l.diffuse[k] * m.diffuse[k];
       prod[2][k] = l.specular[k] * m.specular[k];
     }
-    const std::string pp = "sinew_FrontLightProduct[" + std::to_string(i) + "].";
-    set4(p, pp + "ambient", prod[0]);
-    set4(p, pp + "diffuse", prod[1]);
-    set4(p, pp + "specular", prod[2]);
+    for (int k = 0; k < 3; ++k) set4(at.products[k], prod[k]);
   }
-  set4(p, "sinew_FrontMaterial.emission", m.emissive.data());
-  set4(p, "sinew_FrontMaterial.ambient", m.ambient.data());
-  set4(p, "sinew_FrontMaterial.diffuse", m.diffuse.data());
-  set4(p, "sinew_FrontMaterial.specular", m.specular.data());
-  if (const int loc = location(p, "sinew_FrontMaterial.shininess"); loc >= 0) glUniform1f(loc, m.shininess);
-  set4(p, "sinew_LightModel.ambient", model_ambient);
+  set4(prog.material[0], m.emissive.data());
+  set4(prog.material[1], m.ambient.data());
+  set4(prog.material[2], m.diffuse.data());
+  set4(prog.material[3], m.specular.data());
+  if (prog.material[4] >= 0) glUniform1f(prog.material[4], m.shininess);
+  set4(prog.model_ambient, model_ambient);
   float scene_color[4];
   for (int k = 0; k < 3; ++k) scene_color[k] = m.emissive[k] + m.ambient[k] * model_ambient[k];
   scene_color[3] = m.diffuse[3];  // OpenGL: the alpha of the material's diffuse colour
-  set4(p, "sinew_FrontLightModelProduct.sceneColor", scene_color);
+  set4(prog.scene_color, scene_color);
 
-  // The scene's uniforms: a name that is not in the program is skipped, as by OpenGL.
-  for (const SceneShader::Input& u : s.uniforms) {
-    const ShaderInput& in = u.value;
-    const int loc = location(p, in.array ? u.name + "[0]" : u.name);
+  // The scene's uniforms (their names are part of the program's identity: same order here).
+  thread_local std::vector<int> ints;
+  for (std::size_t k = 0; k < s.uniforms.size() && k < prog.uniforms.size(); ++k) {
+    const ShaderInput& in = s.uniforms[k].value;
+    const int loc = prog.uniforms[k];
     if (loc < 0 || in.values.empty() || in.width < 1) continue;
     const GLsizei count = static_cast<GLsizei>(in.values.size() / static_cast<std::size_t>(in.width));
     if (count == 0) continue;
@@ -272,23 +335,27 @@ bool SceneShaders::bind(const SceneShader& s, const Batch& b, const View& view, 
       // as its flag, as SOFA's setMatrix4: without it the shader sees each matrix transposed.
       glUniformMatrix4fv(loc, count, in.transpose ? GL_TRUE : GL_FALSE, in.values.data());
     } else if (in.kind == ShaderInput::Kind::int_uniform) {
-      std::vector<int> iv(in.values.begin(), in.values.end());
+      ints.assign(in.values.begin(), in.values.end());
       static void (*const kSet[])(GLint, GLsizei, const GLint*) = {glUniform1iv, glUniform2iv, glUniform3iv, glUniform4iv};
-      if (in.width <= 4) kSet[in.width - 1](loc, count, iv.data());
+      if (in.width <= 4) kSet[in.width - 1](loc, count, ints.data());
     } else {
       static void (*const kSet[])(GLint, GLsizei, const GLfloat*) = {glUniform1fv, glUniform2fv, glUniform3fv,
                                                                       glUniform4fv};
       if (in.width <= 4) kSet[in.width - 1](loc, count, in.values.data());
     }
   }
-  for (const SceneShader::Input& t : s.textures) {
-    const int loc = location(p, t.name);
-    if (loc < 0 || t.value.unit >= static_cast<unsigned>(kUnits)) continue;
-    const unsigned id = texture_for(t.value);
+  for (std::size_t k = 0; k < s.textures.size() && k < prog.samplers.size(); ++k) {
+    const ShaderInput& t = s.textures[k].value;
+    const int loc = prog.samplers[k];
+    if (loc < 0 || t.unit >= static_cast<unsigned>(kUnits)) continue;
+    // The texture of this sampler, looked up again only when its input changed.
+    auto& [key, id] = prog.textures[k];
+    const std::uint64_t now = texture_key(t);
+    if (key != now || !id) key = now, id = texture_for(t, now);
     if (!id) continue;
-    glActiveTexture(GL_TEXTURE0 + kFirstUnit + t.value.unit);
+    glActiveTexture(GL_TEXTURE0 + kFirstUnit + t.unit);
     glBindTexture(GL_TEXTURE_2D, id);
-    glUniform1i(loc, kFirstUnit + static_cast<int>(t.value.unit));
+    glUniform1i(loc, kFirstUnit + static_cast<int>(t.unit));
   }
   glActiveTexture(GL_TEXTURE0);
 

@@ -12,6 +12,7 @@
 // and its models are drawn with the renderer's own shading.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,14 +40,27 @@ class SceneShaders {
   static constexpr int kUnits = 16;
 
  private:
-  struct Program {
-    std::string key;  // files and defines
-    unsigned id = 0;  // 0: failed
+  // A linked program and where its uniforms are (read once at link: a frame builds no names).
+  struct Light {
+    int ambient = -1, diffuse = -1, specular = -1, position = -1, half = -1, spot_direction = -1;
+    int scalars[6] = {-1, -1, -1, -1, -1, -1};  // exponent, cutoff, cos cutoff, attenuations
+    int products[3] = {-1, -1, -1};             // gl_FrontLightProduct ambient, diffuse, specular
   };
-  unsigned program_for(const SceneShader& s);
-  unsigned texture_for(const ShaderInput& t);
+  struct Program {
+    std::uint64_t key = 0;  // hash of the files, defines, uniform and sampler names
+    unsigned id = 0;        // 0: failed
+    int matrices[7] = {-1, -1, -1, -1, -1, -1, -1}, normal_matrix = -1, texture_matrix = -1;
+    Light lights[8];
+    int material[5] = {-1, -1, -1, -1, -1};  // emission, ambient, diffuse, specular, shininess
+    int model_ambient = -1, scene_color = -1;
+    std::vector<int> uniforms, samplers;  // by index in SceneShader::uniforms / textures
+    std::vector<std::pair<std::uint64_t, unsigned>> textures;  // (input's hash, texture) by sampler
+  };
+  Program* program_for(const SceneShader& s);  // null when it cannot run
+  void locate(Program& p, const SceneShader& s);
+  unsigned texture_for(const ShaderInput& t, std::uint64_t hash);
   std::vector<Program> programs_;
-  std::vector<std::pair<std::string, unsigned>> textures_;  // by file or procedural key
+  std::vector<std::pair<std::uint64_t, unsigned>> textures_;  // by the input's hash
 };
 
 }  // namespace sinew::render

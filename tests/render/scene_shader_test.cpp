@@ -7,6 +7,9 @@
 #include <filesystem>
 #include <fstream>
 
+#define SINEW_ALLOC_COUNTER_DECLARE_ONLY  // the counter is defined in render_test.cpp
+#include "alloc_counter.h"
+#include "render/draw_list.h"
 #include "render/gl_program.h"
 #include "render/legacy_glsl.h"
 #include "render/offscreen.h"
@@ -272,5 +275,37 @@ void main() { gl_FragColor = vec4(0.0, 1.0, 0.0, 1.0); }
     for (int x = 0; x < 200; ++x) green += img.rgb(x, y)[1] == 255 && img.rgb(x, y)[0] == 0;
   EXPECT_NEAR(green, 161 * 161, 2 * 161 * 2);  // the 2 × 2 square, ±80.5 px
 }
+
+// Gathering a scene with an OglShader (uniforms, a macro, a texture, a per-vertex attribute) a
+// second time allocates nothing: the list's shader entries and the batch's attributes keep
+// their storage.
+TEST(SceneShaderGather, ASecondFrameAllocatesNothing) {
+#if SINEW_COUNT_ALLOCATIONS
+  auto s = test::load(
+      "<Node name=\"root\"><Node name=\"n\"><OglShader fileVertexShaders=\"['" + temp_file("a.vert", kPlainVertex) +
+      "']\" fileFragmentShaders=\"['" + temp_file("a.frag", "void main() { gl_FragColor = vec4(1.0); }\n") + "']\"/>"
+      "<OglFloat4Variable id=\"tint\" value=\"0 1 0.5 1\"/><OglMatrix4VectorVariable id=\"bones\" "
+      "value=\"1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\"/><OglShaderDefineMacro id=\"LEVEL\" value=\"3\"/>"
+      "<OglTexture id=\"pattern\" proceduralTextureWidth=\"2\" proceduralTextureHeight=\"2\" "
+      "proceduralTextureData=\"0 255 255 0\"/><OglFloat3Attribute id=\"col\" value=\"1 0 0  1 0 0  0 0 1  0 0 1\"/>"
+      "<OglModel name=\"m\" position=\"-1 -1 0  1 -1 0  1 1 0  -1 1 0\" quads=\"0 1 2 3\"/></Node></Node>");
+  render::DrawList list;
+  render::gather(*s.root, list);
+  ASSERT_EQ(list.shaders_used, 1u);
+  ASSERT_EQ(list.shaders[0].uniforms.size(), 2u);
+  ASSERT_EQ(list.shaders[0].textures.size(), 1u);
+  ASSERT_EQ(list.shaders[0].defines.size(), 1u);
+  ASSERT_EQ(list.batches[0].attributes.size(), 1u);
+  render::gather(*s.root, list);
+  const long before = test::g_allocations.load();
+  render::gather(*s.root, list);
+  EXPECT_EQ(test::g_allocations.load() - before, 0);
+  EXPECT_EQ(list.shaders[0].uniforms[1].value.values.size(), 16u);
+  EXPECT_EQ(list.batches[0].attributes[0].values.size(), 12u);
+#else
+  GTEST_SKIP() << "allocations are not counted under AddressSanitizer";
+#endif
+}
+
 }  // namespace
 }  // namespace sinew

@@ -50,10 +50,11 @@ void OglShader::init() {
                 std::to_string(versions) + " shader version(s)");
 }
 
-std::string OglShader::file_of(const Field<std::vector<std::string>>& files) const {
+const std::string& OglShader::file_of(const Field<std::vector<std::string>>& files) const {
+  static const std::string none;
   const auto& list = files.get();
   const std::size_t i = index_active_shader.get();
-  return i < list.size() ? list[i] : std::string();
+  return i < list.size() ? list[i] : none;
 }
 
 namespace {
@@ -71,11 +72,10 @@ class OglShadowShader final : public OglShader {
 class OglShaderDefineMacro final : public ShaderElement {
  public:
   Field<std::string> value{this, "value", "", "value of the #define (the macro name is `id`)", "Shader"};
-  ShaderInput input() const override {
-    ShaderInput in;
+  void input(ShaderInput& in) const override {
+    in.reset();
     in.kind = ShaderInput::Kind::macro;
     in.text = value.get();
-    return in;
   }
 };
 

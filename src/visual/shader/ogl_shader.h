@@ -43,7 +43,7 @@ class OglShader : public VisualComponent {
 
   void init() override;
   // The files of the version in use (indexActiveShader); empty when the shader has none.
-  std::string file_of(const Field<std::vector<std::string>>& files) const;
+  const std::string& file_of(const Field<std::vector<std::string>>& files) const;
 };
 
 }  // namespace sinew

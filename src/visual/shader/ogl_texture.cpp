@@ -44,9 +44,9 @@ class OglTexture : public ShaderElement {
       if (f->is_set()) warn_missing_files(*this, f->name(), {f->get()});
     if (min_lod.value() > max_lod.value()) msg_warning("minLod is greater than maxLod");
   }
-  ShaderInput input() const override {
-    ShaderInput in;
-    if (!enabled.get()) return in;
+  void input(ShaderInput& in) const override {
+    in.reset();
+    if (!enabled.get()) return;
     in.kind = ShaderInput::Kind::texture;
     in.text = filename.get();
     in.unit = texture_unit.get();
@@ -57,7 +57,6 @@ class OglTexture : public ShaderElement {
       in.texture_height = static_cast<int>(procedural_height.get());
       for (unsigned v : procedural_data.get()) in.values.push_back(static_cast<float>(v));
     }
-    return in;
   }
 };
 

@@ -51,11 +51,10 @@ class OglVariable final : public ShaderElement {
  public:
   OglVariable() { value.add_alias("values"); }  // SOFA accepts both names
   Field<T> value{this, "value", zero_value<T>(), "uniform value", "Shader"};
-  ShaderInput input() const override {
-    ShaderInput in;
+  void input(ShaderInput& in) const override {
+    in.reset();
     in.kind = integer_valued<T>() ? ShaderInput::Kind::int_uniform : ShaderInput::Kind::float_uniform;
     flatten(value.get(), in);
-    return in;
   }
 };
 
@@ -88,14 +87,13 @@ class OglMatrix4VectorVariable final : public FlatShaderValue<16> {
     flat.add_alias("values");
   }
   Field<bool> transpose{this, "transpose", false, "transpose the matrices when sent to the shader", "Shader"};
-  ShaderInput input() const override {
-    ShaderInput in;
+  void input(ShaderInput& in) const override {
+    in.reset();
     in.kind = ShaderInput::Kind::matrix_uniform;
     in.width = 16;
     in.array = true;
     in.transpose = transpose.get();
     for (double d : flat.get()) in.values.push_back(static_cast<float>(d));
-    return in;
   }
 };
 
@@ -105,12 +103,11 @@ class OglAttribute final : public ShaderElement {
   Field<T> value{this, "value", T{}, "one value per vertex", "Shader"};
   Field<bool> handle_dynamic_topology{this, "handleDynamicTopology", true,
                                       "resize the values when the topology changes", "Shader"};
-  ShaderInput input() const override {
-    ShaderInput in;
+  void input(ShaderInput& in) const override {
+    in.reset();
     in.kind = ShaderInput::Kind::attribute;
     flatten(value.get(), in);
     in.array = false;
-    return in;
   }
 };
 
@@ -120,12 +117,11 @@ class OglInt4Attribute final : public FlatShaderValue<4> {
   OglInt4Attribute() : FlatShaderValue<4>("four integers per vertex") {}
   Field<bool> handle_dynamic_topology{this, "handleDynamicTopology", true,
                                       "resize the values when the topology changes", "Shader"};
-  ShaderInput input() const override {
-    ShaderInput in;
+  void input(ShaderInput& in) const override {
+    in.reset();
     in.kind = ShaderInput::Kind::attribute;
     in.width = 4;
     for (double d : flat.get()) in.values.push_back(static_cast<float>(d));
-    return in;
   }
   void parse(AttributeMap& attrs, Diagnostics& diag) override {
     FlatShaderValue<4>::parse(attrs, diag);

@@ -27,6 +27,17 @@ struct ShaderInput {
   unsigned unit = 0;
   bool repeat = false, linear = true;
   int texture_width = 0, texture_height = 0;
+  // Back to the defaults, keeping the storage of `values` and `text`.
+  void reset() {
+    kind = Kind::none;
+    width = 1;
+    array = transpose = false;
+    values.clear();
+    text.clear();
+    unit = 0;
+    repeat = false, linear = true;
+    texture_width = texture_height = 0;
+  }
 };
 
 class ShaderElement : public VisualComponent {
@@ -35,8 +46,9 @@ class ShaderElement : public VisualComponent {
   Field<unsigned> index_shader{this, "indexShader", 0u, "index of the shader version this element applies to",
                                "Shader"};
   void init() override;
-  // What it gives the shader now (links followed); none for textures (render reads them).
-  virtual ShaderInput input() const { return {}; }
+  // What it gives the shader now (links followed), written into `in` (reset first; its
+  // storage reused, so a frame that reads the same sizes again allocates nothing).
+  virtual void input(ShaderInput& in) const { in.reset(); }
 };
 
 // Warns once per listed shader or texture file that does not exist (SOFA logs
