@@ -25,6 +25,8 @@ class FixedProjectiveConstraint final : public ProjectiveConstraint {
   void project_velocity(int v, double t) override;
   void project_position(int x, double t) override {}
   bool dirichlet_indices(std::vector<std::size_t>& out) override;
+  // The fixed DoFs that exist in the state (indices filtered at init and on topology changes).
+  const std::vector<unsigned>& fixed() const { return active_; }
 
  private:
   void zero(int id);

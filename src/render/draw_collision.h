@@ -40,6 +40,10 @@ void add_springs(DrawList& list, Node& node, const DisplayFlags& flags);
 // drawSize also without; `wireframe`: showWireframe's polygon mode): draw_roi.cpp.
 void add_rois(DrawList& list, Node& node, bool behavior_models, bool wireframe);
 
+// The projective constraints of `node` that SOFA draws with showBehaviorModels:
+// draw_constraints.cpp.
+void add_constraints(DrawList& list, Node& node, const DisplayFlags& flags);
+
 // The mappings of `node` that SOFA draws with showMappings: draw_mappings.cpp.
 void add_mappings(DrawList& list, Node& node);
 

@@ -465,6 +465,7 @@ void visit(Node& node, const DisplayFlags& inherited, const ClipSet& inherited_c
   if (flags.shown(DisplayFlags::force_fields) || flags.shown(DisplayFlags::interaction_force_fields))
     add_springs(list, node, flags);
   if (flags.shown(DisplayFlags::mappings)) add_mappings(list, node);
+  add_constraints(list, node, flags);
   add_rois(list, node, flags.shown(DisplayFlags::behavior_models), flags.shown(DisplayFlags::wireframe));
 
   MechanicalState* state = node.mechanical_state;

@@ -297,5 +297,59 @@ TEST(SceneBounds, ChildNodeWithFixedBboxGivesItsBoxNotItsContent) {
   EXPECT_TRUE(list.max.isApprox(Vec3(1, 1, 1))) << list.max.transpose();
 }
 
+// FixedProjectiveConstraint under showBehaviorModels, as SOFA's draw: its fixed DoFs as
+// 10-pixel points in (1, 0.5, 0.5) (every DoF with fixAll), lit spheres of radius drawSize in
+// (1, 0.35, 0.35) when drawSize > 0; nothing with showObject off or without the flag.
+// FixedPlaneProjectiveConstraint: the points between its planes in (1, 1, 0.5).
+TEST(ConstraintDraw, FixedDofsAsPointsOrSpheres) {
+  auto scene = [](const std::string& flags, const std::string& attrs) {
+    return test::load(R"(<Node name="root"><VisualStyle displayFlags=")" + flags + R"("/>
+        <MechanicalObject position="0 0 0  1 0 0  2 0 0"/>
+        <FixedProjectiveConstraint name="c" )" + attrs + R"(/></Node>)");
+  };
+  auto batch_of = [](render::DrawList& list, const Component* c) -> const render::Batch* {
+    for (std::size_t i = 0; i < list.used; ++i)
+      if (list.batches[i].source == c) return &list.batches[i];
+    return nullptr;
+  };
+  render::DrawList list;
+  auto points = scene("showBehaviorModels", R"(indices="0 2")");
+  render::gather(*points.root, list);
+  const render::Batch* b = batch_of(list, points.root->find_object_named("c"));
+  ASSERT_TRUE(b);
+  EXPECT_EQ(b->kind, render::Batch::Kind::points);
+  EXPECT_FLOAT_EQ(b->point_size, 10.f);
+  EXPECT_FALSE(b->lit);
+  EXPECT_EQ(b->shading.diffuse, (render::Rgba{1.f, 0.5f, 0.5f, 1.f}));
+  EXPECT_EQ(b->positions, (std::vector<float>{0, 0, 0, 2, 0, 0}));
+  auto all = scene("showBehaviorModels", R"(fixAll="1")");
+  render::gather(*all.root, list);
+  ASSERT_TRUE((b = batch_of(list, all.root->find_object_named("c"))));
+  EXPECT_EQ(b->vertex_count(), 3u);
+  auto spheres = scene("showBehaviorModels", R"(indices="1" drawSize="0.25")");
+  render::gather(*spheres.root, list);
+  ASSERT_TRUE((b = batch_of(list, spheres.root->find_object_named("c"))));
+  EXPECT_EQ(b->kind, render::Batch::Kind::triangles);
+  EXPECT_TRUE(b->lit);
+  EXPECT_FLOAT_EQ(b->shading.diffuse[1], 0.35f);
+  float lo = 1e9f, hi = -1e9f;
+  for (std::size_t i = 0; i < b->positions.size(); i += 3) lo = std::min(lo, b->positions[i]), hi = std::max(hi, b->positions[i]);
+  EXPECT_NEAR(lo, 0.75f, 1e-5);
+  EXPECT_NEAR(hi, 1.25f, 1e-5);
+  auto hidden = scene("showBehaviorModels", R"(indices="0" showObject="0")");
+  render::gather(*hidden.root, list);
+  EXPECT_FALSE(batch_of(list, hidden.root->find_object_named("c")));
+  auto plane = test::load(R"(<Node name="root"><VisualStyle displayFlags="showBehaviorModels"/>
+      <MechanicalObject position="0 0 0  1 0 0  2 0 0"/>
+      <FixedPlaneProjectiveConstraint name="c" direction="1 0 0" dmin="0.5" dmax="2.5"/></Node>)");
+  render::gather(*plane.root, list);
+  ASSERT_TRUE((b = batch_of(list, plane.root->find_object_named("c"))));
+  EXPECT_EQ(b->positions, (std::vector<float>{1, 0, 0, 2, 0, 0}));
+  EXPECT_EQ(b->shading.diffuse, (render::Rgba{1.f, 1.f, 0.5f, 1.f}));
+  auto off = scene("hideBehaviorModels", R"(indices="0")");
+  render::gather(*off.root, list);
+  EXPECT_FALSE(batch_of(list, off.root->find_object_named("c")));
+}
+
 }  // namespace
 }  // namespace sinew
