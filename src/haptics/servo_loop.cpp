@@ -49,9 +49,17 @@ Registry& registry() {
 // interrupt, which a virtual machine delivers late by tens of microseconds now and then; the
 // spin absorbs that (it costs the servo's CPU a tenth of each period, the simulation runs on
 // another). With no second CPU the thread only sleeps: spinning would take the simulation's.
+// The CPUs counted are those the process may run on (its affinity), not the machine's.
+bool second_cpu() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) == 0) return CPU_COUNT(&set) > 1;
+  return std::thread::hardware_concurrency() > 1;
+}
+
 void wait_until(std::chrono::steady_clock::time_point deadline, std::chrono::steady_clock::duration period) {
   using clock = std::chrono::steady_clock;
-  static const bool spin = std::thread::hardware_concurrency() > 1;
+  static const bool spin = second_cpu();
   if (!spin) {
     std::this_thread::sleep_until(deadline);
     return;
