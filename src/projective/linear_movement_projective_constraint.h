@@ -55,6 +55,13 @@ class LinearMovementProjectiveConstraint final : public ProjectiveConstraint {
   // Keys around the current time (after the last projection): whether the
   // constraint acts, and the interpolation bounds.
   bool active() const { return found_next_ && next_t_ != prev_t_; }
+  // For drawing: the movements in use (the default one when none is given), `deriv_width()`
+  // numbers each; the positions at the first projection (`coord_width()` per DoF of the
+  // state), null before it.
+  const std::vector<double>& key_movements() const { return movement_list(); }
+  const std::vector<double>* initial_positions() const { return have_x0_ ? &x0_ : nullptr; }
+  int deriv_width() const { return w_; }
+  int coord_width() const { return cw_; }
 
  private:
   void find_key_times();

@@ -351,5 +351,41 @@ TEST(ConstraintDraw, FixedDofsAsPointsOrSpheres) {
   EXPECT_FALSE(batch_of(list, off.root->find_object_named("c")));
 }
 
+// LinearMovementProjectiveConstraint under showBehaviorModels: its DoFs as 10-pixel points;
+// with showMovement the segments between consecutive key movements, 10 pixels wide, offset
+// by each DoF's first position when relative.
+TEST(ConstraintDraw, LinearMovementPointsOrItsPath) {
+  auto scene = [](const std::string& attrs) {
+    return test::load(R"(<Node name="root" dt="0.1"><VisualStyle displayFlags="showBehaviorModels"/>
+        <EulerImplicitSolver/><CGLinearSolver iterations="10" tolerance="1e-9" threshold="1e-9"/>
+        <MechanicalObject position="0 0 0  1 0 0"/><UniformMass totalMass="1"/>
+        <LinearMovementProjectiveConstraint name="c" indices="1" keyTimes="0 1 2" movements="0 0 0  0 1 0  0 1 1" )" +
+                      attrs + R"(/></Node>)");
+  };
+  auto batch_of = [](render::DrawList& list, const Component* c) -> const render::Batch* {
+    for (std::size_t i = 0; i < list.used; ++i)
+      if (list.batches[i].source == c) return &list.batches[i];
+    return nullptr;
+  };
+  render::DrawList list;
+  auto points = scene("");
+  render::gather(*points.root, list);
+  const render::Batch* b = batch_of(list, points.root->find_object_named("c"));
+  ASSERT_TRUE(b);
+  EXPECT_EQ(b->kind, render::Batch::Kind::points);
+  EXPECT_EQ(b->positions, (std::vector<float>{1, 0, 0}));
+  auto absolute = scene(R"(showMovement="1" relativeMovements="0")");
+  render::gather(*absolute.root, list);
+  ASSERT_TRUE((b = batch_of(list, absolute.root->find_object_named("c"))));
+  EXPECT_EQ(b->kind, render::Batch::Kind::lines);
+  EXPECT_FLOAT_EQ(b->line_width, 10.f);
+  EXPECT_EQ(b->positions, (std::vector<float>{0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 1}));
+  auto relative = scene(R"(showMovement="1")");
+  animate(*relative.root);  // the first position is taken at the first projection
+  render::gather(*relative.root, list);
+  ASSERT_TRUE((b = batch_of(list, relative.root->find_object_named("c"))));
+  EXPECT_EQ(b->positions, (std::vector<float>{1, 0, 0, 1, 1, 0, 1, 1, 0, 1, 1, 1}));
+}
+
 }  // namespace
 }  // namespace sinew
