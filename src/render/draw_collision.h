@@ -28,6 +28,10 @@ inline Batch& fresh_batch(DrawList& list, const Component* source, Batch::Kind k
   b.positions.clear(), b.normals.clear(), b.colors.clear(), b.indices.clear();
   return b;
 }
+// Appends point p to the batch's positions.
+inline void push_point(Batch& b, const Vec3& p) {
+  for (int k = 0; k < 3; ++k) b.positions.push_back(static_cast<float>(p[k]));
+}
 inline void close_batch(DrawList& list, const Batch& b) {
   if (b.positions.empty()) --list.used;
   else grow_bounds(list, b.positions);

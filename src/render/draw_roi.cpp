@@ -48,10 +48,6 @@ Vec3 point_of(const FlatVec& v, std::size_t i) {
   return p;
 }
 
-void push(Batch& b, const Vec3& p) {
-  for (int k = 0; k < 3; ++k) b.positions.push_back(static_cast<float>(p[k]));
-}
-
 // A lines batch of `elements` over the points `x`, in `color`, `width` pixels: `emit(b, e, segment)`
 // draws element e with segment(b, i, j). An element naming a point beyond `x` is skipped (a
 // stale selection).
@@ -59,7 +55,7 @@ template <class Elements, class Emit>
 void add_element_lines(DrawList& list, const Component& source, const FlatVec& x, const Elements& elements,
                        const Rgba& color, float width, Emit&& emit) {
   const std::size_t n = x.size();
-  auto segment = [&](Batch& b, unsigned i, unsigned j) { push(b, point_of(x, i)), push(b, point_of(x, j)); };
+  auto segment = [&](Batch& b, unsigned i, unsigned j) { push_point(b, point_of(x, i)), push_point(b, point_of(x, j)); };
   Batch& b = fresh_batch(list, &source, Batch::Kind::lines);
   unlit(b, color, width);
   for (const auto& e : elements) {
@@ -79,7 +75,7 @@ void add_filled_triangles(DrawList& list, const Component& source, const FlatVec
   b.wireframe = wireframe;  // the polygon mode showWireframe set
   for (const Triangle& t : triangles)
     if (t[0] < n && t[1] < n && t[2] < n)
-      for (unsigned v : t) push(b, point_of(x, v));
+      for (unsigned v : t) push_point(b, point_of(x, v));
   close_batch(list, b);
 }
 
@@ -120,7 +116,7 @@ void add_box_region(DrawList& list, const BoxROI& roi, float width) {
                                         {6, 7}, {6, 5}, {4, 5}, {4, 7}, {1, 5}, {3, 7}};
   for (const VecN<10>& box : roi.oriented_box.get()) {
     const auto p = oriented_corners(box);
-    for (const auto& e : kEdges) push(b, p[static_cast<std::size_t>(e[0])]), push(b, p[static_cast<std::size_t>(e[1])]);
+    for (const auto& e : kEdges) push_point(b, p[static_cast<std::size_t>(e[0])]), push_point(b, p[static_cast<std::size_t>(e[1])]);
   }
   close_batch(list, b);
 }
@@ -161,7 +157,7 @@ void add_mesh_region(DrawList& list, const MeshROI& roi, float size, bool wirefr
   if (roi.draw_points.get()) {
     Batch& b = fresh_batch(list, &roi, Batch::Kind::points);
     unlit(b, Rgba{0.4f, 0.4f, 1.f, 1.f}, size);
-    for (std::size_t i = 0; i < x.size(); ++i) push(b, point_of(x, i));
+    for (std::size_t i = 0; i < x.size(); ++i) push_point(b, point_of(x, i));
     close_batch(list, b);
   }
   if (roi.draw_edges.get()) add_element_lines(list, roi, x, roi.roi_edges.get(), kSelected, size, kEdge);
@@ -192,9 +188,9 @@ void add_plane_roi(DrawList& list, const PlaneROI& roi, bool wireframe) {
       const std::array<Vec3, 4> face{a, c, d, a + (d - c)};
       for (std::size_t i = 0; i < 4; ++i) {
         const Vec3 &from = face[i], &to = face[(i + 1) % 4];
-        push(b, from - half), push(b, to - half);  // the face below
-        push(b, from + half), push(b, to + half);  // the face above
-        push(b, from - half), push(b, from + half);
+        push_point(b, from - half), push_point(b, to - half);  // the face below
+        push_point(b, from + half), push_point(b, to + half);  // the face above
+        push_point(b, from - half), push_point(b, from + half);
       }
     }
     close_batch(list, b);
@@ -204,7 +200,7 @@ void add_plane_roi(DrawList& list, const PlaneROI& roi, bool wireframe) {
     Batch& b = fresh_batch(list, &roi, Batch::Kind::points);
     unlit(b, kRegion, 5.f);
     const FlatVec& in = roi.points_in_roi.get();
-    for (std::size_t i = 0; i < in.size(); ++i) push(b, point_of(in, i));
+    for (std::size_t i = 0; i < in.size(); ++i) push_point(b, point_of(in, i));
     close_batch(list, b);
   }
   if (roi.draw_edges.get()) add_element_lines(list, roi, x, roi.edges_in_roi.get(), kRegion, size, kEdge);
@@ -229,7 +225,7 @@ void add_proximity_roi(DrawList& list, const ProximityROI& roi) {
   if (roi.draw_points.get()) {
     Batch& b = fresh_batch(list, &roi, Batch::Kind::points);
     unlit(b, kRegion, 5.f);
-    for (const Vec3& p : roi.points_in_roi.get()) push(b, p);
+    for (const Vec3& p : roi.points_in_roi.get()) push_point(b, p);
     close_batch(list, b);
   }
 }
@@ -249,7 +245,7 @@ void add_pair_box_roi(DrawList& list, const PairBoxROI& roi) {
     Batch& b = fresh_batch(list, &roi, Batch::Kind::points);
     unlit(b, kSelected, size);
     const FlatVec& in = roi.points_in_roi.get();
-    for (std::size_t i = 0; i < in.size(); ++i) push(b, point_of(in, i));
+    for (std::size_t i = 0; i < in.size(); ++i) push_point(b, point_of(in, i));
     close_batch(list, b);
   }
 }
@@ -268,7 +264,7 @@ void add_roi(DrawList& list, const BaseROI& roi, bool wireframe) {
     unlit(b, kSelected, size);
     const FlatVec& in = roi.points_in_roi.get();
     if (in.width == x.width)
-      for (std::size_t i = 0; i < in.size(); ++i) push(b, point_of(in, i));
+      for (std::size_t i = 0; i < in.size(); ++i) push_point(b, point_of(in, i));
     close_batch(list, b);
   }
   if (roi.draw_edges.get()) add_element_lines(list, roi, x, roi.edges_in_roi.get(), kSelected, size, kEdge);
