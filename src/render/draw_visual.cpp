@@ -220,7 +220,7 @@ void add_point_splats(DrawList& list, const PointSplatModel& ps, Node& node) {
 
 // OglFluidModel: its particles and the Data of its screen-space surface (render/fluid_surface.h).
 void add_fluid(DrawList& list, const OglFluidModel& fm) {
-  if (fm.state() != ComponentState::valid) return;
+  if (!fm.enable.get() || fm.state() != ComponentState::valid) return;
   const std::vector<Vec3>& x = fm.position.get();
   if (x.empty()) return;
   Batch& b = fresh_batch(list, &fm, Batch::Kind::points);

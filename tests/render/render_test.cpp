@@ -791,6 +791,12 @@ TEST_F(RenderTest, OglFluidModelDrawsSofasScreenSpaceSurface) {
   const auto square_only = render(*under.root).rgb(off, 100), behind = render(*back.root).rgb(off, 100);
   for (int c : {0, 1}) EXPECT_NEAR(behind[c], 0.8 * square_only[c] + 255 * 0.2 * 0.8, 3) << c;
 
+  // enable="0" (VisualModel's): not drawn.
+  auto disabled = test::load("<Node name=\"root\">" + camera + fluid("0 0 0", "spriteThickness=\"1\" enable=\"0\"") + "</Node>");
+  render::DrawList list;
+  render::gather(*disabled.root, list);
+  EXPECT_EQ(list.used, 0u);
+
   // debugFBO 0: the thickness target over the whole view (cleared to (0, 1, 1) where empty).
   auto debug = test::load("<Node name=\"root\">" + camera + fluid("0 0 0", "spriteThickness=\"0.2\" debugFBO=\"0\"") + "</Node>");
   const Image d = render(*debug.root);

@@ -13,6 +13,7 @@ namespace sinew {
 
 class OglFluidModel final : public VisualComponent {
  public:
+  Field<bool> enable{this, "enable", true, "display the object or not", "Visualization"};
   Field<std::vector<Vec3>> position{this, "position", {}, "particle positions (usually linked to a state)",
                                     "Vector", "length"};
   Field<unsigned> debug_fbo{this, "debugFBO", 9u, "render pass shown for debugging (9: final picture)",
