@@ -406,29 +406,7 @@ void clip_distances(bool on) {
 
 // A linked program of the two shaders; 0 with *error.
 unsigned link(const char* vertex, const char* fragment, std::string* error) {
-  const unsigned vs = compile(GL_VERTEX_SHADER, vertex, error);
-  if (!vs) return 0;
-  const unsigned fs = compile(GL_FRAGMENT_SHADER, fragment, error);
-  if (!fs) {
-    glDeleteShader(vs);
-    return 0;
-  }
-  const unsigned p = glCreateProgram();
-  glAttachShader(p, vs);
-  glAttachShader(p, fs);
-  glLinkProgram(p);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(p, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[1024] = {};
-    glGetProgramInfoLog(p, sizeof log, nullptr, log);
-    if (error) *error = std::string("shader link failed: ") + log;
-    glDeleteProgram(p);
-    return 0;
-  }
-  return p;
+  return link_program_stages({{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, error);
 }
 
 }  // namespace
