@@ -353,13 +353,8 @@ void main() {
 )";
 
 // BackgroundSetting's image as SofaGLFWWindow::drawBackgroundImage lays it: tiled at its own
-// pixel size from the bottom-left, through glOrtho(-0.5, width, -0.5, height), repeated.
-const char* kBackgroundVertexShader = R"(#version 330 core
-void main() {
-  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
+// pixel size from the bottom-left, through glOrtho(-0.5, width, -0.5, height), repeated (drawn
+// on the composition's triangle over the viewport, kOitVertexShader).
 const char* kBackgroundFragmentShader = R"(#version 330 core
 uniform sampler2D u_image;
 uniform vec2 u_viewport;  // pixels
@@ -966,7 +961,7 @@ void GlRenderer::draw_background_image(const std::string& file, int x, int y, in
   if (!texture) return;  // unreadable (said once): the colour stays
   if (!background_program_) {
     std::string err;
-    background_program_ = link(kBackgroundVertexShader, kBackgroundFragmentShader, &err);
+    background_program_ = link(kOitVertexShader, kBackgroundFragmentShader, &err);
     if (!background_program_) {
       std::fprintf(stderr, "sinew: the background image cannot be drawn: %s\n", err.c_str());
       return;
