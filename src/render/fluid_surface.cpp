@@ -4,6 +4,7 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -69,65 +70,50 @@ void main() {
 }
 )";
 
-// Bilateral blur of a depth texture along u_direction; the blurred depth is the fragment's,
-// its colour the linearised depth (what debugFBO 2 and 3 show).
-const char* kBlurDepthFragment = R"(#version 330 core
+// Bilateral blur along u_direction over ±u_taps texels (SOFA's spriteBlurRadius), one body for
+// both inputs. DEPTH: the input is a depth texture, empty pixels (depth 1) are discarded, the
+// blurred depth is the fragment's and its colour the linearised depth (what debugFBO 2 and 3
+// show); else the input is the thickness, blurred everywhere. The taps are read with texelFetch
+// at whole texels, clamped to the edges: SOFA's loop samples the texel centres of a linearly
+// filtered texture, the same values, which a software renderer filters at four times the cost.
+// Spatial weight exp(−(x·scale)²), x in texture units; range weight exp(−(Δ·falloff)²).
+const char* kBlurFragment = R"(
 uniform sampler2D u_input;
-uniform vec2 u_size;
-uniform vec2 u_direction;
-uniform float u_radius;
+uniform ivec2 u_direction;
+uniform int u_taps;
+uniform float u_texel;
 uniform float u_scale;
 uniform float u_falloff;
 uniform float u_near;
 uniform float u_far;
-in vec2 v_uv;
 out vec4 frag_color;
 void main() {
-  float centre = texture(u_input, v_uv).x;
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  ivec2 last = textureSize(u_input, 0) - 1;
+  float centre = texelFetch(u_input, p, 0).x;
+#ifdef DEPTH
   if (centre > 0.999) discard;
-  float texel = u_direction.x > 0.5 ? 1.0 / u_size.x : 1.0 / u_size.y;
-  float reach = u_radius * texel;
+#endif
   float sum = 0.0, weights = 0.0;
-  for (float x = -reach; x <= reach; x += texel) {
-    float s = texture(u_input, v_uv + x * u_direction).x;
-    float spatial = x * u_scale, range = (s - centre) * u_falloff;
+  for (int k = -u_taps; k <= u_taps; ++k) {
+    float s = texelFetch(u_input, clamp(p + k * u_direction, ivec2(0), last), 0).x;
+    float spatial = float(k) * u_texel * u_scale, range = (s - centre) * u_falloff;
     float w = exp(-spatial * spatial) * exp(-range * range);
     sum += s * w;
     weights += w;
   }
   if (weights > 0.0) sum /= weights;
+#ifdef DEPTH
   gl_FragDepth = sum;
   float linear = 2.0 * u_near / (u_far + u_near - sum * (u_far - u_near));
   frag_color = vec4(linear, linear, linear, 1.0);
-}
-)";
-
-// The same blur of the thickness (a colour texture), nothing discarded.
-const char* kBlurThicknessFragment = R"(#version 330 core
-uniform sampler2D u_input;
-uniform vec2 u_size;
-uniform vec2 u_direction;
-uniform float u_radius;
-uniform float u_scale;
-uniform float u_falloff;
-in vec2 v_uv;
-out vec4 frag_color;
-void main() {
-  float centre = texture(u_input, v_uv).x;
-  float texel = u_direction.x > 0.5 ? 1.0 / u_size.x : 1.0 / u_size.y;
-  float reach = u_radius * texel;
-  float sum = 0.0, weights = 0.0;
-  for (float x = -reach; x <= reach; x += texel) {
-    float s = texture(u_input, v_uv + x * u_direction).x;
-    float spatial = x * u_scale, range = (s - centre) * u_falloff;
-    float w = exp(-spatial * spatial) * exp(-range * range);
-    sum += s * w;
-    weights += w;
-  }
-  if (weights > 0.0) sum /= weights;
+#else
   frag_color = vec4(sum, sum, sum, 1.0);
+#endif
 }
 )";
+const std::string kBlurDepthFragment = std::string("#version 330 core\n#define DEPTH 1\n") + kBlurFragment;
+const std::string kBlurThicknessFragment = std::string("#version 330 core\n") + kBlurFragment;
 
 // Eye-space positions of the blurred depth (its [0, 1] value taken as NDC z, as SOFA) and the
 // surface normal from the one-sided differences of smaller depth change.
@@ -216,6 +202,47 @@ void bind_input(int slot, unsigned texture) {
 
 int at(unsigned program, const char* name) { return glGetUniformLocation(program, name); }
 
+using Rect = FluidSurface::Rect;
+
+Rect unite(const Rect& a, const Rect& b) {
+  if (a.empty()) return b;
+  if (b.empty()) return a;
+  return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
+// `r` grown by (dx, dy) pixels on each side, within the width × height picture.
+Rect grow(const Rect& r, int dx, int dy, int width, int height) {
+  if (r.empty()) return r;
+  return {std::max(r.x0 - dx, 0), std::max(r.y0 - dy, 0), std::min(r.x1 + dx, width), std::min(r.y1 + dy, height)};
+}
+
+void scissor_to(const Rect& r) { glScissor(r.x0, r.y0, std::max(r.x1 - r.x0, 0), std::max(r.y1 - r.y0, 0)); }
+
+// The pixels the sprite vertex shader's points cover, with two pixels to spare for the
+// rasteriser's rounding: a point's size is radius · scale / |(eye, 1)| pixels (at least one, as
+// GL clamps it) around its window position. Points with clip w ≤ 0 are clipped by GL and left
+// out; anything not finite gives the whole picture.
+Rect sprite_pixels(const float* p, int count, const View& view, float radius, float scale, int width, int height) {
+  const Rect all{0, 0, width, height};
+  float x0 = static_cast<float>(width), y0 = static_cast<float>(height), x1 = 0.f, y1 = 0.f;
+  for (int i = 0; i < count; ++i) {
+    const Eigen::Vector4f eye = view.view * Eigen::Vector4f(p[3 * i], p[3 * i + 1], p[3 * i + 2], 1.f);
+    const Eigen::Vector4f clip = view.projection * eye;
+    if (clip.w() <= 0.f) continue;
+    const float half = 0.5f * std::max(radius * scale / eye.norm(), 1.f) + 2.f;
+    const float cx = (0.5f * clip.x() / clip.w() + 0.5f) * static_cast<float>(width);
+    const float cy = (0.5f * clip.y() / clip.w() + 0.5f) * static_cast<float>(height);
+    if (!std::isfinite(half) || !std::isfinite(cx) || !std::isfinite(cy)) return all;
+    x0 = std::min(x0, cx - half), x1 = std::max(x1, cx + half);
+    y0 = std::min(y0, cy - half), y1 = std::max(y1, cy + half);
+  }
+  // Clamped as floats first: a point far outside must not overflow the conversion.
+  auto clamp = [](float v, int hi) { return static_cast<int>(std::clamp(v, 0.f, static_cast<float>(hi))); };
+  Rect r{clamp(std::floor(x0), width), clamp(std::floor(y0), height), clamp(std::ceil(x1), width),
+         clamp(std::ceil(y1), height)};
+  return r.empty() ? Rect{} : r;
+}
+
 }  // namespace
 
 FluidSurface::~FluidSurface() {
@@ -244,9 +271,9 @@ bool FluidSurface::make(int width, int height) {
       const char* fragment;
     };
     const Source sources[] = {{&sprite_, kSpriteVertex, kSpriteFragment},
-                              {&blur_depth_, kFullScreenVertex, kBlurDepthFragment},
+                              {&blur_depth_, kFullScreenVertex, kBlurDepthFragment.c_str()},
                               {&normals_, kFullScreenVertex, kNormalsFragment},
-                              {&blur_thickness_, kFullScreenVertex, kBlurThicknessFragment},
+                              {&blur_thickness_, kFullScreenVertex, kBlurThicknessFragment.c_str()},
                               {&shade_, kFullScreenVertex, kShadeFragment},
                               {&over_, kFullScreenVertex, kCompositeFragment},
                               {&show_, kFullScreenVertex, kShowFragment}};
@@ -300,7 +327,21 @@ bool FluidSurface::make(int width, int height) {
   }
   glBindTexture(GL_TEXTURE_2D, 0);
   width_ = width, height_ = height;
+  for (Rect& w : written_) w = Rect{0, 0, width, height};  // undefined until first cleared
   return true;
+}
+
+void FluidSurface::start(int target, float red, bool grey, Rect r) {
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_[target].fbo);
+  const Rect dirty = unite(written_[target], r);
+  if (!dirty.empty()) {
+    scissor_to(dirty);
+    const float other = grey ? red : 1.f;
+    glClearColor(red, other, other, 1.f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
+  scissor_to(r);
+  written_[target] = r;
 }
 
 void FluidSurface::full_screen(unsigned program) {
@@ -309,7 +350,8 @@ void FluidSurface::full_screen(unsigned program) {
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-bool FluidSurface::render(unsigned vao, int count, const FluidLook& look, const View& view, int width, int height) {
+bool FluidSurface::render(unsigned vao, const float* positions, int count, const FluidLook& look, const View& view,
+                          int width, int height) {
   if (failed_ || count <= 0 || width <= 0 || height <= 0) return false;
   if (!make(width, height)) {
     failed_ = true;
@@ -326,17 +368,23 @@ bool FluidSurface::render(unsigned vao, int count, const FluidLook& look, const 
   const float scale = static_cast<float>(width) / std::tan(65.f * (static_cast<float>(M_PI_2) / 180.f));
   const float size[2] = {static_cast<float>(width), static_cast<float>(height)};
 
+  // The sprites' pixels; the thickness blurs reach spriteBlurRadius texels (and one more for
+  // the loop's rounding) beyond what they read: across, then along.
+  sprites_ = sprite_pixels(positions, count, view, look.radius, scale, width, height);
+  // Whole texels of the blur (the picture's size at most: a hostile radius must not make the
+  // loop endless); the reach keeps one texel to spare.
+  const float taps_f = std::clamp(std::floor(look.blur_radius), 0.f, static_cast<float>(std::max(width, height)));
+  const int taps = std::isfinite(taps_f) ? static_cast<int>(taps_f) : 0;
+  const int reach = taps + 1;
+  const Rect across = grow(sprites_, reach, 2 * reach, width, height);
+  const Rect along = grow(sprites_, reach, reach, width, height);
+
   glViewport(0, 0, width, height);
-  glDisable(GL_SCISSOR_TEST);
+  glEnable(GL_SCISSOR_TEST);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-  auto start = [&](int target, float red) {
-    glBindFramebuffer(GL_FRAMEBUFFER, targets_[target].fbo);
-    glClearColor(red, 1.f, 1.f, 1.f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  };
   glUseProgram(sprite_);
   glUniformMatrix4fv(at(sprite_, "u_view"), 1, GL_FALSE, view.view.data());
   glUniformMatrix4fv(at(sprite_, "u_proj"), 1, GL_FALSE, proj.data());
@@ -345,7 +393,7 @@ bool FluidSurface::render(unsigned vao, int count, const FluidLook& look, const 
   glUniform1f(at(sprite_, "u_scale"), scale);
   glBindVertexArray(vao);
   // 0: thicknesses added up, no depth test.
-  start(kThickness, 0.f);
+  start(kThickness, 0.f, false, sprites_);
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
@@ -353,16 +401,16 @@ bool FluidSurface::render(unsigned vao, int count, const FluidLook& look, const 
   glDrawArrays(GL_POINTS, 0, count);
   glDisable(GL_BLEND);
   // 1: the nearest sphere.
-  start(kDepth, 1.f);
+  start(kDepth, 1.f, false, sprites_);
   glEnable(GL_DEPTH_TEST);
   glDrawArrays(GL_POINTS, 0, count);
 
-  auto blur = [&](unsigned program, int target, unsigned input, float dx, float dy) {
-    start(target, 1.f);
+  auto blur = [&](unsigned program, int target, unsigned input, int dx, int dy, Rect r) {
+    start(target, program == blur_thickness_ ? 0.f : 1.f, true, r);
     glUseProgram(program);
-    glUniform2fv(at(program, "u_size"), 1, size);
-    glUniform2f(at(program, "u_direction"), dx, dy);
-    glUniform1f(at(program, "u_radius"), look.blur_radius);
+    glUniform2i(at(program, "u_direction"), dx, dy);
+    glUniform1i(at(program, "u_taps"), taps);
+    glUniform1f(at(program, "u_texel"), 1.f / size[dx ? 0 : 1]);
     glUniform1f(at(program, "u_scale"), look.blur_scale);
     glUniform1f(at(program, "u_falloff"), look.blur_falloff);
     glUniform1f(at(program, "u_near"), z_near);
@@ -371,20 +419,20 @@ bool FluidSurface::render(unsigned vao, int count, const FluidLook& look, const 
     full_screen(program);
   };
   // 2, 3: depth blurred across then along.
-  blur(blur_depth_, kBlurDepthAcross, targets_[kDepth].depth, 1.f, 0.f);
-  blur(blur_depth_, kBlurDepthAlong, targets_[kBlurDepthAcross].depth, 0.f, 1.f);
+  blur(blur_depth_, kBlurDepthAcross, targets_[kDepth].depth, 1, 0, sprites_);
+  blur(blur_depth_, kBlurDepthAlong, targets_[kBlurDepthAcross].depth, 0, 1, sprites_);
   // 4: normals (the inverse projection as is).
-  start(kNormals, 1.f);
+  start(kNormals, 1.f, false, sprites_);
   glUseProgram(normals_);
   glUniform2fv(at(normals_, "u_size"), 1, size);
   glUniformMatrix4fv(at(normals_, "u_inv_proj"), 1, GL_FALSE, inv_proj.data());
   bind_input(0, targets_[kBlurDepthAlong].depth);
   full_screen(normals_);
   // 5, 6: thickness blurred across then along.
-  blur(blur_thickness_, kBlurThicknessAcross, targets_[kThickness].color, 1.f, 0.f);
-  blur(blur_thickness_, kBlurThicknessAlong, targets_[kBlurThicknessAcross].color, 0.f, 1.f);
+  blur(blur_thickness_, kBlurThicknessAcross, targets_[kThickness].color, 1, 0, across);
+  blur(blur_thickness_, kBlurThicknessAlong, targets_[kBlurThicknessAcross].color, 0, 1, along);
   // 7: shading (SOFA hands this pass the inverse projection transposed).
-  start(kShade, 1.f);
+  start(kShade, 1.f, false, sprites_);
   glUseProgram(shade_);
   glUniformMatrix4fv(at(shade_, "u_inv_proj"), 1, GL_TRUE, inv_proj.data());
   glUniform4fv(at(shade_, "u_color"), 1, look.color.data());
@@ -414,8 +462,10 @@ void FluidSurface::draw_debug(unsigned debug) {
   glEnable(GL_DEPTH_TEST);
 }
 
-void FluidSurface::composite() {
+void FluidSurface::composite(int x, int y) {
   if (width_ == 0) return;
+  glEnable(GL_SCISSOR_TEST);
+  scissor_to(Rect{x + sprites_.x0, y + sprites_.y0, x + sprites_.x1, y + sprites_.y1});
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -429,6 +479,7 @@ void FluidSurface::composite() {
   glActiveTexture(GL_TEXTURE0);
   glBindVertexArray(0);
   glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
 }
 
 }  // namespace sinew::render

@@ -399,6 +399,21 @@ void clip_distances(bool on) {
   for (int k = 0; k < Batch::kClipPlanes; ++k) (on ? glEnable : glDisable)(GL_CLIP_DISTANCE0 + k);
 }
 
+// The scissor test's state and box, kept across passes that set their own.
+struct Scissor {
+  GLboolean on;
+  GLint box[4];
+};
+Scissor save_scissor() {
+  Scissor s{glIsEnabled(GL_SCISSOR_TEST), {}};
+  glGetIntegerv(GL_SCISSOR_BOX, s.box);
+  return s;
+}
+void restore_scissor(const Scissor& s) {
+  glScissor(s.box[0], s.box[1], s.box[2], s.box[3]);
+  (s.on ? glEnable : glDisable)(GL_SCISSOR_TEST);
+}
+
 // A linked program of the two shaders; 0 with *error.
 unsigned link(const char* vertex, const char* fragment, std::string* error) {
   return link_program_stages({{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, error);
@@ -893,7 +908,9 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
       FluidSurface& f = *fluids_[fluids++];
       if (b.fluid.debug > 7) {
         clip_distances(false);
-        f.composite();
+        const Scissor scissor = save_scissor();
+        f.composite(x, y);
+        restore_scissor(scissor);
         glUseProgram(program_);
         clip_distances(true);
       }
@@ -940,15 +957,16 @@ void GlRenderer::draw_fluid(const Batch& b, GpuBatch& g, std::size_t k, const Vi
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
   glEnableVertexAttribArray(0);
   // The passes change the framebuffer, viewport, scissor, clear colour and program.
-  const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+  const Scissor scissor = save_scissor();
   float clear[4];
   glGetFloatv(GL_COLOR_CLEAR_VALUE, clear);
   clip_distances(false);  // the passes' shaders write no gl_ClipDistance
   FluidSurface& f = *fluids_[k];
-  const bool drawn = f.render(g.vao, static_cast<int>(b.vertex_count()), b.fluid, view, width, height);
+  const bool drawn =
+      f.render(g.vao, b.positions.data(), static_cast<int>(b.vertex_count()), b.fluid, view, width, height);
   glBindFramebuffer(GL_FRAMEBUFFER, pass_fbo_);
   glViewport(x, y, width, height);
-  if (scissor) glEnable(GL_SCISSOR_TEST);
+  restore_scissor(scissor);
   glClearColor(clear[0], clear[1], clear[2], clear[3]);
   if (drawn) f.draw_debug(b.fluid.debug);  // OglFluidModel::doDrawVisual's debugFBO 0 to 6
   glEnable(GL_DEPTH_TEST);

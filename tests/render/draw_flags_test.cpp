@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 
+#include "constraint/model/unilateral_lagrangian_constraint.h"
 #include "render/draw_collision.h"
 #include "render/offscreen.h"
 #include "gl_skip.h"
@@ -31,6 +32,13 @@ std::string square_scene(const std::string& flags, const std::string& model_attr
         <TriangleCollisionModel )" + model_attrs + R"(/>
       </Node>
     </Node>)";
+}
+
+// Batch `nth` (0: the first) that component `c` added to the list, or null.
+const render::Batch* drawn_by(const render::DrawList& list, const Component* c, int nth = 0) {
+  for (std::size_t i = 0; i < list.used; ++i)
+    if (list.batches[i].source == c && nth-- == 0) return &list.batches[i];
+  return nullptr;
 }
 
 TEST(CollisionColor, SofaDefaultsTellSimulatedMovingActiveApart) {
@@ -307,15 +315,10 @@ TEST(ConstraintDraw, FixedDofsAsPointsOrSpheres) {
         <MechanicalObject position="0 0 0  1 0 0  2 0 0"/>
         <FixedProjectiveConstraint name="c" )" + attrs + R"(/></Node>)");
   };
-  auto batch_of = [](render::DrawList& list, const Component* c) -> const render::Batch* {
-    for (std::size_t i = 0; i < list.used; ++i)
-      if (list.batches[i].source == c) return &list.batches[i];
-    return nullptr;
-  };
   render::DrawList list;
   auto points = scene("showBehaviorModels", R"(indices="0 2")");
   render::gather(*points.root, list);
-  const render::Batch* b = batch_of(list, points.root->find_object_named("c"));
+  const render::Batch* b = drawn_by(list, points.root->find_object_named("c"));
   ASSERT_TRUE(b);
   EXPECT_EQ(b->kind, render::Batch::Kind::points);
   EXPECT_FLOAT_EQ(b->point_size, 10.f);
@@ -324,11 +327,11 @@ TEST(ConstraintDraw, FixedDofsAsPointsOrSpheres) {
   EXPECT_EQ(b->positions, (std::vector<float>{0, 0, 0, 2, 0, 0}));
   auto all = scene("showBehaviorModels", R"(fixAll="1")");
   render::gather(*all.root, list);
-  ASSERT_TRUE((b = batch_of(list, all.root->find_object_named("c"))));
+  ASSERT_TRUE((b = drawn_by(list, all.root->find_object_named("c"))));
   EXPECT_EQ(b->vertex_count(), 3u);
   auto spheres = scene("showBehaviorModels", R"(indices="1" drawSize="0.25")");
   render::gather(*spheres.root, list);
-  ASSERT_TRUE((b = batch_of(list, spheres.root->find_object_named("c"))));
+  ASSERT_TRUE((b = drawn_by(list, spheres.root->find_object_named("c"))));
   EXPECT_EQ(b->kind, render::Batch::Kind::triangles);
   EXPECT_TRUE(b->lit);
   EXPECT_FLOAT_EQ(b->shading.diffuse[1], 0.35f);
@@ -338,17 +341,17 @@ TEST(ConstraintDraw, FixedDofsAsPointsOrSpheres) {
   EXPECT_NEAR(hi, 1.25f, 1e-5);
   auto hidden = scene("showBehaviorModels", R"(indices="0" showObject="0")");
   render::gather(*hidden.root, list);
-  EXPECT_FALSE(batch_of(list, hidden.root->find_object_named("c")));
+  EXPECT_FALSE(drawn_by(list, hidden.root->find_object_named("c")));
   auto plane = test::load(R"(<Node name="root"><VisualStyle displayFlags="showBehaviorModels"/>
       <MechanicalObject position="0 0 0  1 0 0  2 0 0"/>
       <FixedPlaneProjectiveConstraint name="c" direction="1 0 0" dmin="0.5" dmax="2.5"/></Node>)");
   render::gather(*plane.root, list);
-  ASSERT_TRUE((b = batch_of(list, plane.root->find_object_named("c"))));
+  ASSERT_TRUE((b = drawn_by(list, plane.root->find_object_named("c"))));
   EXPECT_EQ(b->positions, (std::vector<float>{1, 0, 0, 2, 0, 0}));
   EXPECT_EQ(b->shading.diffuse, (render::Rgba{1.f, 1.f, 0.5f, 1.f}));
   auto off = scene("hideBehaviorModels", R"(indices="0")");
   render::gather(*off.root, list);
-  EXPECT_FALSE(batch_of(list, off.root->find_object_named("c")));
+  EXPECT_FALSE(drawn_by(list, off.root->find_object_named("c")));
 }
 
 // LinearMovementProjectiveConstraint under showBehaviorModels: its DoFs as 10-pixel points;
@@ -362,29 +365,193 @@ TEST(ConstraintDraw, LinearMovementPointsOrItsPath) {
         <LinearMovementProjectiveConstraint name="c" indices="1" keyTimes="0 1 2" movements="0 0 0  0 1 0  0 1 1" )" +
                       attrs + R"(/></Node>)");
   };
-  auto batch_of = [](render::DrawList& list, const Component* c) -> const render::Batch* {
-    for (std::size_t i = 0; i < list.used; ++i)
-      if (list.batches[i].source == c) return &list.batches[i];
-    return nullptr;
-  };
   render::DrawList list;
   auto points = scene("");
   render::gather(*points.root, list);
-  const render::Batch* b = batch_of(list, points.root->find_object_named("c"));
+  const render::Batch* b = drawn_by(list, points.root->find_object_named("c"));
   ASSERT_TRUE(b);
   EXPECT_EQ(b->kind, render::Batch::Kind::points);
   EXPECT_EQ(b->positions, (std::vector<float>{1, 0, 0}));
   auto absolute = scene(R"(showMovement="1" relativeMovements="0")");
   render::gather(*absolute.root, list);
-  ASSERT_TRUE((b = batch_of(list, absolute.root->find_object_named("c"))));
+  ASSERT_TRUE((b = drawn_by(list, absolute.root->find_object_named("c"))));
   EXPECT_EQ(b->kind, render::Batch::Kind::lines);
   EXPECT_FLOAT_EQ(b->line_width, 10.f);
   EXPECT_EQ(b->positions, (std::vector<float>{0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 1}));
   auto relative = scene(R"(showMovement="1")");
   animate(*relative.root);  // the first position is taken at the first projection
   render::gather(*relative.root, list);
-  ASSERT_TRUE((b = batch_of(list, relative.root->find_object_named("c"))));
+  ASSERT_TRUE((b = drawn_by(list, relative.root->find_object_named("c"))));
   EXPECT_EQ(b->positions, (std::vector<float>{1, 0, 0, 1, 1, 0, 1, 1, 0, 1, 1, 1}));
+}
+
+
+// Point, Line, Plane and Direction projective constraints draw as FixedProjectiveConstraint:
+// 10-pixel points of their DoFs (every DoF for a point with fixAll), spheres when drawSize > 0.
+TEST(ConstraintDraw, PointLinePlaneDirectionMarkTheirDofs) {
+  render::DrawList list;
+  auto with = [&](const std::string& constraint) {
+    return test::load(R"(<Node name="root"><VisualStyle displayFlags="showBehaviorModels"/>
+        <MechanicalObject position="0 0 0  1 0 0  2 0 0"/>)" + constraint + "</Node>");
+  };
+  auto point = with(R"(<PointProjectiveConstraint name="c" fixAll="1"/>)");
+  render::gather(*point.root, list);
+  const render::Batch* b = drawn_by(list, point.root->find_object_named("c"));
+  ASSERT_TRUE(b);
+  EXPECT_EQ(b->kind, render::Batch::Kind::points);
+  EXPECT_EQ(b->vertex_count(), 3u);
+  auto line = with(R"(<LineProjectiveConstraint name="c" indices="2" direction="1 0 0" drawSize="0.5"/>)");
+  render::gather(*line.root, list);
+  ASSERT_TRUE((b = drawn_by(list, line.root->find_object_named("c"))));
+  EXPECT_EQ(b->kind, render::Batch::Kind::triangles);
+  EXPECT_FLOAT_EQ(b->shading.diffuse[1], 0.35f);
+  float lo = 1e9f;
+  for (std::size_t i = 0; i < b->positions.size(); i += 3) lo = std::min(lo, b->positions[i]);
+  EXPECT_NEAR(lo, 1.5f, 1e-5);
+  auto plane = with(R"(<PlaneProjectiveConstraint name="c" indices="0 1" normal="0 0 1"/>)");
+  render::gather(*plane.root, list);
+  ASSERT_TRUE((b = drawn_by(list, plane.root->find_object_named("c"))));
+  EXPECT_EQ(b->positions, (std::vector<float>{0, 0, 0, 1, 0, 0}));
+  EXPECT_EQ(b->shading.diffuse, (render::Rgba{1.f, 0.5f, 0.5f, 1.f}));
+  auto direction = with(R"(<DirectionProjectiveConstraint name="c" indices="1" direction="0 1 0"/>)");
+  render::gather(*direction.root, list);
+  ASSERT_TRUE((b = drawn_by(list, direction.root->find_object_named("c"))));
+  EXPECT_EQ(b->positions, (std::vector<float>{1, 0, 0}));
+}
+
+// AttachProjectiveConstraint: the attached points (10 px) and a line from each source point;
+// LinearVelocityProjectiveConstraint: first position + key velocities.
+TEST(ConstraintDraw, AttachPairsAndLinearVelocityKeys) {
+  render::DrawList list;
+  auto attach = test::load(R"(<Node name="root"><VisualStyle displayFlags="showBehaviorModels"/>
+      <MechanicalObject position="0 0 0  1 0 0  2 0 0"/>
+      <AttachProjectiveConstraint name="c" indices1="0" indices2="2"/></Node>)");
+  render::gather(*attach.root, list);
+  const Component* c = attach.root->find_object_named("c");
+  const render::Batch* points = drawn_by(list, c, 0);
+  const render::Batch* lines = drawn_by(list, c, 1);
+  ASSERT_TRUE(points && lines);
+  // Point 2 was drawn halfway to point 0 by the projection at init (positionFactor 1: ½ of the gap).
+  EXPECT_EQ(points->positions, (std::vector<float>{1, 0, 0}));
+  EXPECT_EQ(lines->kind, render::Batch::Kind::lines);
+  EXPECT_EQ(lines->positions, (std::vector<float>{0, 0, 0, 1, 0, 0}));
+
+  auto velocity = test::load(R"(<Node name="root" dt="0.1"><VisualStyle displayFlags="showBehaviorModels"/>
+      <EulerImplicitSolver/><CGLinearSolver iterations="10" tolerance="1e-9" threshold="1e-9"/>
+      <MechanicalObject position="0 0 0  1 0 0"/><UniformMass totalMass="1"/>
+      <LinearVelocityProjectiveConstraint name="c" indices="1" keyTimes="0 1" velocities="0 0 0  1 0 0"/></Node>)");
+  render::gather(*velocity.root, list);  // the first position is taken by the projection at init
+  const render::Batch* b = drawn_by(list, velocity.root->find_object_named("c"));
+  ASSERT_TRUE(b);
+  EXPECT_FLOAT_EQ(b->line_width, 1.f);
+  EXPECT_EQ(b->positions, (std::vector<float>{1, 0, 0, 2, 0, 0}));
+}
+
+// HermiteSplineProjectiveConstraint: its spline sampled every dt (2 px), its ends (red, 5 px)
+// and tangents; ParabolicProjectiveConstraint: its parabola one segment per step through P1,
+// P2 and P3, and the three points.
+TEST(ConstraintDraw, HermiteSplineAndParabolaPaths) {
+  render::DrawList list;
+  auto hermite = test::load(R"(<Node name="root" dt="0.25"><VisualStyle displayFlags="showBehaviorModels"/>
+      <MechanicalObject position="0 0 0"/>
+      <HermiteSplineProjectiveConstraint name="c" indices="0" BeginTime="0" EndTime="1" X0="0 0 0" X1="1 0 0"
+          dX0="0 1 0" dX1="0 1 0"/></Node>)");
+  render::gather(*hermite.root, list);
+  const Component* c = hermite.root->find_object_named("c");
+  const render::Batch* curve = drawn_by(list, c, 0);
+  const render::Batch* ends = drawn_by(list, c, 1);
+  const render::Batch* tangents = drawn_by(list, c, 2);
+  ASSERT_TRUE(curve && ends && tangents);
+  EXPECT_FLOAT_EQ(curve->line_width, 2.f);
+  ASSERT_EQ(curve->vertex_count(), 6u);  // samples at 0, 0.25, 0.5, 0.75: three segments
+  // Vertex 3 (the second segment's end) at s = 0.5: X0·½ + dX0·⅛ + X1·½ − dX1·⅛ = (0.5, 0, 0).
+  EXPECT_NEAR(curve->positions[9], 0.5f, 1e-6);
+  EXPECT_NEAR(curve->positions[10], 0.f, 1e-6);
+  EXPECT_EQ(ends->positions, (std::vector<float>{0, 0, 0, 1, 0, 0}));
+  EXPECT_FLOAT_EQ(ends->point_size, 5.f);
+  EXPECT_EQ(ends->shading.diffuse, (render::Rgba{1.f, 0.f, 0.f, 1.f}));
+  EXPECT_EQ(tangents->vertex_count(), 4u);
+  EXPECT_NEAR(tangents->positions[4], 0.1f, 1e-6);
+
+  auto parabola = test::load(R"(<Node name="root" dt="0.25"><VisualStyle displayFlags="showBehaviorModels"/>
+      <MechanicalObject position="0 0 0"/>
+      <ParabolicProjectiveConstraint name="c" indices="0" P1="0 0 0" P2="1 1 0" P3="2 0 0" BeginTime="0" EndTime="1"/>
+      </Node>)");
+  render::gather(*parabola.root, list);
+  c = parabola.root->find_object_named("c");
+  const render::Batch* path = drawn_by(list, c, 0);
+  const render::Batch* controls = drawn_by(list, c, 1);
+  ASSERT_TRUE(path && controls);
+  ASSERT_EQ(path->vertex_count(), 8u);
+  const std::vector<float>& p = path->positions;
+  EXPECT_NEAR(p[0], 0.f, 1e-6);
+  EXPECT_NEAR(p[9], 1.f, 1e-6);  // the end of the second segment: r = 0.5 at P2
+  EXPECT_NEAR(p[10], 1.f, 1e-6);
+  EXPECT_NEAR(p[21], 2.f, 1e-6);  // r = 1 at P3
+  EXPECT_NEAR(p[22], 0.f, 1e-6);
+  EXPECT_EQ(controls->vertex_count(), 3u);
+}
+
+// AffineMovementProjectiveConstraint with drawConstrainedPoints: its DoFs, whatever the flags.
+TEST(ConstraintDraw, AffineMovementDrawsItsPointsWithoutFlags) {
+  render::DrawList list;
+  auto scene = [](const std::string& draw) {
+    return test::load(R"(<Node name="root"><VisualStyle displayFlags="hideBehaviorModels"/>
+        <MechanicalObject position="0 0 0  1 0 0"/>
+        <AffineMovementProjectiveConstraint name="c" indices="1" drawConstrainedPoints=")" + draw + R"("/></Node>)");
+  };
+  auto shown = scene("1");
+  render::gather(*shown.root, list);
+  const render::Batch* b = drawn_by(list, shown.root->find_object_named("c"));
+  ASSERT_TRUE(b);
+  EXPECT_EQ(b->positions, (std::vector<float>{1, 0, 0}));
+  auto hidden = scene("0");
+  render::gather(*hidden.root, list);
+  EXPECT_FALSE(drawn_by(list, hidden.root->find_object_named("c")));
+}
+
+// Under showInteractionForceFields: BilateralLagrangianConstraint's pairs as 10-pixel points,
+// magenta when active, green when not; a collision response's contacts as 3-pixel lines along
+// the normal from object2's point (white) and against it from object1's (0, 0.5, 0.5).
+TEST(ConstraintDraw, BilateralPairsAndContacts) {
+  render::DrawList list;
+  auto scene = [](const std::string& flags, const std::string& activate) {
+    return test::load(R"(<Node name="root"><VisualStyle displayFlags=")" + flags + R"("/>
+        <MechanicalObject name="a" position="0 0 0  1 0 0"/>
+        <Node name="b"><MechanicalObject name="b" position="0 2 0  1 2 0"/></Node>
+        <BilateralLagrangianConstraint name="c" object1="@a" object2="@b/b" first_point="1" second_point="0"
+            activate=")" + activate + R"("/></Node>)");
+  };
+  auto active = scene("showInteractionForceFields", "1");
+  render::gather(*active.root, list);
+  const render::Batch* b = drawn_by(list, active.root->find_object_named("c"));
+  ASSERT_TRUE(b);
+  EXPECT_EQ(b->positions, (std::vector<float>{1, 0, 0, 0, 2, 0}));
+  EXPECT_EQ(b->shading.diffuse, (render::Rgba{1.f, 0.f, 1.f, 1.f}));
+  auto inactive = scene("showInteractionForceFields", "0");
+  render::gather(*inactive.root, list);
+  ASSERT_TRUE((b = drawn_by(list, inactive.root->find_object_named("c"))));
+  EXPECT_EQ(b->shading.diffuse, (render::Rgba{0.f, 1.f, 0.f, 1.f}));
+  auto hidden = scene("hideInteractionForceFields", "1");
+  render::gather(*hidden.root, list);
+  EXPECT_FALSE(drawn_by(list, hidden.root->find_object_named("c")));
+
+  // One contact between point 0 of a and point 1 of b, normal +y.
+  auto* s1 = dynamic_cast<MechanicalState*>(active.root->find_object_named("a"));
+  auto* s2 = dynamic_cast<MechanicalState*>(active.root->find_child_named("b")->find_object_named("b"));
+  ASSERT_TRUE(s1 && s2);
+  auto contact = std::make_unique<UnilateralLagrangianConstraint>(*s1, *s2);
+  contact->add_contact(0.0, Vec3(0, 1, 0), 0.0, 0, 1, 1, 0);
+  const Component* k = active.root->add_object(std::move(contact));
+  render::gather(*active.root, list);
+  const render::Batch* out = drawn_by(list, k, 0);
+  const render::Batch* in = drawn_by(list, k, 1);
+  ASSERT_TRUE(out && in);
+  EXPECT_FLOAT_EQ(out->line_width, 3.f);
+  EXPECT_EQ(out->positions, (std::vector<float>{1, 2, 0, 1, 3, 0}));
+  EXPECT_EQ(out->shading.diffuse, (render::Rgba{1.f, 1.f, 1.f, 1.f}));
+  EXPECT_EQ(in->positions, (std::vector<float>{0, 0, 0, 0, -1, 0}));
+  EXPECT_EQ(in->shading.diffuse, (render::Rgba{0.f, 0.5f, 0.5f, 1.f}));
 }
 
 }  // namespace

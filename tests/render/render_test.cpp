@@ -804,6 +804,36 @@ TEST_F(RenderTest, OglFluidModelDrawsSofasScreenSpaceSurface) {
   EXPECT_EQ(d.rgb(100, 100), (std::array<int, 3>{51, 255, 255}));
 }
 
+// The fluid's passes cover only its sprites' pixels (render/fluid_surface.h): one drawn after
+// another elsewhere by the same renderer leaves nothing of the first (the picture is the one a
+// fresh renderer makes), and debugFBO 6 still shows the thickness spread by the blur's reach
+// (10 px, SOFA's default spriteBlurRadius) beyond the sprite, and 0 farther away.
+TEST_F(RenderTest, OglFluidModelPassesCoverOnlyItsSprites) {
+  const std::string camera = "<InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>";
+  auto fluid = [&](const std::string& point, const std::string& more = "") {
+    return test::load("<Node name=\"root\">" + camera + "<Node name=\"f\"><OglFluidModel position=\"" + point +
+                      "\" spriteRadius=\"0.5\" spriteThickness=\"0.2\" " + more + "/></Node></Node>");
+  };
+  auto left = fluid("-1 0 0"), right = fluid("1 0 0");
+  const Image fresh = render(*right.root);
+  const Image other = render(*left.root);
+  const int centre = 100 + static_cast<int>(std::lround(0.2 / std::tan(M_PI / 8) * 100));  // 148
+  EXPECT_FALSE(is_background(other.rgb(200 - centre, 100)));
+  EXPECT_TRUE(is_background(other.rgb(centre, 100)));
+  const Image again = render(*right.root);
+  EXPECT_TRUE(is_background(again.rgb(200 - centre, 100)));
+  EXPECT_EQ(again.rgba, fresh.rgba);
+
+  const double r_px = 0.5 * 0.5 * 200.0 / std::tan(65.0 * M_PI / 360.0) / std::sqrt(26.0);  // 15.4 px
+  auto debug = fluid("1 0 0", "debugFBO=\"6\"");
+  const Image d = render(*debug.root);
+  const int edge = centre + static_cast<int>(std::ceil(r_px));
+  EXPECT_GT(d.rgb(edge + 5, 100)[0], 0);
+  EXPECT_GT(d.rgb(centre, 100 - static_cast<int>(std::ceil(r_px)) - 5)[0], 0);
+  EXPECT_EQ(d.rgb(edge + 14, 100), (std::array<int, 3>{0, 0, 0}));
+  EXPECT_EQ(d.rgb(5, 5), (std::array<int, 3>{0, 0, 0}));
+}
+
 // PostProcessManager with SOFA's depth-of-field shader: the scene is drawn through the manager's
 // gluPerspective(60°, 1, zNear, zFar) (a unit square 5 ahead: 0.1 · cot 30° · 100 = 17.3 px half
 // width instead of the camera's 45°: 24.1 px), and the shader reads that picture's depth

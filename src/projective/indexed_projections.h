@@ -10,17 +10,18 @@
 // constraints (SOFA's point reads the list, its line rebuilds its matrix when
 // the state size changed), while the plane keeps projecting the DoF numbers of
 // init (SOFA's plane never rebuilds its matrix).
+#pragma once
+
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
-#include "core/registry.h"
 #include "core/node.h"
 #include "core/roles.h"
 #include "projective/subset_indices.h"
 
 namespace sinew {
-
-namespace {
 
 // Common part: `indices` (default [0]) checked against the state size.
 class IndexedProjection : public ProjectiveConstraint {
@@ -173,26 +174,5 @@ class PlaneProjectiveConstraint final : public IndexedProjection {
  private:
   Mat3 P_ = Mat3::Identity();
 };
-
-template <class T>
-void add_vec3(Registry& r, const char* name, const char* what) {
-  ComponentInfo info;
-  info.name = name;
-  info.category = "Constraint/Projective";
-  info.description = what;
-  info.templates = {"Vec3d"};
-  info.default_template = "Vec3d";
-  info.requirement = Requirement::state;
-  info.create = creator<T>();
-  r.add(std::move(info));
-}
-
-}  // namespace
-
-void register_affine_projective_constraints(Registry& r) {
-  add_vec3<PointProjectiveConstraint>(r, "PointProjectiveConstraint", "keeps DoFs on a point");
-  add_vec3<LineProjectiveConstraint>(r, "LineProjectiveConstraint", "keeps DoFs on a line");
-  add_vec3<PlaneProjectiveConstraint>(r, "PlaneProjectiveConstraint", "keeps DoFs on a plane");
-}
 
 }  // namespace sinew
