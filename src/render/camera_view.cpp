@@ -28,7 +28,8 @@ CameraFrame default_frame(const Vec3& gravity, const Vec3& min, const Vec3& max)
   return f;
 }
 
-// The first active camera of the graph, depth-first (no allocation: called every frame).
+}  // namespace
+
 const BaseCamera* find_camera(const Node& node) {
   for (const auto& o : node.objects())
     if (const auto* c = dynamic_cast<const BaseCamera*>(o.get()))
@@ -37,8 +38,6 @@ const BaseCamera* find_camera(const Node& node) {
     if (const BaseCamera* c = find_camera(*child)) return c;
   return nullptr;
 }
-
-}  // namespace
 
 CameraFrame camera_frame(const Node& root, const Vec3& min, const Vec3& max, bool* from_scene) {
   const BaseCamera* cam = find_camera(root);

@@ -11,6 +11,7 @@
 #include "render/draw_list.h"
 
 namespace sinew {
+class BaseCamera;
 class Node;
 }
 
@@ -32,6 +33,10 @@ struct CameraFrame {
   bool ortho = false;
   Vec3 look_at = Vec3::Zero();
 };
+
+// The scene's first active camera, depth-first (no allocation: called every frame); null
+// without one.
+const BaseCamera* find_camera(const Node& root);
 
 // The frame of the scene's first active camera, else SOFA's default view of [min, max]
 // (with the camera's field of view and projection type when it asks for the default view).

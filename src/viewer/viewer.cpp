@@ -229,13 +229,24 @@ bool ViewerApp::load(std::string* error) {
   return true;
 }
 
-void ViewerApp::frame_camera(bool use_view_file) {
-  Node& root = this->root();
-  render::gather(root, list);
-  Vec3 min = list.has_bounds ? list.min : Vec3::Zero(), max = list.has_bounds ? list.max : Vec3::Ones();
+namespace {
+
+// The scene's box: the root's `bbox` when set, else what is drawn (the unit box when nothing
+// is; a point grows to a unit cube).
+void scene_box(const Node& root, const render::DrawList& list, Vec3& min, Vec3& max) {
+  min = list.has_bounds ? list.min : Vec3::Zero(), max = list.has_bounds ? list.max : Vec3::Ones();
   if (const auto& b = root.bbox.get(); b.size() == 6 && b[0] <= b[3] && b[1] <= b[4] && b[2] <= b[5])
     min = Vec3(b[0], b[1], b[2]), max = Vec3(b[3], b[4], b[5]);
   if (min == max) min -= Vec3::Constant(0.5), max += Vec3::Constant(0.5);
+}
+
+}  // namespace
+
+void ViewerApp::frame_camera(bool use_view_file) {
+  Node& root = this->root();
+  render::gather(root, list);
+  Vec3 min, max;
+  scene_box(root, list, min, max);
   bbox_min_ = min, bbox_max_ = max;
   render::CameraFrame f = render::camera_frame(root, min, max);
   if (use_view_file)
@@ -244,7 +255,8 @@ void ViewerApp::frame_camera(bool use_view_file) {
       if (auto read = read_view_file(vf, &err)) f = *read;
       else std::fprintf(stderr, "sinew view: %s (camera file ignored)\n", err.c_str());
     }
-  camera.reset(f, (min + max) * 0.5);
+  camera.reset(f, navigation_of(root));
+  camera.set_scene_box(min, max);
 }
 
 bool ViewerApp::step() {
@@ -382,7 +394,10 @@ void ViewerApp::on_button(int button, int action) {
                   t[1], t[2]);
       attach.stop();
     }
-    if (button == drag_button_) drag_button_ = -1;
+    if (button == drag_button_) {
+      drag_button_ = -1;
+      camera.release();
+    }
     return;
   }
   if (shift_ && button == GLFW_MOUSE_BUTTON_LEFT) {
@@ -409,27 +424,31 @@ void ViewerApp::on_button(int button, int action) {
     return;
   }
   drag_button_ = button;
+  using Mode = CameraControl::Mode;
+  camera.press(button == GLFW_MOUSE_BUTTON_LEFT    ? Mode::trackball
+               : button == GLFW_MOUSE_BUTTON_RIGHT ? Mode::pan
+               : button == GLFW_MOUSE_BUTTON_MIDDLE ? Mode::zoom
+                                                    : Mode::none,
+               mx_, my_);
 }
 
 void ViewerApp::on_move(double x, double y) {
   int w = 0, h = 0;
   glfwGetWindowSize(window_, &w, &h);
-  const double px = mx_, py = my_;
   mx_ = x, my_ = y;
   if (attach.active()) {
     const Ray ray = ray_through(view, x, y, w, h);
     attach.move(ray.origin + grab_depth_ * ray.dir);
     return;
   }
-  switch (drag_button_) {
-    case GLFW_MOUSE_BUTTON_LEFT: camera.rotate(px, py, x, y, w, h); break;
-    case GLFW_MOUSE_BUTTON_RIGHT: camera.pan(x - px, y - py, w, h); break;
-    case GLFW_MOUSE_BUTTON_MIDDLE: camera.zoom((py - y) * 0.05); break;
-    default: break;
-  }
+  if (drag_button_ >= 0) camera.move(x, y, w, h);
 }
 
-void ViewerApp::on_scroll(double dy) { camera.zoom(dy); }
+void ViewerApp::on_scroll(double dy) {
+  int w = 0, h = 0;
+  glfwGetWindowSize(window_, &w, &h);
+  camera.wheel(dy, h);
+}
 
 void ViewerApp::run_script_events(long frame) {
   static const auto button_of = [](const std::string& b) {
@@ -486,6 +505,11 @@ bool ViewerApp::gather_frame() {
   }
   Node& root = this->root();
   render::gather(root, list);
+  // The camera's scene box follows the scene, as SofaGLFW hands the root's box to the camera
+  // every frame (the mouse's scene pivot and zoom and pan speeds).
+  Vec3 box_min, box_max;
+  scene_box(root, list, box_min, box_max);
+  camera.set_scene_box(box_min, box_max);
   // Clip planes from what is drawn now and the box framed at loading.
   Vec3 min = bbox_min_, max = bbox_max_;
   if (list.has_bounds) min = min.cwiseMin(list.min), max = max.cwiseMax(list.max);
@@ -523,7 +547,7 @@ void ViewerApp::finish_step() {
   // A RecordedCamera moves with the simulation; SOFA's viewer draws through it.
   if (const auto* rc = root().find_down<RecordedCamera>();
       ok && rc && rc->activated.get() && (rc->rotation_mode.get() || rc->translation_mode.get() || rc->navigation_mode.get()))
-    camera.reset(render::camera_frame(root(), bbox_min_, bbox_max_), (bbox_min_ + bbox_max_) * 0.5);
+    camera.reset(render::camera_frame(root(), bbox_min_, bbox_max_), navigation_of(root()));
   if (!ok) {
     animating = false;
     attach.stop();

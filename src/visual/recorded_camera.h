@@ -8,8 +8,8 @@
 // The camera is moved at each AnimateBeginEvent whose time reached the next step (SOFA's
 // m_nextStep), and put back by a reset; the renderer reads the moved BaseCamera Data.
 // `drawRotation` draws the rotation's circle and four lines to the point looked at,
-// `drawTranslation` the segments between the cameraPositions (src/render). Its mouse modes
-// are the viewer's.
+// `drawTranslation` the segments between the cameraPositions (src/render). The viewer moves it
+// under the mouse by its own law (zoomSpeed, panSpeed, pivot: viewer/camera_control.h).
 #pragma once
 
 #include <vector>

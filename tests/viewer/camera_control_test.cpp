@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 
+#include "test_scene.h"
 #include "viewer/camera_control.h"
 #include "viewer/input_script.h"
 #include "viewer/view_file.h"
@@ -37,50 +38,151 @@ render::View view_of_frame(const render::CameraFrame& f, int w, int h) {
   return v;
 }
 
-TEST(CameraControl, TrackballTurnsAroundThePivotAndKeepsTheFrameRigid) {
+// A camera 10 in front of a scene box [−1, 1]³ (radius √3), InteractiveCamera's law unless said.
+CameraControl front_control(const Navigation& nav = {}) {
   CameraControl c;
-  c.reset(front_view(10), Vec3::Zero());
-  for (int i = 0; i < 50; ++i) c.rotate(400, 300, 420, 290, 800, 600);
+  c.reset(front_view(10), nav);
+  c.set_scene_box(Vec3::Constant(-1), Vec3::Constant(1));
+  return c;
+}
+
+// SOFA's trackball (InteractiveCamera, from the frame of the press): a 100-pixel drag to the
+// right in an 800-pixel-wide window is (0.25, 0) in viewport units; on the sphere of radius 0.8
+// the two points are θ = acos(0.8 · √(0.64 − 0.0625) / 0.64) = 0.31782 rad apart, the angle the
+// camera turns about the vertical through the scene's centre. The frame stays rigid, still
+// looking at its point 10 ahead, and the drag is measured from the press, not summed.
+TEST(CameraControl, TrackballIsSofasFromThePress) {
+  CameraControl c = front_control();
+  c.press(CameraControl::Mode::trackball, 400, 300);
+  c.move(600, 300, 800, 600);
+  c.move(500, 300, 800, 600);
+  const double theta = std::acos(0.8 * std::sqrt(0.64 - 0.0625) / 0.64);
+  EXPECT_NEAR(theta, 0.31782, 1e-5);
   const auto& f = c.frame();
-  EXPECT_NEAR((f.position - c.pivot()).norm(), 10.0, 1e-9);
+  EXPECT_NEAR(f.position[0], -10 * std::sin(theta), 1e-9);  // a drag to the right: the camera goes left
+  EXPECT_NEAR(f.position[1], 0.0, 1e-12);
+  EXPECT_NEAR(f.position[2], 10 * std::cos(theta), 1e-9);
   EXPECT_NEAR((f.rotation.transpose() * f.rotation - Mat3::Identity()).norm(), 0.0, 1e-12);
   EXPECT_NEAR(f.rotation.determinant(), 1.0, 1e-12);
-  // Still looking at the pivot: the camera's −z points from the eye to the pivot.
-  EXPECT_NEAR((-f.rotation.col(2) - (c.pivot() - f.position).normalized()).norm(), 0.0, 1e-9);
-  // A drag to the right turns the scene to the right: the camera moved to the left (−x).
-  EXPECT_LT(f.position[0], -1.0);
+  EXPECT_NEAR((f.look_at - Vec3::Zero()).norm(), 0.0, 1e-9);  // still the centre, 10 ahead
+  // Outside the sphere's inner part the point is on the hyperbolic sheet: a 300-pixel drag
+  // (u = 0.75 > 0.8/√2) turns by 2·asin(|p1 − p2| / 1.6) with z = 0.32 / 0.75.
+  c.move(700, 300, 800, 600);
+  const double z = 0.32 / 0.75, turn = 2 * std::asin(std::sqrt(0.75 * 0.75 + (0.8 - z) * (0.8 - z)) / 1.6);
+  EXPECT_NEAR(std::atan2(-c.frame().position[0], c.frame().position[2]), turn, 1e-9);
+  c.release();
+  c.move(100, 100, 800, 600);  // no button: nothing moves
+  EXPECT_NEAR(std::atan2(-c.frame().position[0], c.frame().position[2]), turn, 1e-9);
 }
 
-TEST(CameraControl, HorizontalDragAtTheCentreTurnsAboutTheVerticalAxis) {
-  CameraControl c;
-  c.reset(front_view(10), Vec3::Zero());
-  c.rotate(400, 300, 500, 300, 800, 600);
-  EXPECT_NEAR(c.frame().position[1], 0.0, 1e-12);  // no vertical motion
-  EXPECT_NEAR(c.frame().rotation.col(1).dot(Vec3(0, 1, 0)), 1.0, 1e-12);
+// The pivots: 0 the point looked at, 1 the camera itself, 3 the world's origin.
+TEST(CameraControl, TrackballPivots) {
+  Navigation on_camera;
+  on_camera.pivot = 1;
+  CameraControl c = front_control(on_camera);
+  c.press(CameraControl::Mode::trackball, 400, 300);
+  c.move(500, 300, 800, 600);
+  EXPECT_NEAR((c.frame().position - Vec3(0, 0, 10)).norm(), 0.0, 1e-12);  // turned on the spot
+  // The view turned right, as the scene turns left around the eye.
+  EXPECT_NEAR(c.frame().look_at[0], 10 * std::sin(std::acos(0.8 * std::sqrt(0.64 - 0.0625) / 0.64)), 1e-9);
+  Navigation world;
+  world.pivot = 3;
+  CameraControl w = front_control(world);
+  w.set_scene_box(Vec3(4, -1, -1), Vec3(6, 1, 1));  // centre (5, 0, 0): not the pivot
+  w.press(CameraControl::Mode::trackball, 400, 300);
+  w.move(500, 300, 800, 600);
+  EXPECT_NEAR(w.frame().position.norm(), 10.0, 1e-9);
 }
 
-TEST(CameraControl, PanKeepsThePointUnderTheCursorAtThePivotDepth) {
-  CameraControl c;
-  c.reset(front_view(10), Vec3::Zero());
-  const render::View before = view_of_frame(c.frame(), 800, 600);
-  double x0, y0;
-  ASSERT_TRUE(project(before, Vec3::Zero(), 800, 600, x0, y0));
-  c.pan(40, -25, 800, 600);
-  const render::View after = view_of_frame(c.frame(), 800, 600);
-  double x1, y1;
-  ASSERT_TRUE(project(after, Vec3::Zero(), 800, 600, x1, y1));
-  // The view matrices are single precision, as OpenGL takes them.
-  EXPECT_NEAR(x1 - x0, 40, 1e-4);
-  EXPECT_NEAR(y1 - y0, -25, 1e-4);
+// InteractiveCamera's pan: (x0 − x, y − y0) pixels along the camera's axes times panSpeed times
+// 1 % of the scene radius; the point looked at follows.
+TEST(CameraControl, PanIsScaledByTheSceneRadius) {
+  CameraControl c = front_control();
+  c.press(CameraControl::Mode::pan, 400, 300);
+  c.move(440, 275, 800, 600);
+  const double k = 0.1 * 0.01 * std::sqrt(3.0);
+  EXPECT_NEAR((c.frame().position - Vec3(-40 * k, -25 * k, 10)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((c.frame().look_at - Vec3(-40 * k, -25 * k, 0)).norm(), 0.0, 1e-12);
 }
 
-TEST(CameraControl, ZoomMovesTowardsThePointLookedAt) {
-  CameraControl c;
-  c.reset(front_view(10), Vec3::Zero());
-  c.zoom(1);
-  EXPECT_NEAR(c.frame().position[2], 9.0, 1e-12);
-  c.zoom(-2);
-  EXPECT_NEAR(c.frame().position[2], 9.0 / 0.81, 1e-12);
+// InteractiveCamera's zooms: zoomSpeed · 1 % of the scene radius / window height per pixel of a
+// middle drag (down: forwards), and per half tenth of a wheel notch; the point looked at is
+// pushed ahead of a camera that passed it.
+TEST(CameraControl, ZoomIsScaledByTheSceneRadius) {
+  CameraControl c = front_control();
+  const double step = 250 * 0.01 * std::sqrt(3.0) / 600;
+  c.press(CameraControl::Mode::zoom, 400, 300);
+  c.move(400, 360, 800, 600);
+  EXPECT_NEAR(c.frame().position[2], 10 - 60 * step, 1e-12);
+  c.release();
+  c.wheel(1, 600);  // SofaGLFW: a notch is a wheel delta of 10, half of it in steps
+  EXPECT_NEAR(c.frame().position[2], 10 - 65 * step, 1e-12);
+  c.wheel(-2, 600);
+  EXPECT_NEAR(c.frame().position[2], 10 - 55 * step, 1e-12);
+  EXPECT_NEAR(c.frame().look_at.norm(), 0.0, 1e-12);
+
+  CameraControl near;
+  near.reset(front_view(0.1));
+  near.set_scene_box(Vec3::Constant(-1), Vec3::Constant(1));
+  near.wheel(5, 600);  // 25 steps = 0.18 forwards: past the point looked at
+  EXPECT_NEAR(near.frame().position[2], 0.1 - 25 * step, 1e-12);
+  EXPECT_NEAR(near.frame().look_at[2], near.frame().position[2] - step, 1e-12);
+}
+
+// RecordedCamera's own law: the trackball from the last motion, pans by panSpeed and zooms by
+// zoomSpeed / height per pixel, whatever the scene's size; a plain Camera does not move.
+TEST(CameraControl, RecordedCameraAndPlainCameraLaws) {
+  Navigation recorded;
+  recorded.law = Navigation::Law::recorded;
+  CameraControl r = front_control(recorded);
+  r.press(CameraControl::Mode::trackball, 400, 300);
+  r.move(450, 300, 800, 600);
+  r.move(500, 300, 800, 600);  // two 50-pixel turns
+  const double half = std::acos(0.8 * std::sqrt(0.64 - 0.125 * 0.125) / 0.64);
+  EXPECT_NEAR(std::atan2(-r.frame().position[0], r.frame().position[2]), 2 * half, 1e-9);
+  CameraControl p = front_control(recorded);
+  p.press(CameraControl::Mode::pan, 400, 300);
+  p.move(410, 300, 800, 600);
+  EXPECT_NEAR((p.frame().position - Vec3(-1, 0, 10)).norm(), 0.0, 1e-12);  // 10 px · 0.1
+  CameraControl z = front_control(recorded);
+  z.wheel(1, 500);
+  EXPECT_NEAR(z.frame().position[2], 10 - 250 * 5.0 / 500, 1e-12);
+  EXPECT_NEAR(z.frame().look_at[2], -250 * 5.0 / 500, 1e-12);
+
+  Navigation none;
+  none.law = Navigation::Law::none;
+  CameraControl n = front_control(none);
+  n.press(CameraControl::Mode::trackball, 400, 300);
+  n.move(500, 300, 800, 600);
+  n.wheel(3, 600);
+  EXPECT_EQ(n.frame().position, Vec3(0, 0, 10));
+}
+
+// The scene camera's Data reach the mouse: InteractiveCamera's speeds and pivot, RecordedCamera's
+// own law, a plain Camera's none, the defaults without a camera.
+TEST(Navigation, FromTheScenesCamera) {
+  auto with = [](const std::string& camera) {
+    return test::load("<Node name=\"root\">" + camera + "<MechanicalObject position=\"0 0 0\"/></Node>");
+  };
+  auto interactive = with(R"(<InteractiveCamera position="0 0 5" lookAt="0 0 0" zoomSpeed="100" panSpeed="0.5"
+      pivot="0" fixedLookAt="1"/>)");
+  Navigation n = navigation_of(*interactive.root);
+  EXPECT_EQ(n.law, Navigation::Law::interactive);
+  EXPECT_EQ(n.zoom_speed, 100);
+  EXPECT_EQ(n.pan_speed, 0.5);
+  EXPECT_EQ(n.pivot, 0);
+  EXPECT_TRUE(n.fixed_look_at);
+  auto recorded = with(R"(<RecordedCamera position="0 0 5" lookAt="0 0 0" pivot="1"/>)");
+  n = navigation_of(*recorded.root);
+  EXPECT_EQ(n.law, Navigation::Law::recorded);
+  EXPECT_EQ(n.pivot, 1);
+  auto plain = with(R"(<Camera position="0 0 5" lookAt="0 0 0"/>)");
+  EXPECT_EQ(navigation_of(*plain.root).law, Navigation::Law::none);
+  auto none = with("");
+  n = navigation_of(*none.root);
+  EXPECT_EQ(n.law, Navigation::Law::interactive);
+  EXPECT_EQ(n.zoom_speed, 250);
+  EXPECT_EQ(n.pivot, 2);
 }
 
 TEST(Ray, ThroughAPixelAndProjectedBack) {
