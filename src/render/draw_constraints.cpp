@@ -24,8 +24,10 @@
 // points of each pair as 10-pixel points, magenta when active, green when not; the contacts
 // of a collision response (UnilateralLagrangianConstraint) as 3-pixel lines from object2's
 // point along the normal (white) and from object1's point against it (0, 0.5, 0.5), one unit
-// long.
+// long; SlidingLagrangianConstraint its sliding point (10 px: yellow when the last build tied it
+// in three directions, the axis ends coinciding, else green) and its axis as a blue line.
 #include "constraint/model/bilateral_lagrangian_constraint.h"
+#include "constraint/model/sliding_lagrangian_constraint.h"
 #include "constraint/model/unilateral_lagrangian_constraint.h"
 #include "core/node.h"
 #include "projective/attach_projective_constraint.h"
@@ -228,6 +230,15 @@ void add_bilateral(DrawList& list, const BilateralLagrangianConstraint& c) {
   close_batch(list, b);
 }
 
+void add_sliding(DrawList& list, const Component& c, const SlidingPicture& s) {
+  Batch& p = points_batch(list, &c, s.tied ? Rgba{1.f, 1.f, 0.f, 1.f} : Rgba{0.f, 1.f, 0.f, 1.f});
+  push_point(p, s.point);
+  close_batch(list, p);
+  Batch& axis = lines_batch(list, &c, {0.f, 0.f, 1.f, 1.f}, 1.f);
+  push_point(axis, s.a), push_point(axis, s.b);
+  close_batch(list, axis);
+}
+
 void add_contacts(DrawList& list, const UnilateralLagrangianConstraint& c) {
   const auto& contacts = c.contacts();
   if (contacts.empty()) return;
@@ -280,6 +291,7 @@ void add_constraints(DrawList& list, Node& node, const DisplayFlags& flags) {
     if (interaction) {
       if (const auto* b = dynamic_cast<const BilateralLagrangianConstraint*>(c)) add_bilateral(list, *b);
       else if (const auto* u = dynamic_cast<const UnilateralLagrangianConstraint*>(c)) add_contacts(list, *u);
+      else if (SlidingPicture s; sliding_picture(*c, s)) add_sliding(list, *c, s);
     }
     if (!behavior || !dynamic_cast<const ProjectiveConstraint*>(c)) continue;
     if (const auto* f = dynamic_cast<const FixedProjectiveConstraint*>(c)) {

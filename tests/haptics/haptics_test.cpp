@@ -11,6 +11,8 @@
 #include <numbers>
 #include <thread>
 
+#include <unistd.h>
+
 #include "haptics/force_feedback.h"
 #include "haptics/geomagic_driver.h"
 #include "haptics/mechanical_state_controller.h"
@@ -298,9 +300,10 @@ struct Outcome {
   long steps = 0;
 };
 
-Outcome run_scene(const fs::path& path, long steps) {
+Outcome run_scene(const fs::path& path, long steps, const std::vector<std::string>& first_paths = {}) {
   runner::SessionOptions opts;
-  opts.data_paths = {(kData / "share").string(), (kData / "examples").string()};
+  opts.data_paths = first_paths;
+  for (const char* sub : {"share", "examples"}) opts.data_paths.push_back((kData / sub).string());
   runner::Session session(path.string(), opts);
   Outcome r;
   if (session.ok())
@@ -436,6 +439,23 @@ TEST(HapticScenes, RigidSkullScenesNameTheirMissingMesh) {
     }
     EXPECT_TRUE(names_the_mesh) << ::testing::PrintToString(r.errors);
   }
+}
+
+// With the absent visual mesh stood in for by the coarse skull (present: the scenes' collision
+// mesh), in a folder searched before the data, both RigidSkull scenes load and run 100 steps
+// without an error: only the data file keeps them from LoadAndRun100Steps.
+TEST(HapticScenes, RigidSkullScenesRunWithTheMeshStoodIn) {
+  const fs::path coarse = kData / "examples/Demos/Dentistry/data/mesh/skull_and_teeth_coarse.obj";
+  if (!fs::exists(coarse)) GTEST_SKIP() << "SOFA data not found at " << coarse;
+  const fs::path dir = fs::temp_directory_path() / ("sinew_skull_" + std::to_string(::getpid()));
+  fs::create_directories(dir / "Demos/Dentistry/data/mesh");
+  fs::copy_file(coarse, dir / "Demos/Dentistry/data/mesh/skull_and_teeth.obj", fs::copy_options::overwrite_existing);
+  for (const char* name : {"Geomagic-RigidSkull.scn", "Geomagic-RigidSkull-restShapeSpringForceField.scn"}) {
+    const Outcome r = run_scene(kData / "plugins/Geomagic/scenes" / name, 100, {dir.string()});
+    EXPECT_EQ(r.steps, 100) << name;
+    EXPECT_TRUE(r.errors.empty()) << name << ": " << ::testing::PrintToString(r.errors);
+  }
+  fs::remove_all(dir);
 }
 
 // GeomagicEmulator-RigidCubes under a scripted input: the emulated arm replaced by a

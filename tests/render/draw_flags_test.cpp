@@ -511,8 +511,9 @@ TEST(ConstraintDraw, AffineMovementDrawsItsPointsWithoutFlags) {
 }
 
 // Under showInteractionForceFields: BilateralLagrangianConstraint's pairs as 10-pixel points,
-// magenta when active, green when not; a collision response's contacts as 3-pixel lines along
-// the normal from object2's point (white) and against it from object1's (0, 0.5, 0.5).
+// magenta when active, green when not; SlidingLagrangianConstraint's point and axis; a collision
+// response's contacts as 3-pixel lines along the normal from object2's point (white) and against
+// it from object1's (0, 0.5, 0.5).
 TEST(ConstraintDraw, BilateralPairsAndContacts) {
   render::DrawList list;
   auto scene = [](const std::string& flags, const std::string& activate) {
@@ -535,6 +536,23 @@ TEST(ConstraintDraw, BilateralPairsAndContacts) {
   auto hidden = scene("hideInteractionForceFields", "1");
   render::gather(*hidden.root, list);
   EXPECT_FALSE(drawn_by(list, hidden.root->find_object_named("c")));
+
+  // SlidingLagrangianConstraint: point 0 of a sliding on b's segment; green until a build tied
+  // it in three directions.
+  auto sliding = test::load(R"(<Node name="root"><VisualStyle displayFlags="showInteractionForceFields"/>
+      <MechanicalObject name="a" position="0.5 1 0"/>
+      <Node name="b"><MechanicalObject name="b" position="0 0 0  1 0 0"/></Node>
+      <SlidingLagrangianConstraint name="c" object1="@a" object2="@b/b" sliding_point="0" axis_1="0" axis_2="1"/>
+      </Node>)");
+  render::gather(*sliding.root, list);
+  const Component* sc = sliding.root->find_object_named("c");
+  const render::Batch* sp = drawn_by(list, sc, 0);
+  const render::Batch* axis = drawn_by(list, sc, 1);
+  ASSERT_TRUE(sp && axis);
+  EXPECT_EQ(sp->positions, (std::vector<float>{0.5f, 1, 0}));
+  EXPECT_EQ(sp->shading.diffuse, (render::Rgba{0.f, 1.f, 0.f, 1.f}));
+  EXPECT_EQ(axis->positions, (std::vector<float>{0, 0, 0, 1, 0, 0}));
+  EXPECT_EQ(axis->shading.diffuse, (render::Rgba{0.f, 0.f, 1.f, 1.f}));
 
   // One contact between point 0 of a and point 1 of b, normal +y.
   auto* s1 = dynamic_cast<MechanicalState*>(active.root->find_object_named("a"));

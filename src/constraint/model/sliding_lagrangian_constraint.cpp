@@ -12,6 +12,8 @@
 // When A and B coincide: three bilateral rows e_x, e_y, e_z tying P to A.
 // Violations at the free positions with the directions and b of the build.
 // `force` receives Σ direction·λ after each solve.
+#include "constraint/model/sliding_lagrangian_constraint.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -154,6 +156,9 @@ class SlidingLagrangianConstraint final : public LagrangianConstraint {
     }
   }
 
+  // SOFA's draw: yellow when the last build had three directions.
+  bool tied() const { return ndirs_ == 3; }
+
  private:
   int first_ = 0;
   int ndirs_ = 0;
@@ -163,6 +168,19 @@ class SlidingLagrangianConstraint final : public LagrangianConstraint {
 };
 
 }  // namespace
+
+bool sliding_picture(const Component& c, SlidingPicture& out) {
+  const auto* s = dynamic_cast<const SlidingLagrangianConstraint*>(&c);
+  if (!s || s->state() != ComponentState::valid || !s->object1.get() || !s->object2.get()) return false;
+  const auto x1 = as_vec3(s->object1->read(kPosition));
+  const auto x2 = as_vec3(s->object2->read(kPosition));
+  const auto in = [](int i, std::size_t n) { return i >= 0 && static_cast<std::size_t>(i) < n; };
+  const int m1 = s->sliding_point.value(), ma = s->axis_1.value(), mb = s->axis_2.value();
+  if (!in(m1, x1.size()) || !in(ma, x2.size()) || !in(mb, x2.size())) return false;
+  out.point = x1[m1], out.a = x2[ma], out.b = x2[mb];
+  out.tied = s->tied();
+  return true;
+}
 
 void register_sliding_lagrangian_constraint(Registry& r) {
   ComponentInfo info;
