@@ -59,17 +59,6 @@ void main() {
 }
 )";
 
-// One triangle over the viewport; v_uv runs over [0, 1]² across it (pixel centres at texel
-// centres of a target of the viewport's size). Depth 0.5 unless the fragment shader writes one.
-const char* kFullScreenVertex = R"(#version 330 core
-out vec2 v_uv;
-void main() {
-  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
-  v_uv = p;
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
-
 // Bilateral blur along u_direction over ±u_taps texels (SOFA's spriteBlurRadius), one body for
 // both inputs. DEPTH: the input is a depth texture, empty pixels (depth 1) are discarded, the
 // blurred depth is the fragment's and its colour the linearised depth (what debugFBO 2 and 3
@@ -271,12 +260,12 @@ bool FluidSurface::make(int width, int height) {
       const char* fragment;
     };
     const Source sources[] = {{&sprite_, kSpriteVertex, kSpriteFragment},
-                              {&blur_depth_, kFullScreenVertex, kBlurDepthFragment.c_str()},
-                              {&normals_, kFullScreenVertex, kNormalsFragment},
-                              {&blur_thickness_, kFullScreenVertex, kBlurThicknessFragment.c_str()},
-                              {&shade_, kFullScreenVertex, kShadeFragment},
-                              {&over_, kFullScreenVertex, kCompositeFragment},
-                              {&show_, kFullScreenVertex, kShowFragment}};
+                              {&blur_depth_, kFullViewVertexShader, kBlurDepthFragment.c_str()},
+                              {&normals_, kFullViewVertexShader, kNormalsFragment},
+                              {&blur_thickness_, kFullViewVertexShader, kBlurThicknessFragment.c_str()},
+                              {&shade_, kFullViewVertexShader, kShadeFragment},
+                              {&over_, kFullViewVertexShader, kCompositeFragment},
+                              {&show_, kFullViewVertexShader, kShowFragment}};
     for (const Source& s : sources) {
       *s.program = link_program(s.vertex, s.fragment, &error);
       if (!*s.program) {

@@ -9,6 +9,11 @@
 
 namespace sinew::render {
 
+// One triangle over the viewport, made from gl_VertexID (drawn with an empty vertex array and
+// three vertices); v_uv runs over [0, 1]² across the viewport (pixel centres at the texel
+// centres of a texture of the viewport's size). Depth 0.5 unless the fragment shader writes one.
+extern const char* const kFullViewVertexShader;
+
 // A linked program of the two GLSL sources; 0 with *error (the compiler's or linker's log).
 unsigned link_program(const char* vertex, const char* fragment, std::string* error);
 

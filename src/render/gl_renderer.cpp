@@ -282,12 +282,6 @@ void main() {
 // OrderIndependentTransparencyManager's composition: a triangle covering the viewport; the
 // normalised weighted colour over the picture, covering 1 − Π(1 − alpha) of it (blended
 // with ONE, ONE_MINUS_SRC_ALPHA).
-const char* kOitVertexShader = R"(#version 330 core
-void main() {
-  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
 const char* kOitFragmentShader = R"(#version 330 core
 uniform sampler2D u_accumulation;
 uniform sampler2D u_weight;
@@ -354,7 +348,7 @@ void main() {
 
 // BackgroundSetting's image as SofaGLFWWindow::drawBackgroundImage lays it: tiled at its own
 // pixel size from the bottom-left, through glOrtho(-0.5, width, -0.5, height), repeated (drawn
-// on the composition's triangle over the viewport, kOitVertexShader).
+// on the composition's triangle over the viewport, kFullViewVertexShader).
 const char* kBackgroundFragmentShader = R"(#version 330 core
 uniform sampler2D u_image;
 uniform vec2 u_viewport;  // pixels
@@ -421,6 +415,15 @@ unsigned link(const char* vertex, const char* fragment, std::string* error) {
 
 }  // namespace
 
+const char* const kFullViewVertexShader = R"(#version 330 core
+out vec2 v_uv;
+void main() {
+  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
+  v_uv = p;
+  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+}
+)";
+
 unsigned link_program(const char* vertex, const char* fragment, std::string* error) {
   return link(vertex, fragment, error);
 }
@@ -472,7 +475,7 @@ std::unique_ptr<GlRenderer> GlRenderer::create(int width, int height, int sample
   if (!r->text_program_) return nullptr;
   r->shadow_program_ = link(kShadowVertexShader, kShadowFragmentShader, error);
   if (!r->shadow_program_) return nullptr;
-  r->oit_program_ = link(kOitVertexShader, kOitFragmentShader, error);
+  r->oit_program_ = link(kFullViewVertexShader, kOitFragmentShader, error);
   if (!r->oit_program_) return nullptr;
   glUseProgram(r->oit_program_);
   glUniform1i(glGetUniformLocation(r->oit_program_, "u_accumulation"), kOitUnit);
@@ -979,7 +982,7 @@ void GlRenderer::draw_background_image(const std::string& file, int x, int y, in
   if (!texture) return;  // unreadable (said once): the colour stays
   if (!background_program_) {
     std::string err;
-    background_program_ = link(kOitVertexShader, kBackgroundFragmentShader, &err);
+    background_program_ = link(kFullViewVertexShader, kBackgroundFragmentShader, &err);
     if (!background_program_) {
       std::fprintf(stderr, "sinew: the background image cannot be drawn: %s\n", err.c_str());
       return;
