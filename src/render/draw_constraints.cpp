@@ -64,13 +64,26 @@ struct StatePoints {
   int w, dim;
 };
 
-// SOFA's drawPoints(points, 10, color) without lighting: a batch for `source`.
-Batch& points_batch(DrawList& list, const Component* source, const Rgba& color) {
-  Batch& b = fresh_batch(list, source, Batch::Kind::points);
+// An unlit batch of `kind` in `color` for `source` (SOFA's draw tool with lighting disabled).
+Batch& unlit_batch(DrawList& list, const Component* source, Batch::Kind kind, const Rgba& color) {
+  Batch& b = fresh_batch(list, source, kind);
   b.shading = Shading{{0, 0, 0, 0}, color, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
   b.shading_parsed = false;
   b.lit = false;
+  return b;
+}
+
+// SOFA's drawPoints(points, 10, color).
+Batch& points_batch(DrawList& list, const Component* source, const Rgba& color) {
+  Batch& b = unlit_batch(list, source, Batch::Kind::points, color);
   b.point_size = 10.f;
+  return b;
+}
+
+// SOFA's drawLines(points, width, color).
+Batch& lines_batch(DrawList& list, const Component* source, const Rgba& color, float width) {
+  Batch& b = unlit_batch(list, source, Batch::Kind::lines, color);
+  b.line_width = width;
   return b;
 }
 
@@ -105,16 +118,6 @@ void add_marks(DrawList& list, const Component* source, const StatePoints& x, co
     if (i < x.size()) append_sphere(b, x[i], size);
   }
   close_batch(list, b);
-}
-
-// Unlit lines of `width` pixels in `color` for `source`.
-Batch& lines_batch(DrawList& list, const Component* source, const Rgba& color, float width) {
-  Batch& b = fresh_batch(list, source, Batch::Kind::lines);
-  b.shading = Shading{{0, 0, 0, 0}, color, {0, 0, 0, 0}, {0, 0, 0, 0}, 1.f};
-  b.shading_parsed = false;
-  b.lit = false;
-  b.line_width = width;
-  return b;
 }
 
 void add_fixed(DrawList& list, const FixedProjectiveConstraint& c) {
@@ -164,19 +167,20 @@ void add_linear_velocity(DrawList& list, const LinearVelocityProjectiveConstrain
   close_batch(list, b);
 }
 
-// Time steps of [BeginTime, EndTime] (SOFA's loops over them), bounded so that a tiny dt
-// cannot make a picture of millions of segments.
-std::size_t steps_over(double duration, const Component& c) {
-  const double dt = c.node() ? c.node()->dt.value() : 0.0;
+// The time step of `c`'s node (0 without one).
+double dt_of(const Component& c) { return c.node() ? c.node()->dt.value() : 0.0; }
+
+// Time steps over `duration` (SOFA's draws loop over them), bounded so that a tiny dt cannot
+// make a picture of millions of segments.
+std::size_t steps_over(double duration, double dt) {
   if (!(dt > 0) || !(duration > 0)) return 0;
   return static_cast<std::size_t>(std::min(std::ceil(duration / dt), 100000.0));
 }
 
 void add_hermite(DrawList& list, const HermiteSplineProjectiveConstraint& c) {
   if (c.state() != ComponentState::valid) return;
-  const double duration = c.t_end.get() - c.t_begin.get();
-  const std::size_t n = steps_over(duration, c);
-  const double dt = c.node()->dt.value();
+  const double duration = c.t_end.get() - c.t_begin.get(), dt = dt_of(c);
+  const std::size_t n = steps_over(duration, dt);
   Batch& curve = lines_batch(list, &c, kFixed, 2.f);
   // The strip through the samples at t = 0, dt, ... < duration, as segments.
   for (std::size_t k = 0; k + 1 < n; ++k) {
@@ -200,11 +204,11 @@ void add_hermite(DrawList& list, const HermiteSplineProjectiveConstraint& c) {
 
 void add_parabolic(DrawList& list, const ParabolicProjectiveConstraint& c) {
   if (c.state() != ComponentState::valid) return;
-  const double dt = c.node() ? c.node()->dt.value() : 0.0;
-  const double steps = dt > 0 ? (c.t_end.get() - c.t_begin.get()) / dt : 0.0;
-  const std::size_t n = steps_over(c.t_end.get() - c.t_begin.get(), c);
+  const double duration = c.t_end.get() - c.t_begin.get(), dt = dt_of(c);
+  const std::size_t n = steps_over(duration, dt);  // segment i from i/steps to (i + 1)/steps
+  const double steps = duration / dt;
   Batch& b = lines_batch(list, &c, kFixed, 1.f);
-  for (std::size_t i = 0; i < n && static_cast<double>(i) < steps; ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     push_point(b, c.path_point(static_cast<double>(i) / steps));
     push_point(b, c.path_point(static_cast<double>(i + 1) / steps));
   }

@@ -357,11 +357,10 @@ bool FluidSurface::render(unsigned vao, const float* positions, int count, const
   const float scale = static_cast<float>(width) / std::tan(65.f * (static_cast<float>(M_PI_2) / 180.f));
   const float size[2] = {static_cast<float>(width), static_cast<float>(height)};
 
-  // The sprites' pixels; the thickness blurs reach spriteBlurRadius texels (and one more for
-  // the loop's rounding) beyond what they read: across, then along.
+  // The sprites' pixels. The thickness blurs spread what they read by their taps, across then
+  // along; their rectangles keep one texel to spare. Whole texels of the blur: the picture's
+  // size at most (a hostile radius must not make the loop endless).
   sprites_ = sprite_pixels(positions, count, view, look.radius, scale, width, height);
-  // Whole texels of the blur (the picture's size at most: a hostile radius must not make the
-  // loop endless); the reach keeps one texel to spare.
   const float taps_f = std::clamp(std::floor(look.blur_radius), 0.f, static_cast<float>(std::max(width, height)));
   const int taps = std::isfinite(taps_f) ? static_cast<int>(taps_f) : 0;
   const int reach = taps + 1;
