@@ -831,6 +831,7 @@ void GlRenderer::draw(const DrawList& list, const View& view, const std::array<f
     glGenBuffers(1, &g.ebo);
     gpu_.push_back(g);
   }
+  pass_fluids_ = 0;
   // OglViewport's swapMainView: the picture from its camera, its rectangle from the main view.
   const ExtraViewport* swapped = nullptr;
   for (const ExtraViewport& e : list.viewports)
@@ -889,7 +890,7 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
   glBindFramebuffer(GL_FRAMEBUFFER, pass_fbo_);
   glViewport(x, y, width, height);
   // SOFA's two visual passes: opaque models in graph order, then translucent ones.
-  std::size_t fluids = 0;
+  std::size_t fluids = pass_fluids_;
   for (std::size_t i = 0; i < list.used; ++i)
     if (list.batches[i].splat == Batch::Splat::fluid) {
       draw_fluid(list.batches[i], gpu_[i], fluids++, view, x, y, width, height);
@@ -904,7 +905,7 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   // Without float targets the manager's models are blended in drawing order (one message).
   const bool oit = list.oit.on && oit_buffers();
-  fluids = 0;
+  fluids = pass_fluids_;
   for (std::size_t i = 0; i < list.used; ++i) {
     const Batch& b = list.batches[i];
     if (b.splat == Batch::Splat::fluid) {  // OglFluidModel::drawTransparent: its surface over the picture
@@ -950,6 +951,7 @@ void GlRenderer::draw_pass(const DrawList& list, const View& view, int x, int y,
   if (oit) draw_oit(list, x, y, width, height);  // OrderIndependentTransparencyManager's models
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glUniform1i(u_translucent_, 0);
+  pass_fluids_ = fluids;
 }
 
 void GlRenderer::draw_fluid(const Batch& b, GpuBatch& g, std::size_t k, const View& view, int x, int y, int width,

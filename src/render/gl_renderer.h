@@ -121,11 +121,13 @@ class GlRenderer {
   bool post_failed_ = false;
   // The framebuffer a pass draws into: the picture's, or the post-process pass's.
   unsigned pass_fbo_ = 0;
-  // OglFluidModel's surfaces (render/fluid_surface.h), one per fluid batch of a pass in graph
-  // order: batch `b` (the k-th) rendered into its targets, and its debugFBO view drawn, for the
-  // rectangle (x, y, width, height); the translucent pass lays them over the picture.
+  // OglFluidModel's surfaces (render/fluid_surface.h), one per fluid batch of each pass of a
+  // picture (the main view, then each OglViewport: each keeps targets of its own size): the
+  // k-th surface rendered for batch `b` into its targets, and its debugFBO view drawn, for the
+  // rectangle (x, y, width, height); the translucent pass lays it over the picture.
   void draw_fluid(const Batch& b, GpuBatch& g, std::size_t k, const View& view, int x, int y, int width, int height);
   std::vector<std::unique_ptr<FluidSurface>> fluids_;
+  std::size_t pass_fluids_ = 0;  // surfaces used by the picture's earlier passes
   // BackgroundSetting's image over the rectangle (x, y, width, height), under the scene.
   void draw_background_image(const std::string& file, int x, int y, int width, int height);
   unsigned background_program_ = 0;

@@ -99,6 +99,33 @@ TEST_F(ViewportPictureTest, SceneDrawnAgainInItsRectangle) {
 // when the view is disabled. Seen from z = 2 (120.7 px per unit), the red x shaft ends about
 // 12 px right of the centre, the green y shaft 12 px above; without drawCamera nothing
 // (a blue square in a corner, so that the picture has a visual model).
+// An OglFluidModel seen by the main view and by a 100 × 100 OglViewport, each pass with a
+// surface of its own (targets of its size, kept from picture to picture): outside the rectangle
+// the picture is the one drawn without the viewport, the rectangle shows the fluid too, and a
+// second picture by the same renderer is the same.
+TEST_F(ViewportPictureTest, FluidSurfaceInTheMainViewAndAViewport) {
+  auto scene = [](const std::string& viewport) {
+    return test::load("<Node name=\"root\"><InteractiveCamera position=\"0 0 5\" lookAt=\"0 0 0\"/>" + viewport +
+                      "<Node name=\"f\"><OglFluidModel position=\"0 0 0\" spriteRadius=\"0.5\" "
+                      "spriteThickness=\"1\" spriteBlurRadius=\"2\"/></Node></Node>");
+  };
+  auto alone = scene("");
+  auto both = scene("<OglViewport screenPosition=\"0 0\" screenSize=\"100 100\" cameraPosition=\"0 0 3\"/>");
+  Image a, b, again;
+  std::string err;
+  ASSERT_TRUE(renderer_->render(*alone.root, a, &err)) << err;
+  ASSERT_TRUE(renderer_->render(*both.root, b, &err)) << err;
+  ASSERT_TRUE(renderer_->render(*both.root, again, &err)) << err;
+  EXPECT_EQ(b.rgba, again.rgba);
+  long differ = 0;
+  for (int y = 0; y < 200; ++y)
+    for (int x = 0; x < 200; ++x)
+      if (!(x < 100 && y >= 100) && a.rgb(x, y) != b.rgb(x, y)) ++differ;
+  EXPECT_EQ(differ, 0);
+  EXPECT_EQ(b.rgb(100, 100)[2], 255);  // the fluid's blue in the main view
+  EXPECT_EQ(b.rgb(50, 150)[2], 255);   // and in the rectangle, centred on (50, 150)
+}
+
 TEST_F(ViewportPictureTest, DrawCameraShowsItsFrame) {
   auto picture = [&](const char* draw) {
     auto s = test::load(std::string("<Node name=\"root\"><InteractiveCamera position=\"0 0 2\" lookAt=\"0 0 0\"/>"
