@@ -51,6 +51,7 @@ class CameraControl {
   void wheel(double offset, int height);
 
   const render::CameraFrame& frame() const { return frame_; }
+  const Navigation& navigation() const { return nav_; }
   // The point the trackball turns around now.
   Vec3 pivot() const { return pivot_of(frame_); }
 

@@ -424,6 +424,8 @@ void ViewerApp::on_button(int button, int action) {
     return;
   }
   drag_button_ = button;
+  if (camera.navigation().law == Navigation::Law::none)
+    status = "the scene's Camera does not follow the mouse (as SOFA's); InteractiveCamera does";
   using Mode = CameraControl::Mode;
   camera.press(button == GLFW_MOUSE_BUTTON_LEFT    ? Mode::trackball
                : button == GLFW_MOUSE_BUTTON_RIGHT ? Mode::pan
